@@ -1,0 +1,12 @@
+import { readInput } from '../preprocess/io/read-input.js';
+import { resolveCrs } from '../preprocess/io/crs.js';
+import { buildTopology } from '../preprocess/topology/build-topology.js';
+const file = process.argv[2]!;
+let t = performance.now();
+const raw = await readInput(file);
+const crs = resolveCrs(raw);
+console.log('read', (performance.now() - t).toFixed(0), 'ms', crs, raw.features.length);
+t = performance.now();
+const topo = buildTopology(raw.features, { precision: 0.001, file, inputRepairs: raw.repairs, allowHoles: true });
+console.log('topology', (performance.now() - t).toFixed(0), 'ms', { v: topo.vertexCount, e: topo.edges.length, n: topo.nodeCount, f: topo.faceCount }, topo.repairs, topo.holes);
+console.log('mem', (process.memoryUsage().rss / 1e6).toFixed(0), 'MB');

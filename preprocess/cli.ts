@@ -1,0 +1,49 @@
+// ssc: the command line of the vario-scale map's preprocessing.
+import { InputError } from './io/errors.js';
+import { UsageError } from './commands/args.js';
+
+interface Command {
+  usage: string;
+  run(argv: string[]): Promise<void>;
+}
+
+const commands: Record<string, () => Promise<Command>> = {
+  generalize: () => import('./commands/generalize.js'),
+  map: () => import('./commands/map.js'),
+};
+
+function help(): string {
+  return `usage: ssc <command> [options]\ncommands: ${Object.keys(commands).join(', ')}\nssc <command> --help shows a command's options\n`;
+}
+
+export async function main(argv: string[]): Promise<number> {
+  const [name, ...rest] = argv;
+  if (!name || name === '--help' || name === '-h' || name === 'help') {
+    process.stdout.write(help());
+    return name ? 0 : 2;
+  }
+  const load = commands[name];
+  if (!load) {
+    process.stderr.write(`ssc: unknown command ${JSON.stringify(name)}\n${help()}`);
+    return 2;
+  }
+  const cmd = await load();
+  if (rest.includes('--help') || rest.includes('-h')) {
+    process.stdout.write(cmd.usage + '\n');
+    return 0;
+  }
+  try {
+    await cmd.run(rest);
+    return 0;
+  } catch (err) {
+    if (err instanceof UsageError || (err instanceof TypeError && (err as { code?: string }).code?.startsWith('ERR_PARSE_ARGS'))) {
+      process.stderr.write(`ssc ${name}: ${(err as Error).message}\n${cmd.usage}\n`);
+      return 2;
+    }
+    if (err instanceof InputError) {
+      process.stderr.write(`ssc ${name}: ${err.message}\n`);
+      return 1;
+    }
+    throw err;
+  }
+}

@@ -1,0 +1,65 @@
+// ssc generalize <input> --out <file.tgap> [--style style.json] ...
+import { parseArgs } from 'node:util';
+import { writeFileAtomic } from '../io/atomic-write.js';
+import { generalizeFile } from '../pipeline.js';
+import { encodeTgap } from '../tgap/format.js';
+import { parseNumber, UsageError } from './args.js';
+
+export const usage = `ssc generalize <input.geojson|.geojson.gz|.topojson> --out <file.tgap> [options]
+  --style <style.json>      classes, colours, weights, compatibility, base scale
+  --class-property <name>   property holding the class (overrides the style)
+  --crs <EPSG:n>            CRS of the input when the file does not say
+  --layer <name>            TopoJSON object to read (default: all)
+  --precision <units>       snapping grid and T-junction tolerance (default 0.001)
+  --base-scale <n>          scale denominator of the input (default: the style's, else derived)
+  --allow-holes             holes in the domain are enclaves, not gaps
+  --quiet                   no progress on stderr`;
+
+export async function run(argv: string[]): Promise<void> {
+  const { values, positionals } = parseArgs({
+    args: argv,
+    allowPositionals: true,
+    options: {
+      out: { type: 'string' },
+      style: { type: 'string' },
+      'class-property': { type: 'string' },
+      crs: { type: 'string' },
+      layer: { type: 'string' },
+      precision: { type: 'string' },
+      'base-scale': { type: 'string' },
+      'allow-holes': { type: 'boolean' },
+      quiet: { type: 'boolean' },
+    },
+  });
+  if (positionals.length !== 1) throw new UsageError('give one input file');
+  if (!values.out) throw new UsageError('--out <file.tgap> is required');
+  const log = values.quiet ? undefined : (m: string) => process.stderr.write(m + '\n');
+  const precision = parseNumber(values.precision, '--precision', { min: 0 });
+  const baseScale = parseNumber(values['base-scale'], '--base-scale', { min: 1 });
+  const t0 = performance.now();
+  const { tgap, report } = await generalizeFile(positionals[0]!, {
+    ...(values.style ? { style: values.style } : {}),
+    ...(values['class-property'] ? { classProperty: values['class-property'] } : {}),
+    ...(values.crs ? { crs: values.crs } : {}),
+    ...(values.layer ? { layer: values.layer } : {}),
+    ...(precision !== undefined ? { precision } : {}),
+    ...(baseScale !== undefined ? { baseScale } : {}),
+    ...(values['allow-holes'] ? { allowHoles: true } : {}),
+    ...(log ? { log } : {}),
+  });
+  const bytes = encodeTgap(tgap);
+  await writeFileAtomic(values.out, bytes);
+  const r = report;
+  const repairs = Object.entries(r.topology.repairs).filter(([, n]) => n > 0).map(([k, n]) => `${k} ${n}`).join(', ') || 'none';
+  process.stdout.write(
+    [
+      `input: ${tgap.meta.source} (${tgap.meta.crs}${tgap.meta.projectedFrom ? `, projected from ${tgap.meta.projectedFrom}` : ''})`,
+      `topology: ${r.topology.faceCount} faces, ${r.topology.edges} edges, ${r.topology.nodeCount} nodes, ${r.topology.vertexCount} vertices`,
+      `repairs: ${repairs}`,
+      ...(r.topology.holes.length ? [`holes in the domain (enclaves): ${r.topology.holes.length}`] : []),
+      `tGAP: ${r.generalize.steps} steps (${r.generalize.merges} merges, ${r.generalize.splits} splits), ${r.generalize.facesLeft} face(s) left, ${r.generalize.removedVertices} vertices removed by simplification`,
+      `scale: 1:${Math.round(tgap.meta.baseScale)} at step 0`,
+      `wrote ${values.out} (${bytes.length} bytes) in ${((performance.now() - t0) / 1000).toFixed(1)} s`,
+    ].join('\n') + '\n',
+  );
+}

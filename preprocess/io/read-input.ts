@@ -1,0 +1,168 @@
+// Reads polygon input (GeoJSON, gzipped GeoJSON, TopoJSON) into plain rings of numbers.
+// Everything that is not a polygon is refused here, with the feature named.
+import { promises as fs } from 'node:fs';
+import { gunzipSync } from 'node:zlib';
+import path from 'node:path';
+import { feature as topoFeature } from 'topojson-client';
+import type { Topology } from 'topojson-specification';
+import { InputError, type FeatureRef } from './errors.js';
+
+export interface InputFeature {
+  ref: FeatureRef;
+  properties: Record<string, unknown>;
+  /** polygons -> rings (first outer, then holes) -> flat x,y pairs, open (no closing point). */
+  polygons: Float64Array[][];
+}
+
+export interface InputRepairs {
+  closedRings: number;
+  duplicatePoints: number;
+}
+
+export interface RawInput {
+  file: string;
+  /** The `crs` member as found, or null. */
+  crsMember: unknown;
+  features: InputFeature[];
+  repairs: InputRepairs;
+}
+
+export interface ReadOptions {
+  /** For TopoJSON: the object to read (default: all objects, in key order). */
+  layer?: string;
+  /** Property that names a feature in messages (default: feature.id, then "id"). */
+  idProperty?: string;
+}
+
+export async function readInput(file: string, opts: ReadOptions = {}): Promise<RawInput> {
+  let buf: Buffer;
+  try {
+    buf = await fs.readFile(file);
+  } catch (err) {
+    throw new InputError(`cannot read input: ${(err as Error).message}`, { file });
+  }
+  if (buf.length >= 2 && buf[0] === 0x1f && buf[1] === 0x8b) {
+    try {
+      buf = gunzipSync(buf);
+    } catch (err) {
+      throw new InputError(`not a valid gzip file: ${(err as Error).message}`, { file });
+    }
+  }
+  let doc: unknown;
+  try {
+    doc = JSON.parse(buf.toString('utf8'));
+  } catch (err) {
+    throw new InputError(`not valid JSON: ${(err as Error).message}`, { file });
+  }
+  return parseDocument(doc, path.basename(file), opts);
+}
+
+export function parseDocument(doc: unknown, file: string, opts: ReadOptions = {}): RawInput {
+  if (!isObject(doc)) throw new InputError('expected a GeoJSON or TopoJSON object', { file });
+  const repairs: InputRepairs = { closedRings: 0, duplicatePoints: 0 };
+  const features: InputFeature[] = [];
+  let geojsonFeatures: unknown[];
+  if (doc.type === 'Topology') {
+    geojsonFeatures = topologyFeatures(doc, file, opts.layer);
+  } else if (doc.type === 'FeatureCollection') {
+    if (!Array.isArray(doc.features)) throw new InputError('FeatureCollection without a "features" array', { file });
+    geojsonFeatures = doc.features;
+  } else if (doc.type === 'Feature') {
+    geojsonFeatures = [doc];
+  } else {
+    throw new InputError(`unsupported document type ${JSON.stringify(doc.type)} (expected FeatureCollection, Feature or Topology)`, { file });
+  }
+  geojsonFeatures.forEach((f, index) => {
+    features.push(readFeature(f, index, file, opts.idProperty, repairs));
+  });
+  if (features.length === 0) throw new InputError('the input holds no features', { file });
+  return { file, crsMember: doc.crs ?? null, features, repairs };
+}
+
+function topologyFeatures(doc: Record<string, unknown>, file: string, layer: string | undefined): unknown[] {
+  const objects = doc.objects;
+  if (!isObject(objects)) throw new InputError('TopoJSON without "objects"', { file });
+  const names = layer ? [layer] : Object.keys(objects);
+  if (layer && !(layer in objects)) {
+    throw new InputError(`TopoJSON has no object ${JSON.stringify(layer)} (it has ${Object.keys(objects).join(', ')})`, { file });
+  }
+  const out: unknown[] = [];
+  for (const name of names) {
+    let converted: unknown;
+    try {
+      converted = topoFeature(doc as unknown as Topology, name);
+    } catch (err) {
+      throw new InputError(`TopoJSON object ${JSON.stringify(name)} cannot be decoded: ${(err as Error).message}`, { file });
+    }
+    if (isObject(converted) && converted.type === 'FeatureCollection' && Array.isArray(converted.features)) {
+      out.push(...converted.features);
+    } else {
+      out.push(converted);
+    }
+  }
+  return out;
+}
+
+function readFeature(f: unknown, index: number, file: string, idProperty: string | undefined, repairs: InputRepairs): InputFeature {
+  const props = isObject(f) && isObject(f.properties) ? (f.properties as Record<string, unknown>) : {};
+  const ref: FeatureRef = { index, id: featureId(f, props, idProperty) };
+  if (!isObject(f) || f.type !== 'Feature') throw new InputError('is not a GeoJSON Feature', { file, feature: ref });
+  const g = f.geometry;
+  if (!isObject(g)) throw new InputError('has no geometry (polygon expected)', { file, feature: ref });
+  let polys: unknown[];
+  if (g.type === 'Polygon') polys = [g.coordinates];
+  else if (g.type === 'MultiPolygon') {
+    if (!Array.isArray(g.coordinates)) throw new InputError('MultiPolygon without coordinates', { file, feature: ref });
+    polys = g.coordinates;
+  } else {
+    throw new InputError(`has geometry type ${JSON.stringify(g.type)}; only Polygon and MultiPolygon are accepted`, { file, feature: ref });
+  }
+  const polygons: Float64Array[][] = [];
+  for (const p of polys) {
+    if (!Array.isArray(p) || p.length === 0) throw new InputError('has a polygon without rings', { file, feature: ref });
+    polygons.push(p.map((ring) => readRing(ring, file, ref, repairs)));
+  }
+  if (polygons.length === 0) throw new InputError('has an empty MultiPolygon', { file, feature: ref });
+  return { ref, properties: props, polygons };
+}
+
+function readRing(ring: unknown, file: string, ref: FeatureRef, repairs: InputRepairs): Float64Array {
+  if (!Array.isArray(ring)) throw new InputError('has a ring that is not an array of positions', { file, feature: ref });
+  const out: number[] = [];
+  for (const pos of ring) {
+    if (!Array.isArray(pos) || pos.length < 2) throw new InputError('has a position that is not [x, y]', { file, feature: ref });
+    const x = pos[0], y = pos[1];
+    if (typeof x !== 'number' || typeof y !== 'number' || !Number.isFinite(x) || !Number.isFinite(y)) {
+      const loc: [number, number] | undefined = typeof x === 'number' && typeof y === 'number' && Number.isFinite(x) && Number.isFinite(y) ? [x, y] : undefined;
+      const near = out.length >= 2 ? ([out[out.length - 2]!, out[out.length - 1]!] as [number, number]) : loc;
+      throw new InputError(`has a coordinate that is not a finite number: ${JSON.stringify(pos)}`, { file, feature: ref, ...(near ? { location: near } : {}) });
+    }
+    const n = out.length;
+    if (n >= 2 && out[n - 2] === x && out[n - 1] === y) {
+      repairs.duplicatePoints++;
+      continue;
+    }
+    out.push(x, y);
+  }
+  const n = out.length;
+  if (n >= 4 && out[0] === out[n - 2] && out[1] === out[n - 1]) {
+    out.length = n - 2; // drop the closing point: rings are stored open
+  } else if (n >= 2) {
+    repairs.closedRings++;
+  }
+  return Float64Array.from(out);
+}
+
+function featureId(f: unknown, props: Record<string, unknown>, idProperty: string | undefined): string | number | null {
+  if (idProperty !== undefined) {
+    const v = props[idProperty];
+    return typeof v === 'string' || typeof v === 'number' ? v : null;
+  }
+  if (isObject(f) && (typeof f.id === 'string' || typeof f.id === 'number')) return f.id;
+  const v = props.id;
+  return typeof v === 'string' || typeof v === 'number' ? v : null;
+}
+
+function isObject(v: unknown): v is Record<string, unknown> {
+  return typeof v === 'object' && v !== null && !Array.isArray(v);
+}

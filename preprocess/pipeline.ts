@@ -1,0 +1,136 @@
+// Input file + style -> tGAP: the steps `ssc generalize` and `ssc build` share.
+import path from 'node:path';
+import { resolveCrs } from './io/crs.js';
+import { InputError } from './io/errors.js';
+import { readInput } from './io/read-input.js';
+import { defaultStyle, loadStyle, styleToJson, type Style } from './style.js';
+import { generalize, type GeneralizeResult } from './tgap/generalize.js';
+import type { Tgap } from './tgap/model.js';
+import { TGAP_VERSION } from './tgap/format.js';
+import { buildTopology, type Topology } from './topology/build-topology.js';
+
+export interface PipelineOptions {
+  style?: string;
+  /** Overrides the style's class property (or names one when there is no style). */
+  classProperty?: string;
+  crs?: string;
+  layer?: string;
+  precision?: number;
+  baseScale?: number;
+  allowHoles?: boolean;
+  log?: (msg: string) => void;
+}
+
+export interface PipelineReport {
+  topology: Pick<Topology, 'vertexCount' | 'nodeCount' | 'faceCount' | 'repairs' | 'holes'> & { edges: number };
+  generalize: GeneralizeResult['stats'] & { steps: number; facesLeft: number };
+  timings: Record<string, number>;
+}
+
+export async function generalizeFile(input: string, opts: PipelineOptions = {}): Promise<{ tgap: Tgap; report: PipelineReport }> {
+  const log = opts.log ?? (() => {});
+  const timings: Record<string, number> = {};
+  let t0 = performance.now();
+  const lap = (name: string): void => {
+    const t = performance.now();
+    timings[name] = Math.round(t - t0);
+    t0 = t;
+  };
+  const styleGiven = opts.style ? await loadStyle(opts.style) : null;
+  const raw = await readInput(input, {
+    ...(opts.layer ? { layer: opts.layer } : {}),
+    ...(styleGiven?.idProperty ? { idProperty: styleGiven.idProperty } : {}),
+  });
+  const crs = resolveCrs(raw, opts.crs);
+  lap('read');
+  const classProperty = opts.classProperty ?? styleGiven?.classProperty ?? null;
+  const classValue = (i: number): string => {
+    if (classProperty === null) return 'all';
+    const v = raw.features[i]!.properties[classProperty];
+    if (v === undefined || v === null) {
+      throw new InputError(`has no class property ${JSON.stringify(classProperty)}`, { file: raw.file, feature: raw.features[i]!.ref });
+    }
+    return String(v);
+  };
+  let style: Style;
+  if (styleGiven) {
+    style = styleGiven;
+  } else {
+    const values = new Set<string>();
+    for (let i = 0; i < raw.features.length; i++) values.add(classValue(i));
+    style = defaultStyle([...values], classProperty);
+  }
+  const classIndex = new Map(style.classes.map((c, i) => [c.key, i]));
+  const classes = new Uint16Array(raw.features.length + 1);
+  for (let i = 0; i < raw.features.length; i++) {
+    const v = classValue(i);
+    const ci = classIndex.get(v);
+    if (ci === undefined) {
+      throw new InputError(
+        `has class ${JSON.stringify(v)} (property ${JSON.stringify(classProperty)}), which the style ${opts.style ? path.basename(opts.style) + ' ' : ''}does not define`,
+        { file: raw.file, feature: raw.features[i]!.ref },
+      );
+    }
+    classes[i + 1] = ci;
+  }
+  const precision = opts.precision ?? 0.001;
+  const allowHoles = opts.allowHoles ?? style.allowHoles;
+  const topo = buildTopology(raw.features, { precision, file: raw.file, inputRepairs: raw.repairs, allowHoles });
+  const attributes = raw.features.map((f) => f.properties);
+  // The coordinates now live in the topology; let the input's go.
+  raw.features.length = 0;
+  lap('topology');
+  log(`topology: ${topo.faceCount - 1} faces, ${topo.edges.length} edges, ${topo.nodeCount} nodes, ${topo.vertexCount} vertices`);
+
+  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+  for (let v = 0; v < topo.vertexCount; v++) {
+    const x = topo.xs[v]!, y = topo.ys[v]!;
+    if (x < x0) x0 = x;
+    if (x > x1) x1 = x;
+    if (y < y0) y0 = y;
+    if (y > y1) y1 = y;
+  }
+  const baseScale = opts.baseScale ?? (style.baseScale > 0 ? style.baseScale : autoBaseScale(topo));
+  const g = generalize(topo, (f) => classes[f]!, style, {
+    baseScale,
+    resolutionMm: style.resolutionMm,
+    onProgress: (k, alive) => log(`generalize: step ${k}, ${alive} faces left`),
+  });
+  lap('generalize');
+  const steps = g.events.length === 0 ? 0 : g.events[g.events.length - 1]!.step;
+  const meta: Tgap['meta'] = {
+    version: TGAP_VERSION,
+    crs: crs.code,
+    ...(crs.projectedFrom ? { projectedFrom: crs.projectedFrom } : {}),
+    ...(crs.proj4 ? { proj4: crs.proj4 } : {}),
+    extent: [x0, y0, x1, y1],
+    baseScale,
+    resolutionMm: style.resolutionMm,
+    baseFaces: topo.faceCount - 1,
+    steps,
+    facesAlive: g.facesAlive,
+    holes: topo.holes,
+    repairs: { ...topo.repairs },
+    source: path.basename(input),
+    style: styleToJson({ ...style, baseScale }),
+    attributes,
+    options: { precision, allowHoles },
+  };
+  const report: PipelineReport = {
+    topology: { vertexCount: topo.vertexCount, nodeCount: topo.nodeCount, faceCount: topo.faceCount - 1, edges: topo.edges.length, repairs: topo.repairs, holes: topo.holes },
+    generalize: { ...g.stats, steps, facesLeft: g.facesAlive[g.facesAlive.length - 1]! },
+    timings,
+  };
+  return { tgap: { meta, xs: g.xs, ys: g.ys, faces: g.faces, edges: g.edges, events: g.events }, report };
+}
+
+/** A base scale at which an average face is about 20 screen pixels (0.28 mm) across, rounded to 1, 2 or 5 x 10^n. */
+function autoBaseScale(topo: Topology): number {
+  let area2 = 0;
+  for (let f = 1; f < topo.faceCount; f++) area2 += Math.abs(topo.faceArea2[f]!);
+  const side = Math.sqrt(area2 / 2 / Math.max(1, topo.faceCount - 1));
+  const raw = side / (20 * 0.00028);
+  const e = Math.pow(10, Math.floor(Math.log10(raw)));
+  const m = raw / e;
+  return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * e;
+}

@@ -1,0 +1,30 @@
+// Shared by the preprocessing tests: running the CLI, temporary folders, the shared data.
+import { spawnSync } from 'node:child_process';
+import { existsSync, mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+export const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../../..');
+
+/** A dataset from ../shared/data (the workplace copy), else data/ in the repo. */
+export function dataset(name: string): string {
+  const shared = path.resolve(repoRoot, '../shared/data', name);
+  if (existsSync(shared)) return shared;
+  return path.join(repoRoot, 'data', name);
+}
+
+export function styleFile(name: string): string {
+  return path.join(repoRoot, 'styles', name);
+}
+
+export function runSsc(args: string[]): { code: number; stdout: string; stderr: string } {
+  const r = spawnSync(process.execPath, [path.join(repoRoot, 'bin/ssc.js'), ...args], { encoding: 'utf8', maxBuffer: 64 << 20 });
+  return { code: r.status ?? -1, stdout: r.stdout, stderr: r.stderr };
+}
+
+export function tempDir(t: { after: (fn: () => void) => void }): string {
+  const dir = mkdtempSync(path.join(tmpdir(), 'ssc-test-'));
+  t.after(() => rmSync(dir, { recursive: true, force: true }));
+  return dir;
+}

@@ -1,0 +1,294 @@
+// Splitting a face of a linear class (a road, a watercourse) among its neighbours along its
+// length: the face is triangulated (constrained Delaunay), every triangle is cut into fan
+// pieces around its centroid and the midpoints of its inner edges, and each piece goes to the
+// neighbour it touches. The cuts through midpoints follow the face's centre line, so each
+// neighbour takes the half of the road on its side.
+import Delaunator from 'delaunator';
+import { Constrainautor } from '../geom/constrainautor.js';
+import type { PlanarState } from './planar-state.js';
+import { EMPTY_I32, EMPTY_U8 } from './planar-state.js';
+
+export interface SplitResult {
+  /** Twice the area each receiving face gets. */
+  gains: Map<number, number>;
+  /** The loser's area as triangles (3 vertex ids each) and the face each goes to. */
+  tris: Int32Array;
+  triFaces: Int32Array;
+  /** Ids of the edges made for the new boundaries. */
+  newEdges: number[];
+  /** Nodes whose edges changed (to dissolve where only two edges remain). */
+  touchedNodes: number[];
+}
+
+interface Seg {
+  a: number; // local vertex
+  b: number;
+  label: number; // face across (0 = outside)
+}
+
+/**
+ * Splits face L among its neighbours. Returns null, changing nothing, when the face cannot be
+ * triangulated (the caller then merges it whole).
+ */
+export function splitFace(st: PlanarState, L: number): SplitResult | null {
+  const edgeSet = st.faceEdges[L];
+  if (!edgeSet || edgeSet.size === 0) return null;
+  const edgesOfL = [...edgeSet].sort((p, q) => p - q);
+  const local = new Map<number, number>();
+  const ids: number[] = [];
+  const loc = (v: number): number => {
+    let i = local.get(v);
+    if (i === undefined) {
+      i = ids.length;
+      local.set(v, i);
+      ids.push(v);
+    }
+    return i;
+  };
+  const segs: Seg[] = [];
+  const shared = new Map<number, number>();
+  for (const e of edgesOfL) {
+    const [l, r] = st.sides(e);
+    const verts = st.edges[e]!.verts;
+    const forward = l === L;
+    const label = forward ? r : l;
+    shared.set(label, (shared.get(label) ?? 0) + st.edgeLength[e]!);
+    for (let i = 0; i + 1 < verts.length; i++) {
+      const a = verts[i]!, b = verts[i + 1]!;
+      segs.push(forward ? { a: loc(a), b: loc(b), label } : { a: loc(b), b: loc(a), label });
+    }
+  }
+  const nl = ids.length;
+  if (nl < 3) return null;
+  let x0 = Infinity, y0 = Infinity;
+  for (const v of ids) {
+    x0 = Math.min(x0, st.xs[v]!);
+    y0 = Math.min(y0, st.ys[v]!);
+  }
+  const coords = new Float64Array(nl * 2);
+  ids.forEach((v, i) => {
+    coords[2 * i] = st.xs[v]! - x0;
+    coords[2 * i + 1] = st.ys[v]! - y0;
+  });
+
+  // Constrained Delaunay triangulation of the face's vertices with its boundary as constraints.
+  let del: Delaunator<ArrayLike<number>>;
+  let con: Constrainautor;
+  try {
+    del = new Delaunator(coords);
+    con = new Constrainautor(del);
+    if (con.untriangulatedPoints().length > 0) return null;
+    for (const s of segs) con.constrainOne(s.a, s.b);
+  } catch {
+    return null;
+  }
+  const tri = del.triangles, half = del.halfedges;
+  const nt = tri.length / 3;
+  // Triangles left of the boundary (inside the face): Delaunator's triangles lie right of their
+  // half-edges, so the inside one of segment a->b is the triangle of half-edge b->a.
+  const inside = new Uint8Array(nt);
+  const stack: number[] = [];
+  for (const s of segs) {
+    const h = con.findEdge(s.b, s.a);
+    if (!(h >= 0) || !Number.isFinite(h)) return null;
+    const t = Math.floor(h / 3);
+    if (!inside[t]) {
+      inside[t] = 1;
+      stack.push(t);
+    }
+  }
+  while (stack.length) {
+    const t = stack.pop()!;
+    for (let k = 0; k < 3; k++) {
+      const h = 3 * t + k;
+      if (con.isConstrained(h)) continue;
+      const o = half[h]!;
+      if (o < 0) return null; // reached the hull: the boundary is not closed
+      const u = Math.floor(o / 3);
+      if (!inside[u]) {
+        inside[u] = 1;
+        stack.push(u);
+      }
+    }
+  }
+
+  // Labels: a boundary segment goes to the face across it; a vertex to one of its segments'
+  // faces (the one sharing the longest boundary with L), outside excluded.
+  const segLabel = new Map<number, number>(); // key a * nl + b
+  const vlabel = new Int32Array(nl).fill(-1);
+  const better = (p: number, q: number): boolean => {
+    const sp = shared.get(p) ?? 0, sq = shared.get(q) ?? 0;
+    return sp > sq || (sp === sq && p < q);
+  };
+  for (const s of segs) {
+    segLabel.set(s.a * nl + s.b, s.label);
+    if (s.label === 0) continue;
+    for (const v of [s.a, s.b]) {
+      if (vlabel[v]! < 0 || better(s.label, vlabel[v]!)) vlabel[v] = s.label;
+    }
+  }
+  // Vertices with only the outside around them take the label of the nearest labelled vertex
+  // along the triangulation (breadth first, in a fixed order).
+  {
+    const queue: number[] = [];
+    for (let v = 0; v < nl; v++) if (vlabel[v]! >= 0) queue.push(v);
+    if (queue.length === 0) return null;
+    const adj: number[][] = Array.from({ length: nl }, () => []);
+    for (let t = 0; t < nt; t++) {
+      if (!inside[t]) continue;
+      for (let k = 0; k < 3; k++) {
+        const a = tri[3 * t + k]!, b = tri[3 * t + ((k + 1) % 3)]!;
+        adj[a]!.push(b);
+      }
+    }
+    for (let qi = 0; qi < queue.length; qi++) {
+      const v = queue[qi]!;
+      for (const w of adj[v]!.sort((p, q) => p - q)) {
+        if (vlabel[w]! < 0) {
+          vlabel[w] = vlabel[v]!;
+          queue.push(w);
+        }
+      }
+    }
+    for (let v = 0; v < nl; v++) if (vlabel[v]! < 0) return null;
+  }
+
+  // Fan pieces. A diagonal (inner edge) gets a midpoint when its ends go to different faces;
+  // a triangle gets its centroid when its pieces go to more than one face.
+  const outTris: number[] = [];
+  const outFaces: number[] = [];
+  const gains = new Map<number, number>();
+  const mid = new Map<number, number>(); // key min*nl+max -> global vertex
+  const newSegs: { a: number; b: number; left: number; right: number }[] = []; // global vertex ids
+  const gx = (v: number): number => st.xs[v]!, gy = (v: number): number => st.ys[v]!;
+  const emit = (a: number, b: number, c: number, face: number): void => {
+    outTris.push(a, b, c);
+    outFaces.push(face);
+    const ax = gx(a), ay = gy(a);
+    const a2 = (gx(b) - ax) * (gy(c) - ay) - (gx(c) - ax) * (gy(b) - ay);
+    gains.set(face, (gains.get(face) ?? 0) + a2);
+  };
+  for (let t = 0; t < nt; t++) {
+    if (!inside[t]) continue;
+    // Counterclockwise: Delaunator's order reversed.
+    const p = [tri[3 * t]!, tri[3 * t + 2]!, tri[3 * t + 1]!];
+    const ring: number[] = []; // global ids around the triangle
+    const labels: number[] = []; // label of the piece from ring[i] to ring[i + 1]
+    for (let k = 0; k < 3; k++) {
+      const a = p[k]!, b = p[(k + 1) % 3]!;
+      const sl = segLabel.get(a * nl + b);
+      ring.push(ids[a]!);
+      if (sl !== undefined) {
+        labels.push(sl !== 0 ? sl : vlabel[a]!);
+      } else if (vlabel[a] === vlabel[b]) {
+        labels.push(vlabel[a]!);
+      } else {
+        const key = Math.min(a, b) * nl + Math.max(a, b);
+        let m = mid.get(key);
+        if (m === undefined) {
+          m = st.addVertex((gx(ids[a]!) + gx(ids[b]!)) / 2, (gy(ids[a]!) + gy(ids[b]!)) / 2);
+          mid.set(key, m);
+        }
+        ring.push(m);
+        labels.push(vlabel[a]!, vlabel[b]!);
+      }
+    }
+    if (labels.every((l) => l === labels[0])) {
+      emit(ids[p[0]!]!, ids[p[1]!]!, ids[p[2]!]!, labels[0]!);
+      continue;
+    }
+    // Two faces meeting in this triangle: cut it straight from one change of face to the other
+    // (midpoint to midpoint along a road, which follows its centre line).
+    const m0 = ring.length;
+    const changes: number[] = [];
+    for (let i = 0; i < m0; i++) if (labels[i] !== labels[(i + m0 - 1) % m0]) changes.push(i);
+    if (changes.length === 2 && changes[1]! - changes[0]! >= 2 && m0 - (changes[1]! - changes[0]!) >= 2) {
+      const [i1, i2] = changes as [number, number];
+      for (let k = i1 + 1; k < i2; k++) emit(ring[i1]!, ring[k]!, ring[k + 1]!, labels[i1]!);
+      for (let k = i2 + 1; k < i1 + m0; k++) emit(ring[i2]!, ring[k % m0]!, ring[(k + 1) % m0]!, labels[i2]!);
+      newSegs.push({ a: ring[i2]!, b: ring[i1]!, left: labels[i1]!, right: labels[i2]! });
+      continue;
+    }
+    const cx = (gx(ids[p[0]!]!) + gx(ids[p[1]!]!) + gx(ids[p[2]!]!)) / 3;
+    const cy = (gy(ids[p[0]!]!) + gy(ids[p[1]!]!) + gy(ids[p[2]!]!)) / 3;
+    const cen = st.addVertex(cx, cy);
+    const m = ring.length;
+    for (let i = 0; i < m; i++) {
+      emit(cen, ring[i]!, ring[(i + 1) % m]!, labels[i]!);
+      // Spoke cen -> ring[i]: piece i on its left, piece i - 1 on its right.
+      const before = labels[(i + m - 1) % m]!, after = labels[i]!;
+      if (before !== after) newSegs.push({ a: cen, b: ring[i]!, left: after, right: before });
+    }
+  }
+  // Boundary with the outside stays, now with the receiving faces inside.
+  for (const s of segs) {
+    if (s.label === 0) newSegs.push({ a: ids[s.a]!, b: ids[s.b]!, left: vlabel[s.a]!, right: 0 });
+  }
+
+  // The loser's edges go; the new boundaries become edges between nodes.
+  const oldNodes = new Set<number>();
+  for (const e of edgesOfL) {
+    const edge = st.edges[e]!;
+    oldNodes.add(edge.start);
+    oldNodes.add(edge.end);
+    st.endEdge(e);
+  }
+  const newEdges = chainSegments(st, newSegs);
+  const touched = new Set<number>(oldNodes);
+  for (const e of newEdges) {
+    touched.add(st.edges[e]!.start);
+    touched.add(st.edges[e]!.end);
+  }
+  return {
+    gains,
+    tris: Int32Array.from(outTris),
+    triFaces: Int32Array.from(outFaces),
+    newEdges,
+    touchedNodes: [...touched].sort((p, q) => p - q),
+  };
+}
+
+/**
+ * Joins directed segments (with their left and right faces) into edges. A chain ends at a
+ * vertex that already has edges, or where other than two segments meet.
+ */
+function chainSegments(st: PlanarState, segs: { a: number; b: number; left: number; right: number }[]): number[] {
+  const at = new Map<number, number[]>();
+  segs.forEach((s, i) => {
+    for (const v of [s.a, s.b]) {
+      let l = at.get(v);
+      if (!l) at.set(v, (l = []));
+      l.push(i);
+    }
+  });
+  const isNode = (v: number): boolean => st.nodeEdges.has(v) || at.get(v)!.length !== 2;
+  const used = new Uint8Array(segs.length);
+  const out: number[] = [];
+  const trace = (i0: number, from: number): void => {
+    const verts = [from];
+    let i = i0;
+    let v = from;
+    const s0 = segs[i0]!;
+    const forward0 = s0.a === from;
+    const left = forward0 ? s0.left : s0.right, right = forward0 ? s0.right : s0.left;
+    for (;;) {
+      used[i] = 1;
+      const s = segs[i]!;
+      v = s.a === v ? s.b : s.a;
+      verts.push(v);
+      if (isNode(v) || v === from) break;
+      const list = at.get(v)!;
+      const j = list[0] === i ? list[1]! : list[0]!;
+      if (used[j]) break;
+      i = j;
+    }
+    out.push(st.addEdge(from, v, left, right, Int32Array.from(verts), EMPTY_I32, EMPTY_I32, EMPTY_U8));
+  };
+  // Node vertices in a fixed order, so the result does not depend on map iteration order.
+  const starts = [...at.keys()].filter(isNode).sort((p, q) => p - q);
+  for (const v of starts) {
+    for (const i of at.get(v)!) if (!used[i]) trace(i, v);
+  }
+  for (let i = 0; i < segs.length; i++) if (!used[i]) trace(i, segs[i]!.a);
+  return out;
+}
