@@ -66,9 +66,10 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
     const v = classValue(i);
     const ci = classIndex.get(v);
     if (ci === undefined) {
+      const ring = raw.features[i]!.polygons[0]?.[0];
       throw new InputError(
         `has class ${JSON.stringify(v)} (property ${JSON.stringify(classProperty)}), which the style ${opts.style ? path.basename(opts.style) + ' ' : ''}does not define`,
-        { file: raw.file, feature: raw.features[i]!.ref },
+        { file: raw.file, feature: raw.features[i]!.ref, ...(ring && ring.length >= 2 ? { location: [ring[0]!, ring[1]!] as [number, number] } : {}) },
       );
     }
     classes[i + 1] = ci;

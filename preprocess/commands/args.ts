@@ -1,3 +1,5 @@
+import type { PipelineOptions } from '../pipeline.js';
+
 // Small parsers for command-line values; a bad value is a UsageError naming the option.
 export class UsageError extends Error {
   constructor(message: string) {
@@ -36,4 +38,77 @@ export function requireOne(values: Record<string, unknown>, names: string[]): st
   const given = names.filter((n) => values[n] !== undefined);
   if (given.length !== 1) throw new UsageError(`give exactly one of ${names.map((n) => '--' + n).join(', ')}`);
   return given[0]!;
+}
+
+/** Options of every command that runs the generalization (ssc generalize, ssc build). */
+export const generalizeOptionSpecs = {
+  style: { type: 'string' },
+  'class-property': { type: 'string' },
+  crs: { type: 'string' },
+  layer: { type: 'string' },
+  precision: { type: 'string' },
+  'base-scale': { type: 'string' },
+  'allow-holes': { type: 'boolean' },
+  quiet: { type: 'boolean' },
+} as const;
+
+export interface GeneralizeValues {
+  style?: string | undefined;
+  'class-property'?: string | undefined;
+  crs?: string | undefined;
+  layer?: string | undefined;
+  precision?: string | undefined;
+  'base-scale'?: string | undefined;
+  'allow-holes'?: boolean | undefined;
+  quiet?: boolean | undefined;
+}
+
+/** The pipeline's options from the generalize options, with progress on stderr unless --quiet. */
+export function pipelineOptions(values: GeneralizeValues): PipelineOptions {
+  const precision = parseNumber(values.precision, '--precision', { min: 0 });
+  const baseScale = parseNumber(values['base-scale'], '--base-scale', { min: 1 });
+  return {
+    ...(values.style ? { style: values.style } : {}),
+    ...(values['class-property'] ? { classProperty: values['class-property'] } : {}),
+    ...(values.crs ? { crs: values.crs } : {}),
+    ...(values.layer ? { layer: values.layer } : {}),
+    ...(precision !== undefined ? { precision } : {}),
+    ...(baseScale !== undefined ? { baseScale } : {}),
+    ...(values['allow-holes'] ? { allowHoles: true } : {}),
+    ...(values.quiet ? {} : { log: (m: string) => process.stderr.write(m + '\n') }),
+  };
+}
+
+/** Options of the commands that draw a view to an image (ssc map, ssc slice). */
+export const viewOptionSpecs = {
+  step: { type: 'string' },
+  scale: { type: 'string' },
+  size: { type: 'string' },
+  bbox: { type: 'string' },
+  out: { type: 'string' },
+  ids: { type: 'string' },
+} as const;
+
+export interface ViewValues {
+  step?: string | undefined;
+  scale?: string | undefined;
+  size?: string | undefined;
+  bbox?: string | undefined;
+  out?: string | undefined;
+  ids?: string | undefined;
+}
+
+/** The checked view options: image size, ground box, and the step or scale asked for. */
+export function viewArgs(values: ViewValues, positionals: string[], what: string): {
+  input: string; out: string; width: number; height: number; bbox: [number, number, number, number] | undefined;
+  step: number | undefined; scale: number | undefined;
+} {
+  if (positionals.length !== 1) throw new UsageError(`give one ${what}`);
+  if (!values.out) throw new UsageError('--out <image.png> is required');
+  requireOne(values as Record<string, unknown>, ['step', 'scale']);
+  const { width, height } = parseSize(values.size);
+  return {
+    input: positionals[0]!, out: values.out, width, height, bbox: parseBbox(values.bbox),
+    step: parseNumber(values.step, '--step', { min: 0 }), scale: parseNumber(values.scale, '--scale', { min: 1 }),
+  };
 }

@@ -3,7 +3,7 @@ import { parseArgs } from 'node:util';
 import { writeFileAtomic } from '../io/atomic-write.js';
 import { generalizeFile } from '../pipeline.js';
 import { encodeTgap } from '../tgap/format.js';
-import { parseNumber, UsageError } from './args.js';
+import { generalizeOptionSpecs, pipelineOptions, UsageError } from './args.js';
 
 export const usage = `ssc generalize <input.geojson|.geojson.gz|.topojson> --out <file.tgap> [options]
   --style <style.json>      classes, colours, weights, compatibility, base scale
@@ -16,37 +16,11 @@ export const usage = `ssc generalize <input.geojson|.geojson.gz|.topojson> --out
   --quiet                   no progress on stderr`;
 
 export async function run(argv: string[]): Promise<void> {
-  const { values, positionals } = parseArgs({
-    args: argv,
-    allowPositionals: true,
-    options: {
-      out: { type: 'string' },
-      style: { type: 'string' },
-      'class-property': { type: 'string' },
-      crs: { type: 'string' },
-      layer: { type: 'string' },
-      precision: { type: 'string' },
-      'base-scale': { type: 'string' },
-      'allow-holes': { type: 'boolean' },
-      quiet: { type: 'boolean' },
-    },
-  });
+  const { values, positionals } = parseArgs({ args: argv, allowPositionals: true, options: { out: { type: 'string' }, ...generalizeOptionSpecs } });
   if (positionals.length !== 1) throw new UsageError('give one input file');
   if (!values.out) throw new UsageError('--out <file.tgap> is required');
-  const log = values.quiet ? undefined : (m: string) => process.stderr.write(m + '\n');
-  const precision = parseNumber(values.precision, '--precision', { min: 0 });
-  const baseScale = parseNumber(values['base-scale'], '--base-scale', { min: 1 });
   const t0 = performance.now();
-  const { tgap, report } = await generalizeFile(positionals[0]!, {
-    ...(values.style ? { style: values.style } : {}),
-    ...(values['class-property'] ? { classProperty: values['class-property'] } : {}),
-    ...(values.crs ? { crs: values.crs } : {}),
-    ...(values.layer ? { layer: values.layer } : {}),
-    ...(precision !== undefined ? { precision } : {}),
-    ...(baseScale !== undefined ? { baseScale } : {}),
-    ...(values['allow-holes'] ? { allowHoles: true } : {}),
-    ...(log ? { log } : {}),
-  });
+  const { tgap, report } = await generalizeFile(positionals[0]!, pipelineOptions(values));
   const bytes = encodeTgap(tgap);
   await writeFileAtomic(values.out, bytes);
   const r = report;

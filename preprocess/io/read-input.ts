@@ -50,11 +50,40 @@ export async function readInput(file: string, opts: ReadOptions = {}): Promise<R
   }
   let doc: unknown;
   try {
-    doc = JSON.parse(buf.toString('utf8'));
+    doc = parseJson(buf.toString('utf8'));
   } catch (err) {
     throw new InputError(`not valid JSON: ${(err as Error).message}`, { file });
   }
   return parseDocument(doc, path.basename(file), opts);
+}
+
+// Bare NaN, Infinity and -Infinity outside strings (as Python's json module writes them).
+const NON_FINITE_TOKEN = /"(?:[^"\\]|\\.)*"|(-?)\b(NaN|Infinity)\b/g;
+const NON_FINITE_MARK = '\u0000ssc-non-finite:';
+
+/**
+ * JSON.parse, except that bare NaN and Infinity tokens (not JSON, but common in files written
+ * by Python) are read as numbers: the reader then refuses them naming the feature and the
+ * place, instead of a parse error that names neither. Valid JSON never takes this path.
+ */
+function parseJson(text: string): unknown {
+  try {
+    return JSON.parse(text);
+  } catch (err) {
+    let found = false;
+    const marked = text.replace(NON_FINITE_TOKEN, (m: string, sign: string | undefined, word: string | undefined) => {
+      if (word === undefined) return m; // a string: left as it is
+      found = true;
+      return JSON.stringify(NON_FINITE_MARK + (sign ?? '') + word);
+    });
+    if (!found) throw err;
+    try {
+      return JSON.parse(marked, (_key, v: unknown) =>
+        typeof v === 'string' && v.startsWith(NON_FINITE_MARK) ? Number(v.slice(NON_FINITE_MARK.length)) : v);
+    } catch {
+      throw err;
+    }
+  }
 }
 
 export function parseDocument(doc: unknown, file: string, opts: ReadOptions = {}): RawInput {
@@ -115,7 +144,9 @@ function readFeature(f: unknown, index: number, file: string, idProperty: string
     if (!Array.isArray(g.coordinates)) throw new InputError('MultiPolygon without coordinates', { file, feature: ref });
     polys = g.coordinates;
   } else {
-    throw new InputError(`has geometry type ${JSON.stringify(g.type)}; only Polygon and MultiPolygon are accepted`, { file, feature: ref });
+    // Named with its first point, so that it can be found on a map.
+    const at = firstPosition(g.coordinates);
+    throw new InputError(`has geometry type ${JSON.stringify(g.type)}; only Polygon and MultiPolygon are accepted`, { file, feature: ref, ...(at ? { location: at } : {}) });
   }
   const polygons: Float64Array[][] = [];
   for (const p of polys) {
@@ -133,9 +164,11 @@ function readRing(ring: unknown, file: string, ref: FeatureRef, repairs: InputRe
     if (!Array.isArray(pos) || pos.length < 2) throw new InputError('has a position that is not [x, y]', { file, feature: ref });
     const x = pos[0], y = pos[1];
     if (typeof x !== 'number' || typeof y !== 'number' || !Number.isFinite(x) || !Number.isFinite(y)) {
-      const loc: [number, number] | undefined = typeof x === 'number' && typeof y === 'number' && Number.isFinite(x) && Number.isFinite(y) ? [x, y] : undefined;
-      const near = out.length >= 2 ? ([out[out.length - 2]!, out[out.length - 1]!] as [number, number]) : loc;
-      throw new InputError(`has a coordinate that is not a finite number: ${JSON.stringify(pos)}`, { file, feature: ref, ...(near ? { location: near } : {}) });
+      // The place is the point before; for a ring's first point, the first good point after it.
+      const near = out.length >= 2 ? ([out[out.length - 2]!, out[out.length - 1]!] as [number, number]) : firstPosition(ring);
+      // JSON.stringify would print NaN and Infinity as null, naming a value the file does not hold.
+      const shown = `[${pos.map((v: unknown) => (typeof v === 'number' ? String(v) : JSON.stringify(v))).join(', ')}]`;
+      throw new InputError(`has a coordinate that is not a finite number: ${shown}`, { file, feature: ref, ...(near ? { location: near } : {}) });
     }
     const n = out.length;
     if (n >= 2 && out[n - 2] === x && out[n - 1] === y) {
@@ -161,6 +194,18 @@ function featureId(f: unknown, props: Record<string, unknown>, idProperty: strin
   if (isObject(f) && (typeof f.id === 'string' || typeof f.id === 'number')) return f.id;
   const v = props.id;
   return typeof v === 'string' || typeof v === 'number' ? v : null;
+}
+
+/** The first [x, y] of finite numbers in nested coordinate arrays, if any. */
+function firstPosition(coords: unknown): [number, number] | undefined {
+  if (!Array.isArray(coords)) return undefined;
+  const [x, y] = coords as unknown[];
+  if (typeof x === 'number' && typeof y === 'number' && Number.isFinite(x) && Number.isFinite(y)) return [x, y];
+  for (const c of coords) {
+    const p = firstPosition(c);
+    if (p) return p;
+  }
+  return undefined;
 }
 
 function isObject(v: unknown): v is Record<string, unknown> {

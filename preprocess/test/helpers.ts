@@ -7,11 +7,11 @@ import { fileURLToPath } from 'node:url';
 
 export const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../../..');
 
-/** A dataset from ../shared/data (the workplace copy), else data/ in the repo. */
+/** A dataset from data/ in the repo, else from ../shared/data (the workplace copy). */
 export function dataset(name: string): string {
-  const shared = path.resolve(repoRoot, '../shared/data', name);
-  if (existsSync(shared)) return shared;
-  return path.join(repoRoot, 'data', name);
+  const own = path.join(repoRoot, 'data', name);
+  if (existsSync(own)) return own;
+  return path.resolve(repoRoot, '../shared/data', name);
 }
 
 export function styleFile(name: string): string {

@@ -44,6 +44,7 @@ export function encodeTgap(t: Tgap): Uint8Array {
   w.array(Uint32Array.from(F, (f) => f.stepLow));
   w.array(Uint32Array.from(F, (f) => f.stepHigh));
   w.array(Int32Array.from(F, (f) => f.mergedInto));
+  w.array(Uint8Array.from(F, (f) => f.endPhase));
   w.array(Float64Array.from(F, (f) => f.area2));
   const E = t.edges;
   w.array(Int32Array.from(E, (e) => e.start));
@@ -69,7 +70,6 @@ export function encodeTgap(t: Tgap): Uint8Array {
   w.array(Uint32Array.from(V, (e) => e.step));
   w.array(Int32Array.from(V, (e) => e.loser));
   w.array(Int32Array.from(V, (e) => e.into));
-  w.array(Int32Array.from(V, (e) => e.winner));
   const tOff = offsets(V, (e) => (e.triFaces ? e.triFaces.length : 0));
   w.array(tOff);
   w.array(concatI32(V, (e) => e.tris, tOff[V.length]! * 3));
@@ -90,10 +90,10 @@ export function decodeTgap(buf: Uint8Array, file: string): Tgap {
     xs[i] = xy[2 * i]!;
     ys[i] = xy[2 * i + 1]!;
   }
-  const fClass = r.u16(), fFeature = r.i32(), fLow = r.u32a(), fHigh = r.u32a(), fInto = r.i32(), fArea = r.f64();
+  const fClass = r.u16(), fFeature = r.i32(), fLow = r.u32a(), fHigh = r.u32a(), fInto = r.i32(), fPhase = r.u8(), fArea = r.f64();
   const faces: TgapFace[] = [];
   for (let i = 0; i < fClass.length; i++) {
-    faces.push({ classIndex: fClass[i]!, feature: fFeature[i]!, stepLow: fLow[i]!, stepHigh: fHigh[i]!, mergedInto: fInto[i]!, area2: fArea[i]! });
+    faces.push({ classIndex: fClass[i]!, feature: fFeature[i]!, stepLow: fLow[i]!, stepHigh: fHigh[i]!, mergedInto: fInto[i]!, endPhase: fPhase[i]!, area2: fArea[i]! });
   }
   const eStart = r.i32(), eEnd = r.i32(), eLeft = r.i32(), eRight = r.i32(), eLow = r.u32a(), eHigh = r.u32a();
   const vOff = r.u32a(), verts = r.i32();
@@ -115,14 +115,14 @@ export function decodeTgap(buf: Uint8Array, file: string): Tgap {
       removedPhase: phases.subarray(rOff[i]!, rOff[i + 1]!),
     });
   }
-  const vKind = r.u8(), vStep = r.u32a(), vLoser = r.i32(), vInto = r.i32(), vWinner = r.i32();
+  const vKind = r.u8(), vStep = r.u32a(), vLoser = r.i32(), vInto = r.i32();
   const tOff = r.u32a(), tris = r.i32(), triFaces = r.i32();
   r.done();
   const nev = vKind.length;
   check(tOff.length === nev + 1 && tOff[nev] === triFaces.length && tris.length === triFaces.length * 3, 'event triangles');
   const events: TgapEvent[] = [];
   for (let i = 0; i < nev; i++) {
-    const ev: TgapEvent = { kind: vKind[i] as EventKind, step: vStep[i]!, loser: vLoser[i]!, into: vInto[i]!, winner: vWinner[i]! };
+    const ev: TgapEvent = { kind: vKind[i] as EventKind, step: vStep[i]!, loser: vLoser[i]!, into: vInto[i]! };
     if (tOff[i + 1]! > tOff[i]!) {
       ev.tris = tris.subarray(tOff[i]! * 3, tOff[i + 1]! * 3);
       ev.triFaces = triFaces.subarray(tOff[i]!, tOff[i + 1]!);

@@ -5,7 +5,7 @@
 import FlatQueue from 'flatqueue';
 import type { Style } from '../style.js';
 import type { Topology } from '../topology/build-topology.js';
-import { EventKind, type TgapEdge, type TgapEvent, type TgapFace } from './model.js';
+import { EventKind, REEMIT_PHASE, type TgapEdge, type TgapEvent, type TgapFace } from './model.js';
 import { EMPTY_U8, PlanarState } from './planar-state.js';
 import { simplifyEdge, StepTriangles } from './simplify.js';
 import { splitFace } from './split.js';
@@ -34,7 +34,7 @@ export interface GeneralizeResult {
   edges: TgapEdge[];
   events: TgapEvent[];
   facesAlive: number[];
-  stats: { merges: number; splits: number; splitFallbacks: number; reemits: number; removedVertices: number; unmergeable: number };
+  stats: { merges: number; splits: number; splitFallbacks: number; reemits: number; removedVertices: number; unmergeable: number; refreshes: number };
 }
 
 export function generalize(topo: Topology, classOf: (face: number) => number, style: Style, opts: GeneralizeOptions): GeneralizeResult {
@@ -58,8 +58,9 @@ export function generalize(topo: Topology, classOf: (face: number) => number, st
   const events: TgapEvent[] = [];
   const facesAlive: number[] = [nb];
   const tris = new StepTriangles();
-  const stats = { merges: 0, splits: 0, splitFallbacks: 0, reemits: 0, removedVertices: 0, unmergeable: 0 };
+  const stats = { merges: 0, splits: 0, splitFallbacks: 0, reemits: 0, removedVertices: 0, unmergeable: 0, refreshes: 0 };
   const metresPerMm = opts.resolutionMm / 1000;
+  let refreshedTol = opts.baseScale * metresPerMm;
 
   /** Joins the two edges at a node where only they remain; returns the new edge or -1. */
   const dissolve = (v: number): number => {
@@ -85,20 +86,25 @@ export function generalize(topo: Topology, classOf: (face: number) => number, st
     return st.addEdge(verts[0]!, verts[verts.length - 1]!, left, right, verts, parents, new Int32Array(0), EMPTY_U8);
   };
 
-  /** Simplifies the given edges and every edge of `faces` not yet simplified to about `tol`. */
-  const simplifyAround = (edges: number[], faces: number[], tol: number): void => {
+  /**
+   * Simplifies the given edges and every edge of `faces` not yet simplified to about `tol`;
+   * returns the faces along the edges that changed.
+   */
+  const simplifyAround = (edges: number[], faces: number[], tol: number): number[] => {
     const todo = new Set(edges);
     for (const f of faces) {
       const set = st.faceEdges[f];
       if (!set) continue;
       for (const e of set) if (st.edgeTol[e]! * hysteresis < tol) todo.add(e);
     }
+    const touched: number[] = [];
     for (const e of [...todo].sort((p, q) => p - q)) {
       if (!st.edgeAlive[e]) continue;
       const before = st.aliveVertices;
-      simplifyEdge(st, e, tol, tris);
+      if (simplifyEdge(st, e, tol, tris) !== e) touched.push(...st.sides(e));
       stats.removedVertices += before - st.aliveVertices;
     }
+    return touched;
   };
 
   const bestNeighbour = (f: number): { best: number; count: number } => {
@@ -120,10 +126,29 @@ export function generalize(topo: Topology, classOf: (face: number) => number, st
     return { best, count: shared.size };
   };
 
-  const merge = (L: number, W: number, k: number, tol: number): void => {
-    const vL = st.faceVertexCount(L), vW = st.faceVertexCount(W);
-    st.faceCost[W]! += vL;
-    const reemit = st.faceCost[W]! > reemitFactor * (vW + vL) + 64;
+  /**
+   * A face keeps its id while it grows and its lines are simplified: the cube then only needs
+   * the changes (cheap). But its old surfaces stay in use as long as it lives, so once what was
+   * drawn for it exceeds `reemitFactor` times its current size it is replaced by a new face
+   * (same class and attributes) whose whole area is drawn afresh, already simplified.
+   */
+  const maybeReemit = (faces: Iterable<number>, k: number): void => {
+    for (const f of [...new Set(faces)].sort((p, q) => p - q)) {
+      if (f <= 0 || st.faces[f]!.stepHigh !== 0x7fffffff) continue;
+      if (st.faceCost[f]! <= reemitFactor * st.faceVerts[f]! + 64) continue;
+      const face = st.faces[f]!;
+      const g = st.addFace(face.classIndex, face.feature, st.faceArea2[f]!);
+      st.endFace(f, g, REEMIT_PHASE);
+      st.faceArea2[g] = st.faceArea2[f]!;
+      st.faceCost[g] = st.faceVerts[g]!;
+      events.push({ kind: EventKind.Reemit, step: k, loser: f, into: g });
+      setImportance(g);
+      stats.reemits++;
+    }
+  };
+
+  const merge = (L: number, W: number, k: number, tol: number): number[] => {
+    st.faceCost[W]! += st.faceVerts[L]!;
     const removed: number[] = [];
     const kept: number[] = [];
     for (const e of st.faceEdges[L]!) {
@@ -138,30 +163,18 @@ export function generalize(topo: Topology, classOf: (face: number) => number, st
       nodes.add(st.edges[e]!.end);
       st.endEdge(e);
     }
-    const area2 = st.faceArea2[W]! + st.faceArea2[L]!;
-    let into = W;
-    const wEdges = st.faceEdges[W]!;
-    for (const e of kept) wEdges.add(e);
-    if (reemit) {
-      // Both end; the new face is their child (the classic tGAP merge).
-      const wf = st.faces[W]!;
-      into = st.addFace(wf.classIndex, wf.feature, area2);
-      st.endFace(W, into);
-      st.faceEdges[into] = wEdges;
-      st.faceCost[into] = vW + vL;
-      stats.reemits++;
-    }
-    st.endFace(L, into);
-    st.faceArea2[into] = area2;
+    st.faceArea2[W]! += st.faceArea2[L]!;
+    st.endFace(L, W);
     const joined: number[] = [];
     for (const v of [...nodes].sort((p, q) => p - q)) {
       const e = dissolve(v);
       if (e >= 0) joined.push(e);
     }
-    simplifyAround([...joined, ...kept], [into], tol);
-    events.push({ kind: EventKind.Merge, step: k, loser: L, into, winner: reemit ? W : -1 });
-    setImportance(into);
+    events.push({ kind: EventKind.Merge, step: k, loser: L, into: W });
+    const touched = simplifyAround([...joined, ...kept], [W], tol);
+    setImportance(W);
     stats.merges++;
+    return [W, ...touched];
   };
 
   while (queue.length > 0) {
@@ -177,29 +190,37 @@ export function generalize(topo: Topology, classOf: (face: number) => number, st
     tris.clear();
     const scale = opts.baseScale * Math.sqrt(nb / Math.max(1, st.aliveFaces - 1));
     const tol = scale * metresPerMm;
-    if (linear[st.faces[L]!.classIndex] && count >= 2) {
-      const res = splitFace(st, L);
-      if (res) {
-        st.endFace(L, -1);
-        const receivers = [...res.gains.keys()].sort((p, q) => p - q);
-        for (const f of receivers) st.faceArea2[f]! += res.gains.get(f)!;
-        for (const f of res.triFaces) st.faceCost[f]!++;
-        const joined: number[] = [];
-        for (const v of res.touchedNodes) {
-          const e = dissolve(v);
-          if (e >= 0) joined.push(e);
-        }
-        simplifyAround([...res.newEdges, ...joined], receivers, tol);
-        events.push({ kind: EventKind.Split, step: k, loser: L, into: -1, winner: -1, tris: res.tris, triFaces: res.triFaces });
-        for (const f of receivers) setImportance(f);
-        stats.splits++;
-      } else {
-        stats.splitFallbacks++;
-        merge(L, best, k, tol);
+    let changed: number[];
+    const res = linear[st.faces[L]!.classIndex] && count >= 2 ? splitFace(st, L) : null;
+    if (res) {
+      st.endFace(L, -1);
+      const receivers = [...res.gains.keys()].sort((p, q) => p - q);
+      for (const f of receivers) st.faceArea2[f]! += res.gains.get(f)!;
+      for (const f of res.triFaces) st.faceCost[f]!++;
+      const joined: number[] = [];
+      for (const v of res.touchedNodes) {
+        const e = dissolve(v);
+        if (e >= 0) joined.push(e);
       }
+      events.push({ kind: EventKind.Split, step: k, loser: L, into: -1, tris: res.tris, triFaces: res.triFaces });
+      const touched = simplifyAround([...res.newEdges, ...joined], receivers, tol);
+      for (const f of receivers) setImportance(f);
+      stats.splits++;
+      changed = [...receivers, ...touched];
     } else {
-      merge(L, best, k, tol);
+      if (linear[st.faces[L]!.classIndex] && count >= 2) stats.splitFallbacks++;
+      changed = merge(L, best, k, tol);
     }
+    // Lines no event has touched for a while still get simplified: whenever the scale has grown
+    // by the hysteresis factor, every edge behind the current tolerance is brought up to it.
+    if (tol > refreshedTol * hysteresis) {
+      refreshedTol = tol;
+      const stale: number[] = [];
+      for (let e = 0; e < st.edges.length; e++) if (st.edgeAlive[e] && st.edgeTol[e]! * hysteresis < tol) stale.push(e);
+      changed.push(...simplifyAround(stale, [], tol));
+      stats.refreshes++;
+    }
+    maybeReemit(changed, k);
     facesAlive.push(st.aliveFaces);
     st.index.compact(st.aliveVertices);
     if (opts.onProgress && k % 10000 === 0) opts.onProgress(k, st.aliveFaces);
@@ -211,3 +232,4 @@ export function generalize(topo: Topology, classOf: (face: number) => number, st
   st.faces[0]!.stepHigh = steps + 1;
   return { xs: st.xs.slice(0, st.size), ys: st.ys.slice(0, st.size), faces: st.faces, edges: st.edges, events, facesAlive, stats };
 }
+

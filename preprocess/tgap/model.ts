@@ -1,9 +1,16 @@
+import { scaleKnots, type ScaleInfo } from '../../client/src/shared/scale.js';
+
 // The tGAP as it is built and stored: vertices, edge versions and face versions with step
 // ranges, and the events that link them (the DAG). A state s (0 = input, s = after s steps)
 // holds the edges and faces with stepLow <= s < stepHigh.
 
-/** Sub-steps of one step: phase 0 is the merge or split, phases 1.. hold line simplification. */
+/**
+ * Sub-steps of one step: phase 0 is the merge or split, phases 1..6 hold line simplification,
+ * phase 7 re-draws faces whose surfaces have grown costly (see generalize.ts).
+ */
 export const PHASES = 8;
+export const LAST_REMOVAL_PHASE = PHASES - 2;
+export const REEMIT_PHASE = PHASES - 1;
 
 /** z of a phase of step k (k >= 1) in the Space-Scale Cube: strictly inside (k - 1, k). */
 export function phaseZ(step: number, phase: number): number {
@@ -13,6 +20,8 @@ export function phaseZ(step: number, phase: number): number {
 export const enum EventKind {
   Merge = 1,
   Split = 2,
+  /** The face is replaced by a new one with the same class and attributes, drawn afresh. */
+  Reemit = 3,
 }
 
 export interface TgapEdge {
@@ -37,8 +46,10 @@ export interface TgapFace {
   feature: number;
   stepLow: number;
   stepHigh: number;
-  /** The face this one was merged into at stepHigh (-1: none, or split). */
+  /** The face this one was merged into (or replaced by) at stepHigh (-1: none, or split). */
   mergedInto: number;
+  /** Phase of step stepHigh in which the face ends (0: merge or split, REEMIT_PHASE: replaced). */
+  endPhase: number;
   /** Twice the area when the face was made. */
   area2: number;
 }
@@ -46,11 +57,10 @@ export interface TgapFace {
 export interface TgapEvent {
   kind: EventKind;
   step: number;
+  /** The face that ends. */
   loser: number;
-  /** Merge: the face the loser's area goes to (the winner, or a new face made from both). */
+  /** Merge: the winner, which takes the loser's area; re-emit: the new face. */
   into: number;
-  /** Merge only: the winner, when `into` is a new face replacing it (else -1). */
-  winner: number;
   /**
    * Split: the loser's area as triangles (vertex ids, 3 per triangle) with the face each one
    * goes to.
@@ -91,34 +101,26 @@ export interface Tgap {
 
 /** The face that holds f's area at state s (follows merges that happened at or before s). */
 export function resolveFace(faces: TgapFace[], f: number, s: number): number {
+  return resolveFaceAt(faces, f, s, REEMIT_PHASE);
+}
+
+/** The same inside step `step`, just after `phase`. */
+export function resolveFaceAt(faces: TgapFace[], f: number, step: number, phase: number): number {
   let g = f;
   while (g > 0) {
     const face = faces[g]!;
-    if (face.stepHigh > s || face.mergedInto < 0) return g;
+    if (face.mergedInto < 0 || face.stepHigh > step || (face.stepHigh === step && face.endPhase > phase)) return g;
     g = face.mergedInto;
   }
   return g;
 }
 
-/** Scale denominator at a step: constant number of faces per map area. */
-export function scaleAtStep(meta: Pick<TgapMeta, 'baseScale' | 'baseFaces' | 'facesAlive'>, step: number): number {
-  const alive = meta.facesAlive[Math.max(0, Math.min(meta.facesAlive.length - 1, step))]!;
-  return meta.baseScale * Math.sqrt(meta.baseFaces / Math.max(1, alive));
+/** z from which a face's surfaces are covered by newer ones (Infinity: it lives to the top). */
+export function faceEndZ(face: TgapFace, steps: number): number {
+  return face.stepHigh > steps ? Infinity : phaseZ(face.stepHigh, face.endPhase);
 }
 
-/** The (fractional) step at which the map has the given scale denominator. */
-export function stepAtScale(meta: Pick<TgapMeta, 'baseScale' | 'baseFaces' | 'facesAlive'>, scale: number): number {
-  const alive = meta.baseFaces * (meta.baseScale / scale) ** 2;
-  const fa = meta.facesAlive;
-  if (alive >= fa[0]!) return 0;
-  if (alive <= fa[fa.length - 1]!) return fa.length - 1;
-  // facesAlive decreases with the step: binary search the bracket, then interpolate.
-  let lo = 0, hi = fa.length - 1;
-  while (hi - lo > 1) {
-    const mid = (lo + hi) >> 1;
-    if (fa[mid]! > alive) lo = mid;
-    else hi = mid;
-  }
-  const a = fa[lo]!, b = fa[hi]!;
-  return a === b ? lo : lo + (a - alive) / (a - b);
+/** The scale of every step (a constant number of faces per map area), as the cube states it. */
+export function scaleInfoOf(t: Pick<Tgap, 'meta'>): ScaleInfo {
+  return { baseScale: t.meta.baseScale, baseFaces: t.meta.baseFaces, scaleTable: scaleKnots(t.meta.facesAlive), zMax: t.meta.steps };
 }

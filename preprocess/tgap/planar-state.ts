@@ -28,6 +28,8 @@ export class PlanarState {
   readonly faceArea2: number[] = [];
   /** Vertex count of what the face's surfaces in the cube cost since it was made (see generalize). */
   readonly faceCost: number[] = [];
+  /** Vertices around each face now (segments of its current edges). */
+  readonly faceVerts: number[] = [];
   private readonly cur: number[] = [];
   aliveFaces = 0;
 
@@ -49,10 +51,11 @@ export class PlanarState {
     this.ry = topo.vertexCount ? topo.ys[0]! : 0;
     this.index = new VertexIndex(this);
     for (let f = 0; f < topo.faceCount; f++) {
-      this.faces.push({ classIndex: f === 0 ? 0 : classOf(f), feature: f - 1, stepLow: 0, stepHigh: NONE, mergedInto: -1, area2: topo.faceArea2[f]! });
+      this.faces.push({ classIndex: f === 0 ? 0 : classOf(f), feature: f - 1, stepLow: 0, stepHigh: NONE, mergedInto: -1, endPhase: 0, area2: topo.faceArea2[f]! });
       this.faceEdges.push(f === 0 ? null : new Set());
       this.faceArea2.push(topo.faceArea2[f]!);
       this.faceCost.push(0);
+      this.faceVerts.push(0);
       this.cur.push(f);
     }
     this.aliveFaces = topo.faceCount - 1;
@@ -62,7 +65,7 @@ export class PlanarState {
     const ids: number[] = [];
     for (let v = 0; v < this.size; v++) if (this.alive[v]) ids.push(v);
     this.index.load(ids);
-    for (let f = 1; f < topo.faceCount; f++) this.faceCost[f] = this.faceVertexCount(f);
+    for (let f = 1; f < topo.faceCount; f++) this.faceCost[f] = this.faceVerts[f]!;
   }
 
   /** The face that currently holds f's area. */
@@ -100,21 +103,38 @@ export class PlanarState {
 
   addFace(classIndex: number, feature: number, area2: number): number {
     const f = this.faces.length;
-    this.faces.push({ classIndex, feature, stepLow: this.step, stepHigh: NONE, mergedInto: -1, area2 });
+    this.faces.push({ classIndex, feature, stepLow: this.step, stepHigh: NONE, mergedInto: -1, endPhase: 0, area2 });
     this.faceEdges.push(new Set());
     this.faceArea2.push(area2);
     this.faceCost.push(0);
+    this.faceVerts.push(0);
     this.cur.push(f);
     this.aliveFaces++;
     return f;
   }
 
-  /** Ends face f at the current step; its area now belongs to `into` (a merge) or to several faces (-1). */
-  endFace(f: number, into: number): void {
+  /**
+   * Ends face f in the current step; its area (and its edges) now belong to `into` (a merge or
+   * a re-emit) or to several faces (-1, a split: its edges must have ended first).
+   */
+  endFace(f: number, into: number, phase = 0): void {
     const face = this.faces[f]!;
     face.stepHigh = this.step;
     face.mergedInto = into;
-    if (into >= 0) this.cur[f] = into;
+    face.endPhase = phase;
+    if (into >= 0) {
+      this.cur[f] = into;
+      const mine = this.faceEdges[f]!, theirs = this.faceEdges[into]!;
+      // Keep the larger set object: merging small into large keeps this linear overall.
+      if (mine.size > theirs.size) {
+        for (const e of theirs) mine.add(e);
+        this.faceEdges[into] = mine;
+      } else {
+        for (const e of mine) theirs.add(e);
+      }
+      this.faceVerts[into]! += this.faceVerts[f]!;
+    }
+    this.faceVerts[f] = 0;
     this.faceEdges[f] = null;
     this.aliveFaces--;
   }
@@ -137,8 +157,15 @@ export class PlanarState {
     this.nodeList(start).push(id);
     this.nodeList(end).push(id);
     const l = this.resolve(left), r = this.resolve(right);
-    if (l > 0) this.faceEdges[l]!.add(id);
-    if (r > 0) this.faceEdges[r]!.add(id);
+    const segs = verts.length - 1;
+    if (l > 0) {
+      this.faceEdges[l]!.add(id);
+      this.faceVerts[l]! += segs;
+    }
+    if (r > 0) {
+      this.faceEdges[r]!.add(id);
+      this.faceVerts[r]! += segs;
+    }
     return id;
   }
 
@@ -160,8 +187,9 @@ export class PlanarState {
       }
     }
     const l = this.resolve(edge.left), r = this.resolve(edge.right);
-    if (l > 0) this.faceEdges[l]?.delete(e);
-    if (r > 0) this.faceEdges[r]?.delete(e);
+    const segs = verts.length - 1;
+    if (l > 0 && this.faceEdges[l]?.delete(e)) this.faceVerts[l]! -= segs;
+    if (r > 0 && this.faceEdges[r]?.delete(e)) this.faceVerts[r]! -= segs;
   }
 
   kill(v: number): void {
@@ -180,13 +208,6 @@ export class PlanarState {
   /** Twice the signed area an edge adds to the face on its left (the right face gets the negative). */
   edgeArea2(e: number): number {
     return chainArea2(this.edges[e]!.verts, this.xs, this.ys, this.rx, this.ry);
-  }
-
-  faceVertexCount(f: number): number {
-    let n = 0;
-    const set = this.faceEdges[f];
-    if (set) for (const e of set) n += this.edges[e]!.verts.length - 1;
-    return n;
   }
 
   private nodeList(v: number): number[] {

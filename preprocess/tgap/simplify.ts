@@ -6,7 +6,7 @@
 import FlatQueue from 'flatqueue';
 import RBush from 'rbush';
 import { blocksRemoval, orient } from '../geom/predicates.js';
-import { PHASES } from './model.js';
+import { LAST_REMOVAL_PHASE } from './model.js';
 import type { PlanarState } from './planar-state.js';
 
 interface Tri {
@@ -28,7 +28,7 @@ export class StepTriangles {
     this.n = 0;
   }
 
-  /** The phase a new removal triangle must take (> every overlapping earlier one), PHASES if none is left. */
+  /** The phase a new removal triangle must take (> every overlapping earlier one); above LAST_REMOVAL_PHASE none is left. */
   phaseFor(c: Float64Array): number {
     if (this.n === 0) return 1;
     let phase = 1;
@@ -37,7 +37,7 @@ export class StepTriangles {
     for (const t of this.tree.search({ minX, minY, maxX, maxY })) {
       if (t.phase >= phase && interiorsOverlap(t.c, c)) phase = t.phase + 1;
     }
-    return Math.min(phase, PHASES);
+    return Math.min(phase, LAST_REMOVAL_PHASE + 1);
   }
 
   add(c: Float64Array, phase: number): void {
@@ -120,10 +120,11 @@ export function simplifyEdge(st: PlanarState, e: number, tol: number, tris: Step
     const o = orient(ax, ay, bx, by, vx, vy);
     let phase = 1;
     if (o !== 0) {
-      if (o > 0) c.set([ax, ay, vx, vy, bx, by]);
-      else c.set([ax, ay, bx, by, vx, vy]);
+      // Counterclockwise: v left of a->b means a, b, v.
+      if (o > 0) c.set([ax, ay, bx, by, vx, vy]);
+      else c.set([ax, ay, vx, vy, bx, by]);
       phase = tris.phaseFor(c);
-      if (phase >= PHASES) continue;
+      if (phase > LAST_REMOVAL_PHASE) continue;
       tris.add(Float64Array.from(c), phase);
       // v left of the chord: the triangle was the right face's and becomes the left face's.
       const t2 = Math.abs((vx - ax) * (by - ay) - (bx - ax) * (vy - ay));

@@ -3,8 +3,8 @@
 // pieces around its centroid and the midpoints of its inner edges, and each piece goes to the
 // neighbour it touches. The cuts through midpoints follow the face's centre line, so each
 // neighbour takes the half of the road on its side.
-import Delaunator from 'delaunator';
-import { Constrainautor } from '../geom/constrainautor.js';
+import { triangulateRegion } from '../geom/cdt.js';
+import { LocalVertices } from '../geom/local-vertices.js';
 import type { PlanarState } from './planar-state.js';
 import { EMPTY_I32, EMPTY_U8 } from './planar-state.js';
 
@@ -34,17 +34,9 @@ export function splitFace(st: PlanarState, L: number): SplitResult | null {
   const edgeSet = st.faceEdges[L];
   if (!edgeSet || edgeSet.size === 0) return null;
   const edgesOfL = [...edgeSet].sort((p, q) => p - q);
-  const local = new Map<number, number>();
-  const ids: number[] = [];
-  const loc = (v: number): number => {
-    let i = local.get(v);
-    if (i === undefined) {
-      i = ids.length;
-      local.set(v, i);
-      ids.push(v);
-    }
-    return i;
-  };
+  const lv = new LocalVertices();
+  const loc = (v: number): number => lv.of(v);
+  const ids = lv.ids;
   const segs: Seg[] = [];
   const shared = new Map<number, number>();
   for (const e of edgesOfL) {
@@ -60,57 +52,18 @@ export function splitFace(st: PlanarState, L: number): SplitResult | null {
   }
   const nl = ids.length;
   if (nl < 3) return null;
-  let x0 = Infinity, y0 = Infinity;
-  for (const v of ids) {
-    x0 = Math.min(x0, st.xs[v]!);
-    y0 = Math.min(y0, st.ys[v]!);
-  }
-  const coords = new Float64Array(nl * 2);
-  ids.forEach((v, i) => {
-    coords[2 * i] = st.xs[v]! - x0;
-    coords[2 * i + 1] = st.ys[v]! - y0;
-  });
+  const coords = lv.coords(st.xs, st.ys);
 
   // Constrained Delaunay triangulation of the face's vertices with its boundary as constraints.
-  let del: Delaunator<ArrayLike<number>>;
-  let con: Constrainautor;
-  try {
-    del = new Delaunator(coords);
-    con = new Constrainautor(del);
-    if (con.untriangulatedPoints().length > 0) return null;
-    for (const s of segs) con.constrainOne(s.a, s.b);
-  } catch {
-    return null;
-  }
-  const tri = del.triangles, half = del.halfedges;
+  const segPairs = new Int32Array(segs.length * 2);
+  segs.forEach((sg, i) => {
+    segPairs[2 * i] = sg.a;
+    segPairs[2 * i + 1] = sg.b;
+  });
+  const cdt = triangulateRegion(coords, segPairs);
+  if (!cdt) return null;
+  const tri = cdt.triangles;
   const nt = tri.length / 3;
-  // Triangles left of the boundary (inside the face): Delaunator's triangles lie right of their
-  // half-edges, so the inside one of segment a->b is the triangle of half-edge b->a.
-  const inside = new Uint8Array(nt);
-  const stack: number[] = [];
-  for (const s of segs) {
-    const h = con.findEdge(s.b, s.a);
-    if (!(h >= 0) || !Number.isFinite(h)) return null;
-    const t = Math.floor(h / 3);
-    if (!inside[t]) {
-      inside[t] = 1;
-      stack.push(t);
-    }
-  }
-  while (stack.length) {
-    const t = stack.pop()!;
-    for (let k = 0; k < 3; k++) {
-      const h = 3 * t + k;
-      if (con.isConstrained(h)) continue;
-      const o = half[h]!;
-      if (o < 0) return null; // reached the hull: the boundary is not closed
-      const u = Math.floor(o / 3);
-      if (!inside[u]) {
-        inside[u] = 1;
-        stack.push(u);
-      }
-    }
-  }
 
   // Labels: a boundary segment goes to the face across it; a vertex to one of its segments'
   // faces (the one sharing the longest boundary with L), outside excluded.
@@ -135,7 +88,6 @@ export function splitFace(st: PlanarState, L: number): SplitResult | null {
     if (queue.length === 0) return null;
     const adj: number[][] = Array.from({ length: nl }, () => []);
     for (let t = 0; t < nt; t++) {
-      if (!inside[t]) continue;
       for (let k = 0; k < 3; k++) {
         const a = tri[3 * t + k]!, b = tri[3 * t + ((k + 1) % 3)]!;
         adj[a]!.push(b);
@@ -169,9 +121,7 @@ export function splitFace(st: PlanarState, L: number): SplitResult | null {
     gains.set(face, (gains.get(face) ?? 0) + a2);
   };
   for (let t = 0; t < nt; t++) {
-    if (!inside[t]) continue;
-    // Counterclockwise: Delaunator's order reversed.
-    const p = [tri[3 * t]!, tri[3 * t + 2]!, tri[3 * t + 1]!];
+    const p = [tri[3 * t]!, tri[3 * t + 1]!, tri[3 * t + 2]!];
     const ring: number[] = []; // global ids around the triangle
     const labels: number[] = []; // label of the piece from ring[i] to ring[i + 1]
     for (let k = 0; k < 3; k++) {

@@ -250,7 +250,29 @@ export function buildTopology(features: InputFeature[], opts: TopologyOptions): 
   const faceCount = features.length + 1;
   const faceArea2 = new Float64Array(faceCount);
   for (const r of rings) faceArea2[r.face]! += ringArea2(r.ids, xs, ys);
-  return { xs: Float64Array.from(xs), ys: Float64Array.from(ys), vertexCount: nv, edges, faceCount, faceArea2, nodeCount, repairs, holes };
+
+  // Points that no edge uses (a removed spike's tip, a point merged into a nearer one) are
+  // dropped: kept, they were counted as vertices and widened the extent of the output. Ids
+  // keep their order, so input without such points keeps the same numbering.
+  const used = new Uint8Array(nv);
+  for (const e of edges) for (const v of e.verts) used[v] = 1;
+  const newId = new Int32Array(nv);
+  let kept = 0;
+  for (let v = 0; v < nv; v++) newId[v] = used[v] ? kept++ : -1;
+  const keptXs = new Float64Array(kept), keptYs = new Float64Array(kept);
+  for (let v = 0; v < nv; v++) {
+    if (newId[v]! < 0) continue;
+    keptXs[newId[v]!] = xs[v]!;
+    keptYs[newId[v]!] = ys[v]!;
+  }
+  if (kept < nv) {
+    for (const e of edges) {
+      e.start = newId[e.start]!;
+      e.end = newId[e.end]!;
+      for (let i = 0; i < e.verts.length; i++) e.verts[i] = newId[e.verts[i]!]!;
+    }
+  }
+  return { xs: keptXs, ys: keptYs, vertexCount: kept, edges, faceCount, faceArea2, nodeCount, repairs, holes };
 }
 
 function describeFace(ref: FeatureRef): string {

@@ -1,0 +1,66 @@
+// ssc build <input|tgap> --out <dir> [--style] [--chunk-bytes N]
+import { promises as fs } from 'node:fs';
+import { parseArgs } from 'node:util';
+import { InputError } from '../io/errors.js';
+import { generalizeFile } from '../pipeline.js';
+import { buildCube } from '../ssc/build-cube.js';
+import { readTgap } from '../tgap/format.js';
+import type { Tgap } from '../tgap/model.js';
+import { generalizeOptionSpecs, parseNumber, pipelineOptions, UsageError } from './args.js';
+
+export const usage = `ssc build <input.geojson|file.tgap> --out <dir> [options]
+  --style <style.json>      for polygon input: classes, colours, weights (see ssc generalize)
+  --chunk-bytes <n>         target chunk size (default 262144)
+  --sub-index-bytes <n>     largest index file before subtrees move to sub-index files (default 131072)
+  --no-precompress          do not write the .gz and .br copies
+  --quiet                   no progress on stderr
+Other ssc generalize options (--class-property, --crs, --layer, --precision, --base-scale,
+--allow-holes) apply to polygon input. The directory is replaced only when the build succeeds.`;
+
+async function isTgap(file: string): Promise<boolean> {
+  try {
+    const h = await fs.open(file, 'r');
+    try {
+      const b = Buffer.alloc(4);
+      await h.read(b, 0, 4, 0);
+      return b.readUInt32LE(0) === 0x50414754;
+    } finally {
+      await h.close();
+    }
+  } catch (err) {
+    throw new InputError(`cannot read input: ${(err as Error).message}`, { file });
+  }
+}
+
+export async function run(argv: string[]): Promise<void> {
+  const { values, positionals } = parseArgs({
+    args: argv,
+    allowPositionals: true,
+    options: {
+      out: { type: 'string' },
+      'chunk-bytes': { type: 'string' },
+      'sub-index-bytes': { type: 'string' },
+      'no-precompress': { type: 'boolean' },
+      ...generalizeOptionSpecs,
+    },
+  });
+  if (positionals.length !== 1) throw new UsageError('give one input file (polygons or a tGAP)');
+  if (!values.out) throw new UsageError('--out <dir> is required');
+  const chunkBytes = parseNumber(values['chunk-bytes'], '--chunk-bytes', { min: 1024, integer: true });
+  const subIndexBytes = parseNumber(values['sub-index-bytes'], '--sub-index-bytes', { min: 1024, integer: true });
+  const options = pipelineOptions(values);
+  const t0 = performance.now();
+  const input = positionals[0]!;
+  const tgap: Tgap = (await isTgap(input)) ? await readTgap(input) : (await generalizeFile(input, options)).tgap;
+  const r = await buildCube(tgap, values.out, {
+    ...(chunkBytes !== undefined ? { chunkBytes } : {}),
+    ...(subIndexBytes !== undefined ? { subIndexBytes } : {}),
+    precompress: !values['no-precompress'],
+    ...(options.log ? { log: options.log } : {}),
+  });
+  const sorted = [...r.chunkBytes].sort((a, b) => a - b);
+  process.stdout.write(
+    `cube: ${tgap.meta.steps} steps, ${r.triangles} triangles in ${r.chunks} chunks (${sorted[0] ?? 0}..${sorted[sorted.length - 1] ?? 0} bytes), ${r.indexFiles} index file(s)\n` +
+      `wrote ${values.out}: ${r.files} files, ${r.bytesWritten} bytes with the compressed copies, in ${((performance.now() - t0) / 1000).toFixed(1)} s\n`,
+  );
+}

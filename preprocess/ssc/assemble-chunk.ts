@@ -1,0 +1,63 @@
+// One chunk's triangles as the chunk file's columns: vertices shared within a surface piece,
+// positions relative to an origin near the chunk so float32 keeps millimetres.
+import { encodeChunk, NO_CLASS } from '../../client/src/shared/chunk-format.js';
+import type { Box3 } from '../../client/src/shared/cube-index.js';
+import type { Surfaces } from './surfaces.js';
+
+export interface AssembledChunk {
+  bytes: Uint8Array;
+  triangles: number;
+  vertices: number;
+  /** Ground and z box: x0, y0, z0, x1, y1, z1 (z1: up to where the triangles matter). */
+  bbox: Box3;
+}
+
+export function assembleChunk(
+  s: Surfaces, tris: ArrayLike<number>, xs: Float64Array, ys: Float64Array, classOf: (face: number) => number,
+): AssembledChunk {
+  const local = new Map<number, number>();
+  const verts: number[] = []; // [vertex id, triangle it came from] pairs
+  const indices: number[] = [];
+  let x0 = Infinity, y0 = Infinity, z0 = Infinity, x1 = -Infinity, y1 = -Infinity, z1 = -Infinity;
+  for (let k = 0; k < tris.length; k++) {
+    const i = tris[k]!;
+    const piece = s.piece[i]!;
+    for (let j = 0; j < 3; j++) {
+      const v = s.v[3 * i + j]!;
+      const key = piece * 0x4000000 + v;
+      let li = local.get(key);
+      if (li === undefined) {
+        li = verts.length / 2;
+        local.set(key, li);
+        verts.push(v, i);
+        x0 = Math.min(x0, xs[v]!); x1 = Math.max(x1, xs[v]!);
+        y0 = Math.min(y0, ys[v]!); y1 = Math.max(y1, ys[v]!);
+      }
+      indices.push(li);
+    }
+    z0 = Math.min(z0, s.z[i]!);
+    z1 = Math.max(z1, s.zEnd[i]!);
+  }
+  const V = verts.length / 2;
+  // A whole-unit origin: exact in float64, and every position is then within the chunk's size of it.
+  const ox = Math.floor(x0), oy = Math.floor(y0);
+  const positions = new Float32Array(3 * V);
+  const upper = new Uint32Array(V), lower = new Uint32Array(V);
+  const upperClass = new Uint16Array(V), lowerClass = new Uint16Array(V);
+  for (let k = 0; k < V; k++) {
+    const v = verts[2 * k]!, i = verts[2 * k + 1]!;
+    positions[3 * k] = xs[v]! - ox;
+    positions[3 * k + 1] = ys[v]! - oy;
+    positions[3 * k + 2] = s.z[i]!;
+    upper[k] = s.upper[i]!;
+    lower[k] = s.lower[i]!;
+    upperClass[k] = s.upper[i]! > 0 ? classOf(s.upper[i]!) : NO_CLASS;
+    lowerClass[k] = s.lower[i]! > 0 ? classOf(s.lower[i]!) : NO_CLASS;
+  }
+  const box = Float32Array.of(x0 - ox, y0 - oy, z0, x1 - ox, y1 - oy, z1);
+  const bytes = encodeChunk({
+    originX: ox, originY: oy, box, positions, upper, lower, upperClass, lowerClass,
+    indices: V <= 0xffff ? Uint16Array.from(indices) : Uint32Array.from(indices),
+  });
+  return { bytes, triangles: tris.length, vertices: V, bbox: [x0, y0, z0, x1, y1, z1] };
+}

@@ -1,0 +1,139 @@
+// tGAP -> the cube directory (docs/FORMAT.md): surfaces, chunks, face and attribute pages, the
+// R-tree index, and a gzip and a brotli copy of every file. Written to a temporary directory
+// and renamed into place, so a failed build leaves nothing behind.
+import { createHash } from 'node:crypto';
+import { promises as fs } from 'node:fs';
+import path from 'node:path';
+import { brotliCompressSync, constants as zc, gzipSync } from 'node:zlib';
+import type { ChunkLeaf } from '../../client/src/shared/cube-index.js';
+import { scaleAtZ } from '../../client/src/shared/scale.js';
+import { writeDirAtomic } from '../io/atomic-write.js';
+import { PHASES, scaleInfoOf, type Tgap } from '../tgap/model.js';
+import { assembleChunk } from './assemble-chunk.js';
+import { planChunks } from './chunking.js';
+import { encodeFacePage, PAGE_SIZE } from './face-pages.js';
+import { packTree, splitTree } from './rtree-index.js';
+import { buildSurfaces, type SurfaceStats } from './surfaces.js';
+
+export const PIXEL_SIZE_MM = 0.28;
+
+export interface BuildOptions {
+  chunkBytes?: number;
+  /** Largest index file (JSON bytes) before subtrees move to sub-index files. */
+  subIndexBytes?: number;
+  /** Write .gz and .br copies (default true). */
+  precompress?: boolean;
+  log?: (msg: string) => void;
+}
+
+export interface BuildReport {
+  triangles: number;
+  surfaces: SurfaceStats;
+  chunks: number;
+  chunkBytes: number[];
+  indexFiles: number;
+  files: number;
+  bytesWritten: number;
+  timings: Record<string, number>;
+}
+
+export function hashName(prefix: string, bytes: Uint8Array | string, ext: string): { name: string; sha256: string } {
+  const sha256 = createHash('sha256').update(bytes).digest('hex');
+  return { name: `${prefix}-${sha256.slice(0, 16)}.${ext}`, sha256 };
+}
+
+export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}): Promise<BuildReport> {
+  const log = opts.log ?? (() => {});
+  const timings: Record<string, number> = {};
+  let t0 = performance.now();
+  const lap = (name: string): void => {
+    const now = performance.now();
+    timings[name] = Math.round(now - t0);
+    t0 = now;
+  };
+  const { surfaces, stats, zTop } = buildSurfaces(t);
+  lap('surfaces');
+  log(`surfaces: ${surfaces.count} triangles (floor ${stats.floor}, merges ${stats.merge}, splits ${stats.split}, simplification ${stats.simplify}, redrawn ${stats.reemit})`);
+  const info = scaleInfoOf(t);
+  const plan = planChunks({
+    surfaces, xs: t.xs, ys: t.ys, extent: t.meta.extent, zTop,
+    scaleAt: (z) => scaleAtZ(info, z),
+    viewPerScale: [(1280 * PIXEL_SIZE_MM) / 1000, (720 * PIXEL_SIZE_MM) / 1000],
+    targetBytes: opts.chunkBytes ?? 256 * 1024,
+  });
+  lap('plan');
+  const files = new Map<string, Uint8Array>();
+  const classOf = (f: number): number => t.faces[f]!.classIndex;
+  const leaves: ChunkLeaf[] = [];
+  const chunkBytes: number[] = [];
+  for (let c = 0; c + 1 < plan.start.length; c++) {
+    const tris = plan.order.subarray(plan.start[c]!, plan.start[c + 1]!);
+    if (tris.length === 0) continue;
+    const ch = assembleChunk(surfaces, tris, t.xs, t.ys, classOf);
+    const { name, sha256 } = hashName('c', ch.bytes, 'bin');
+    files.set(name, ch.bytes);
+    leaves.push({ bbox: ch.bbox, file: name, bytes: ch.bytes.length, triangles: ch.triangles, sha256 });
+    chunkBytes.push(ch.bytes.length);
+  }
+  lap('chunks');
+  const facePages: { first: number; file: string }[] = [];
+  for (let first = 0; first < t.faces.length; first += PAGE_SIZE) {
+    const bytes = encodeFacePage(t.faces, first, Math.min(PAGE_SIZE, t.faces.length - first));
+    const { name } = hashName('f', bytes, 'bin');
+    files.set(name, bytes);
+    facePages.push({ first, file: name });
+  }
+  const attributePages: { first: number; file: string }[] = [];
+  const attrs = t.meta.attributes;
+  for (let first = 0; first < attrs.length; first += PAGE_SIZE) {
+    const json = JSON.stringify({ first, attributes: attrs.slice(first, first + PAGE_SIZE) });
+    const bytes = new TextEncoder().encode(json);
+    const { name } = hashName('a', bytes, 'json');
+    files.set(name, bytes);
+    attributePages.push({ first, file: name });
+  }
+  const tree = splitTree(packTree(leaves), opts.subIndexBytes ?? 128 * 1024, (json) => hashName('i', json, 'json').name);
+  for (const f of tree.files) files.set(f.name, new TextEncoder().encode(f.json));
+  const style = t.meta.style as { name?: string; attribution?: string };
+  const index = {
+    format: 'ssc-index',
+    version: 1,
+    meta: {
+      name: style.name ?? t.meta.source,
+      crs: t.meta.crs,
+      ...(t.meta.projectedFrom ? { projectedFrom: t.meta.projectedFrom, proj4: t.meta.proj4 } : {}),
+      extent: t.meta.extent,
+      zMax: t.meta.steps,
+      steps: t.meta.steps,
+      phases: PHASES,
+      baseScale: t.meta.baseScale,
+      baseFaces: t.meta.baseFaces,
+      pixelSizeMm: PIXEL_SIZE_MM,
+      scaleTable: info.scaleTable,
+      style: t.meta.style,
+      attribution: style.attribution ?? '',
+      source: t.meta.source,
+      faces: { count: t.faces.length, pageSize: PAGE_SIZE, pages: facePages },
+      attributes: { count: attrs.length, pageSize: PAGE_SIZE, pages: attributePages },
+    },
+    root: tree.root,
+  };
+  files.set('index.json', new TextEncoder().encode(JSON.stringify(index)));
+  lap('index');
+  let bytesWritten = 0;
+  await writeDirAtomic(outDir, async (dir) => {
+    for (const [name, bytes] of [...files].sort((a, b) => (a[0] < b[0] ? -1 : 1))) {
+      await fs.writeFile(path.join(dir, name), bytes);
+      bytesWritten += bytes.length;
+      if (opts.precompress ?? true) {
+        const gz = gzipSync(bytes, { level: 9 });
+        const br = brotliCompressSync(bytes, { params: { [zc.BROTLI_PARAM_QUALITY]: 9, [zc.BROTLI_PARAM_SIZE_HINT]: bytes.length } });
+        await fs.writeFile(path.join(dir, `${name}.gz`), gz);
+        await fs.writeFile(path.join(dir, `${name}.br`), br);
+        bytesWritten += gz.length + br.length;
+      }
+    }
+  });
+  lap('write');
+  return { triangles: surfaces.count, surfaces: stats, chunks: leaves.length, chunkBytes, indexFiles: 1 + tree.files.length, files: files.size, bytesWritten, timings };
+}

@@ -1,0 +1,118 @@
+// What a cube directory holds, measured: chunk sizes, what chunking costs over one unchunked
+// file, the index, and what a 1280x720 view needs at scales from the base scale to the whole
+// extent (detail must follow scale).
+import { promises as fs } from 'node:fs';
+import path from 'node:path';
+import { isExternal, isLeaf, type IndexNode } from '../../client/src/shared/cube-index.js';
+import { scaleAtZ, zAtScale } from '../../client/src/shared/scale.js';
+import { PIXEL_SIZE_MM } from './build-cube.js';
+import { CubeReader } from './read-cube.js';
+
+export interface ViewRow {
+  scale: number;
+  z: number;
+  chunks: number;
+  triangles: number;
+  bytes: number;
+}
+
+export interface CubeReport {
+  name: string;
+  faces: number;
+  steps: number;
+  scaleRange: [number, number];
+  chunks: number;
+  triangles: number;
+  bytes: { total: number; min: number; median: number; max: number; cv: number };
+  unchunkedBytes: number;
+  overhead: number;
+  index: { depth: number; files: number; bytes: number };
+  views: ViewRow[];
+  viewRatio: { triangles: number; bytes: number };
+}
+
+export async function inspectCube(dir: string): Promise<CubeReport> {
+  const cube = await CubeReader.open(dir);
+  await cube.loadAll();
+  const meta = cube.index.meta;
+  const leaves = cube.queryLoaded({ ground: [-Infinity, -Infinity, Infinity, Infinity], zMin: -Infinity, zMax: Infinity });
+  const sizes = leaves.map((l) => l.bytes).sort((a, b) => a - b);
+  const total = sizes.reduce((a, b) => a + b, 0);
+  const mean = total / Math.max(1, sizes.length);
+  const sd = Math.sqrt(sizes.reduce((a, b) => a + (b - mean) ** 2, 0) / Math.max(1, sizes.length));
+  // The same surfaces as one file: vertices shared across what chunk borders split apart.
+  const unique = new Set<string>();
+  let triangles = 0;
+  const decoded = [];
+  for (const leaf of leaves) {
+    const c = await cube.chunk(leaf);
+    decoded.push({ leaf, c });
+    triangles += c.triangleCount;
+    for (let v = 0; v < c.vertexCount; v++) {
+      unique.add(`${c.originX + c.positions[3 * v]!},${c.originY + c.positions[3 * v + 1]!},${c.positions[3 * v + 2]!},${c.upper[v]},${c.lower[v]}`);
+    }
+  }
+  // One file would need 32-bit indices; count it with the chunks' own index width so that only
+  // what chunking adds (headers, vertices repeated on both sides of a chunk border) is compared.
+  const width = decoded.every(({ c }) => c.indices.BYTES_PER_ELEMENT === 2) ? 2 : 4;
+  const unchunkedBytes = 64 + 24 * unique.size + ((3 * width * triangles + 3) & ~3);
+  let depth = 0;
+  const walk = (n: IndexNode, d: number): void => {
+    depth = Math.max(depth, d);
+    if (isLeaf(n) || isExternal(n)) return;
+    for (const c of n.children) walk(c, d + 1);
+  };
+  walk(cube.index.root, 1);
+  let indexBytes = 0;
+  for (const name of await fs.readdir(dir)) {
+    if (name === 'index.json' || (name.startsWith('i-') && name.endsWith('.json'))) indexBytes += (await fs.stat(path.join(dir, name))).size;
+  }
+  const views: ViewRow[] = [];
+  const [x0, y0, x1, y1] = meta.extent;
+  const px = PIXEL_SIZE_MM / 1000;
+  const sBase = meta.baseScale;
+  const sFull = Math.max((x1 - x0) / (1280 * px), (y1 - y0) / (720 * px), sBase);
+  for (let i = 0; i < 8; i++) {
+    const scale = sBase * Math.pow(sFull / sBase, i / 7);
+    const z = zAtScale(meta, scale);
+    const hw = 640 * px * scale, hh = 360 * px * scale;
+    // The mean over a 5 x 5 grid of view centres over the extent (a view at one place alone can
+    // sit on the very edges where chunks meet).
+    let tris = 0, bytes = 0, chunks = 0;
+    const grid = 5;
+    for (let gy = 0; gy < grid; gy++) {
+      for (let gx = 0; gx < grid; gx++) {
+        const vx = x0 + ((gx + 0.5) / grid) * (x1 - x0), vy = y0 + ((gy + 0.5) / grid) * (y1 - y0);
+        const ground: [number, number, number, number] = [vx - hw, vy - hh, vx + hw, vy + hh];
+        const hit = new Set(cube.queryLoaded({ ground, zMin: z, zMax: z }).map((l) => l.file));
+        for (const { leaf, c } of decoded) {
+          if (!hit.has(leaf.file)) continue;
+          tris += c.triangleCount;
+          bytes += leaf.bytes;
+        }
+        chunks += hit.size;
+      }
+    }
+    const g2 = grid * grid;
+    views.push({ scale, z, chunks: chunks / g2, triangles: Math.round(tris / g2), bytes: Math.round(bytes / g2) });
+  }
+  const ratio = (k: 'triangles' | 'bytes'): number => {
+    const v = views.map((r) => r[k]);
+    return Math.max(...v) / Math.max(1, Math.min(...v));
+  };
+  return {
+    name: meta.name,
+    faces: meta.baseFaces,
+    steps: meta.steps,
+    scaleRange: [meta.baseScale, scaleAtZ(meta, meta.zMax)],
+    chunks: leaves.length,
+    triangles,
+    bytes: { total, min: sizes[0] ?? 0, median: sizes[Math.floor(sizes.length / 2)] ?? 0, max: sizes[sizes.length - 1] ?? 0, cv: mean > 0 ? sd / mean : 0 },
+    unchunkedBytes,
+    overhead: total / Math.max(1, unchunkedBytes),
+    index: { depth, files: 1 + cube.subIndexFiles, bytes: indexBytes },
+    views,
+    viewRatio: { triangles: ratio('triangles'), bytes: ratio('bytes') },
+  };
+}
+

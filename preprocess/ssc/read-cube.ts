@@ -1,0 +1,86 @@
+// Reading a cube directory the way the map does: index.json, sub-index files on demand, and
+// chunks checked against the index's SHA-256 before they are decoded.
+import { createHash } from 'node:crypto';
+import { promises as fs } from 'node:fs';
+import path from 'node:path';
+import { decodeChunk, type DecodedChunk } from '../../client/src/shared/chunk-format.js';
+import { parseIndex, parseSubIndex, type ChunkLeaf, type CubeIndex, type InnerNode } from '../../client/src/shared/cube-index.js';
+import { queryIndex, type QueryBox } from '../../client/src/shared/index-query.js';
+import { InputError } from '../io/errors.js';
+
+export class CubeReader {
+  private readonly subs = new Map<string, InnerNode>();
+  /** Sub-index files read so far. */
+  subIndexFiles = 0;
+
+  private constructor(readonly dir: string, readonly index: CubeIndex) {}
+
+  static async open(dir: string): Promise<CubeReader> {
+    const file = path.join(dir, 'index.json');
+    let text: string;
+    try {
+      text = await fs.readFile(file, 'utf8');
+    } catch (err) {
+      throw new InputError(`cannot read the cube's index: ${(err as Error).message}`, { file });
+    }
+    try {
+      return new CubeReader(dir, parseIndex(JSON.parse(text)));
+    } catch (err) {
+      throw new InputError(`is not a valid cube index: ${(err as Error).message}`, { file });
+    }
+  }
+
+  /** The chunks whose boxes meet the query, reading sub-index files as the query reaches them. */
+  async query(q: QueryBox): Promise<ChunkLeaf[]> {
+    for (;;) {
+      const r = queryIndex(this.index.root, q, (ref) => this.subs.get(ref));
+      if (r.missing.length === 0) return r.leaves;
+      for (const ref of r.missing) await this.loadSub(ref);
+    }
+  }
+
+  /** Every sub-index file, so that queries run without reading anything. */
+  async loadAll(): Promise<void> {
+    const everything: QueryBox = { ground: [-Infinity, -Infinity, Infinity, Infinity], zMin: -Infinity, zMax: Infinity };
+    await this.query(everything);
+  }
+
+  /** Synchronous query over what is loaded (after loadAll). */
+  queryLoaded(q: QueryBox): ChunkLeaf[] {
+    return queryIndex(this.index.root, q, (ref) => this.subs.get(ref)).leaves;
+  }
+
+  private async loadSub(ref: string): Promise<void> {
+    const file = path.join(this.dir, ref);
+    let json: unknown;
+    try {
+      json = JSON.parse(await fs.readFile(file, 'utf8'));
+    } catch (err) {
+      throw new InputError(`cannot read sub-index: ${(err as Error).message}`, { file });
+    }
+    try {
+      this.subs.set(ref, parseSubIndex(json, ref));
+    } catch (err) {
+      throw new InputError(`is not a valid sub-index: ${(err as Error).message}`, { file });
+    }
+    this.subIndexFiles++;
+  }
+
+  async chunk(leaf: ChunkLeaf): Promise<DecodedChunk> {
+    const file = path.join(this.dir, leaf.file);
+    let bytes: Buffer;
+    try {
+      bytes = await fs.readFile(file);
+    } catch (err) {
+      throw new InputError(`cannot read chunk: ${(err as Error).message}`, { file });
+    }
+    if (bytes.length !== leaf.bytes) throw new InputError(`is ${bytes.length} bytes; the index says ${leaf.bytes} (truncated or replaced)`, { file });
+    const sha = createHash('sha256').update(bytes).digest('hex');
+    if (sha !== leaf.sha256) throw new InputError(`is corrupt: its SHA-256 does not match the index`, { file });
+    try {
+      return decodeChunk(new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength), leaf.file);
+    } catch (err) {
+      throw new InputError(`is not a valid chunk: ${(err as Error).message}`, { file });
+    }
+  }
+}

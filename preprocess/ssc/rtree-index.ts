@@ -1,0 +1,67 @@
+// The chunk index: an R-tree packed bottom-up from the chunks in their (Hilbert) order, 16
+// children a node; subtrees that would make a file too large go to sub-index files of their own.
+import type { Box3, ChunkLeaf, IndexNode, InnerNode } from '../../client/src/shared/cube-index.js';
+
+export const FANOUT = 16;
+
+function union(boxes: Box3[]): Box3 {
+  const b: Box3 = [Infinity, Infinity, Infinity, -Infinity, -Infinity, -Infinity];
+  for (const c of boxes) {
+    for (let i = 0; i < 3; i++) {
+      b[i] = Math.min(b[i]!, c[i]!);
+      b[i + 3] = Math.max(b[i + 3]!, c[i + 3]!);
+    }
+  }
+  return b;
+}
+
+/** The tree over the leaves (in their given order); the root is always an inner node. */
+export function packTree(leaves: ChunkLeaf[]): InnerNode {
+  let level: IndexNode[] = leaves;
+  do {
+    const next: InnerNode[] = [];
+    for (let i = 0; i < level.length; i += FANOUT) {
+      const children = level.slice(i, i + FANOUT);
+      next.push({ bbox: union(children.map((c) => c.bbox)), children });
+    }
+    level = next;
+  } while (level.length > 1);
+  return level[0] as InnerNode;
+}
+
+export interface SubIndexFile {
+  name: string;
+  json: string;
+}
+
+/**
+ * Moves subtrees out to sub-index files, bottom-up: wherever a node written inline would exceed
+ * `maxBytes` of JSON, its largest inline children go to files of their own until it fits.
+ * `name(json)` gives a content-hashed file name.
+ */
+export function splitTree(root: InnerNode, maxBytes: number, name: (json: string) => string): { root: InnerNode; files: SubIndexFile[] } {
+  const files: SubIndexFile[] = [];
+  const countChunks = (n: IndexNode): number => ('file' in n ? 1 : 'ref' in n ? n.chunks : n.children.reduce((a, c) => a + countChunks(c), 0));
+  const visit = (n: InnerNode): InnerNode => {
+    const inner: InnerNode = { bbox: n.bbox, children: n.children.map((c) => ('children' in c ? visit(c) : c)) };
+    for (;;) {
+      if (JSON.stringify(inner).length <= maxBytes) return inner;
+      let biggest = -1, biggestLen = 0;
+      inner.children.forEach((c, i) => {
+        if (!('children' in c)) return;
+        const len = JSON.stringify(c).length;
+        if (len > biggestLen) {
+          biggest = i;
+          biggestLen = len;
+        }
+      });
+      if (biggest < 0) return inner;
+      const child = inner.children[biggest] as InnerNode;
+      const json = JSON.stringify({ format: 'ssc-subindex', version: 1, node: child });
+      const file = name(json);
+      files.push({ name: file, json });
+      inner.children[biggest] = { bbox: child.bbox, ref: file, chunks: countChunks(child) };
+    }
+  };
+  return { root: visit(root), files };
+}

@@ -1,0 +1,196 @@
+// The Space-Scale Cube's surfaces from a tGAP: the tGAP is replayed step by step and every
+// change of a point's face becomes a horizontal triangle between the old face (lower) and the
+// new one (upper), at the z of the step's phase (docs/FORMAT.md):
+// - the floor (z = 0): every input face, nothing below;
+// - a merge: the loser's area (and, when the winner is replaced by a new face, the winner's);
+// - a split: the triangles the split gave each receiving face;
+// - simplification: each removed vertex's triangle, between the faces on either side.
+import { orient } from '../geom/predicates.js';
+import { EventKind, faceEndZ, LAST_REMOVAL_PHASE, phaseZ, REEMIT_PHASE, resolveFace, resolveFaceAt, type Tgap } from '../tgap/model.js';
+import { triangulateFace, type FaceEdge, type TriangulateStats } from './triangulate-face.js';
+
+export class Surfaces {
+  count = 0;
+  /** tGAP vertex ids, 3 per triangle, counterclockwise. */
+  v = new Int32Array(3 * 1024);
+  z = new Float64Array(1024);
+  upper = new Int32Array(1024);
+  lower = new Int32Array(1024);
+  /** z from which newer surfaces cover the triangle (its upper face ended). */
+  zEnd = new Float64Array(1024);
+  /**
+   * Triangles with the same z, upper and lower face form a piece: only within a piece can they
+   * share vertices (a vertex carries z and both faces).
+   */
+  piece = new Int32Array(1024);
+  pieces = 0;
+  private readonly pieceIds = new Map<string, number>();
+
+  add(a: number, b: number, c: number, z: number, upper: number, lower: number): void {
+    if (this.count === this.z.length) this.grow();
+    const i = this.count++;
+    if (i > 0 && this.z[i - 1] === z && this.upper[i - 1] === upper && this.lower[i - 1] === lower) {
+      this.piece[i] = this.piece[i - 1]!;
+    } else {
+      const key = `${z} ${upper} ${lower}`;
+      let id = this.pieceIds.get(key);
+      if (id === undefined) this.pieceIds.set(key, (id = this.pieces++));
+      this.piece[i] = id;
+    }
+    this.v[3 * i] = a;
+    this.v[3 * i + 1] = b;
+    this.v[3 * i + 2] = c;
+    this.z[i] = z;
+    this.upper[i] = upper;
+    this.lower[i] = lower;
+  }
+
+  private grow(): void {
+    const n = this.z.length * 2;
+    const v = new Int32Array(3 * n);
+    v.set(this.v);
+    this.v = v;
+    for (const k of ['z', 'zEnd'] as const) {
+      const a = new Float64Array(n);
+      a.set(this[k]);
+      this[k] = a;
+    }
+    for (const k of ['upper', 'lower', 'piece'] as const) {
+      const a = new Int32Array(n);
+      a.set(this[k]);
+      this[k] = a;
+    }
+  }
+}
+
+export interface SurfaceStats extends TriangulateStats {
+  floor: number;
+  merge: number;
+  split: number;
+  simplify: number;
+  reemit: number;
+}
+
+export function buildSurfaces(t: Tgap): { surfaces: Surfaces; stats: SurfaceStats; zTop: number } {
+  const steps = t.meta.steps;
+  const zTop = steps + 1;
+  const out = new Surfaces();
+  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0 };
+  const { xs, ys, faces, edges } = t;
+  // Edges by the state they start and end in.
+  const born: number[][] = Array.from({ length: steps + 2 }, () => []);
+  const died: number[][] = Array.from({ length: steps + 2 }, () => []);
+  edges.forEach((e, i) => {
+    born[e.stepLow]!.push(i);
+    if (e.stepHigh <= steps) died[e.stepHigh]!.push(i);
+  });
+  const faceEdges = new Map<number, Set<number>>();
+  const attach = (e: number, s: number): void => {
+    const edge = edges[e]!;
+    for (const f of [resolveFace(faces, edge.left, s), resolveFace(faces, edge.right, s)]) {
+      if (f === 0) continue;
+      let set = faceEdges.get(f);
+      if (!set) faceEdges.set(f, (set = new Set()));
+      set.add(e);
+    }
+  };
+  const tris: number[] = [];
+  /** Triangulates face f's current area and adds it at z with the given upper and lower faces. */
+  const emitFace = (f: number, s: number, z: number, upper: number, lower: number): number => {
+    const set = faceEdges.get(f);
+    if (!set) return 0;
+    const fe: FaceEdge[] = [];
+    for (const e of [...set].sort((a, b) => a - b)) {
+      const edge = edges[e]!;
+      const l = resolveFace(faces, edge.left, s);
+      const r = resolveFace(faces, edge.right, s);
+      if (l === f && r === f) continue;
+      fe.push({ verts: edge.verts, forward: l === f });
+    }
+    tris.length = 0;
+    const n = triangulateFace(fe, xs, ys, tris, stats);
+    for (let i = 0; i < tris.length; i += 3) out.add(tris[i]!, tris[i + 1]!, tris[i + 2]!, z, upper, lower);
+    return n;
+  };
+
+  for (const e of born[0]!) if (edges[e]!.stepHigh > 0) attach(e, 0);
+  for (let f = 1; f < faces.length; f++) {
+    if (faces[f]!.stepLow === 0 && faces[f]!.stepHigh > 0) stats.floor += emitFace(f, 0, 0, f, 0);
+  }
+  let ev = 0;
+  for (let k = 1; k <= steps; k++) {
+    const z0 = phaseZ(k, 0);
+    // Phase 0: the areas that change face in this step, as they were in state k - 1.
+    const handOn: [number, number][] = []; // [face, into]: faces whose edges go to another face
+    const reemits: [number, number][] = [];
+    for (; ev < t.events.length && t.events[ev]!.step === k; ev++) {
+      const e = t.events[ev]!;
+      if (e.kind === EventKind.Merge) {
+        stats.merge += emitFace(e.loser, k - 1, z0, e.into, e.loser);
+        handOn.push([e.loser, e.into]);
+      } else if (e.kind === EventKind.Split) {
+        const tv = e.tris!, tf = e.triFaces!;
+        for (let i = 0; i < tf.length; i++) out.add(tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!, z0, tf[i]!, e.loser);
+        stats.split += tf.length;
+        faceEdges.delete(e.loser);
+      } else {
+        handOn.push([e.loser, e.into]);
+        reemits.push([e.loser, e.into]);
+      }
+    }
+    // The edges that end here leave their faces (as they were before the step) ...
+    for (const e of died[k]!) {
+      const edge = edges[e]!;
+      for (const f of [resolveFace(faces, edge.left, k - 1), resolveFace(faces, edge.right, k - 1)]) faceEdges.get(f)?.delete(e);
+    }
+    // ... merged and replaced faces hand their edges on ...
+    for (const [f, into] of handOn) {
+      const set = faceEdges.get(f);
+      faceEdges.delete(f);
+      if (!set) continue;
+      let target = faceEdges.get(into);
+      if (!target) faceEdges.set(into, (target = new Set()));
+      for (const e of set) target.add(e);
+    }
+    // ... and the new edges join theirs.
+    for (const e of born[k]!) if (edges[e]!.stepHigh > k) attach(e, k);
+    // Simplification: replay each new version's removals on its parent's chain.
+    for (const e of born[k]!) {
+      const edge = edges[e]!;
+      if (edge.removed.length === 0) continue;
+      const p = edge.parents[0]!;
+      const parent = edges[p >= 0 ? p : -p - 1]!;
+      const chain = p >= 0 ? Array.from(parent.verts) : Array.from(parent.verts).reverse();
+      const n = chain.length;
+      const pos = new Map<number, number>();
+      for (let i = 1; i < n - 1; i++) pos.set(chain[i]!, i);
+      const prev = Int32Array.from({ length: n }, (_, i) => i - 1);
+      const next = Int32Array.from({ length: n }, (_, i) => i + 1);
+      // The faces as they are while lines are simplified (before any replacement at the step's end).
+      const left = resolveFaceAt(faces, edge.left, k, LAST_REMOVAL_PHASE);
+      const right = resolveFaceAt(faces, edge.right, k, LAST_REMOVAL_PHASE);
+      for (let r = 0; r < edge.removed.length; r++) {
+        const i = pos.get(edge.removed[r]!);
+        if (i === undefined) throw new Error(`edge ${e}: removed vertex ${edge.removed[r]} is not in its parent chain`);
+        const a = chain[prev[i]!]!, v = chain[i]!, b = chain[next[i]!]!;
+        next[prev[i]!] = next[i]!;
+        prev[next[i]!] = prev[i]!;
+        const o = orient(xs[a]!, ys[a]!, xs[b]!, ys[b]!, xs[v]!, ys[v]!);
+        if (o === 0) continue;
+        // v left of the new chord: the triangle passes from the right face to the left one.
+        const z = phaseZ(k, edge.removedPhase[r]!);
+        if (o > 0) out.add(a, b, v, z, left, right);
+        else out.add(a, v, b, z, right, left);
+        stats.simplify++;
+      }
+    }
+    // Replaced faces: their whole area, as it is at the end of the step, drawn again.
+    for (const [f, g] of reemits) stats.reemit += emitFace(g, k, phaseZ(k, REEMIT_PHASE), g, f);
+  }
+  // Each triangle matters until its upper face ends; after that newer surfaces cover it.
+  for (let i = 0; i < out.count; i++) {
+    const u = out.upper[i]!;
+    out.zEnd[i] = u > 0 ? Math.min(zTop, faceEndZ(faces[u]!, steps)) : zTop;
+  }
+  return { surfaces: out, stats, zTop };
+}

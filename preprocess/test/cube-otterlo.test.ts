@@ -1,0 +1,193 @@
+// ssc build / slice / inspect on bgt_otterlo_400m: the cube sliced through its chunks gives
+// the 2D maps of the tGAP (the oracle), chunking loses nothing, files round-trip bit-exactly,
+// builds are deterministic and damaged chunks are named.
+import test from 'node:test';
+import assert from 'node:assert/strict';
+import { existsSync, mkdirSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
+import path from 'node:path';
+import { decodeChunk, encodeChunk } from '../../client/src/shared/chunk-format.js';
+import { parseSurface, surfaceZ } from '../../client/src/shared/surfaces.js';
+import { fitView, rasterizeAt } from '../map/rasterize.js';
+import { decodeTgap, encodeTgap, readTgap } from '../tgap/format.js';
+import { resolveFace } from '../tgap/model.js';
+import { dataset, runSsc, styleFile, tempDir } from './helpers.js';
+
+const W = 240, H = 180;
+
+function readIds(file: string): Uint32Array {
+  const b = readFileSync(file);
+  return new Uint32Array(b.buffer.slice(b.byteOffset, b.byteOffset + b.byteLength));
+}
+
+/** Pixels where a differs from b, and of those the ones with no change of id around them in b. */
+function diff(a: Uint32Array, b: Uint32Array): { differ: number; offBoundary: number } {
+  let differ = 0, offBoundary = 0;
+  for (let p = 0; p < a.length; p++) {
+    if (a[p] === b[p]) continue;
+    differ++;
+    const i = p % W, j = Math.floor(p / W);
+    let edge = false;
+    for (let dj = -1; dj <= 1; dj++) for (let di = -1; di <= 1; di++) {
+      const ii = i + di, jj = j + dj;
+      if (ii >= 0 && jj >= 0 && ii < W && jj < H && b[jj * W + ii] !== b[p]) edge = true;
+    }
+    if (!edge) offBoundary++;
+  }
+  return { differ, offBoundary };
+}
+
+test('bgt_otterlo_400m cube', async (t) => {
+  const dir = tempDir(t);
+  const tgapFile = path.join(dir, 'o.tgap');
+  assert.equal(runSsc(['generalize', dataset('bgt_otterlo_400m.geojson'), '--style', styleFile('bgt.json'), '--out', tgapFile, '--quiet']).code, 0);
+  const cube = path.join(dir, 'cube');
+  const b = runSsc(['build', tgapFile, '--out', cube, '--quiet']);
+  assert.equal(b.code, 0, b.stderr);
+  const tgap = await readTgap(tgapFile);
+  const steps = tgap.meta.steps;
+
+  await t.test('slices through the chunks equal the 2D maps at 12 steps', () => {
+    const samples = [0, 1, 10, 40, 80, 120, 200, 280, 350, 420, steps - 5, steps];
+    for (const s of samples) {
+      const sl = runSsc(['slice', cube, '--step', String(s), '--size', `${W}x${H}`, '--out', path.join(dir, 's.png'), '--ids', path.join(dir, 's.ids')]);
+      assert.equal(sl.code, 0, sl.stderr);
+      const mp = runSsc(['map', tgapFile, '--step', String(s), '--size', `${W}x${H}`, '--out', path.join(dir, 'm.png'), '--ids', path.join(dir, 'm.ids')]);
+      assert.equal(mp.code, 0, mp.stderr);
+      const a = readIds(path.join(dir, 's.ids')), m = readIds(path.join(dir, 'm.ids'));
+      const d = diff(a, m);
+      assert.ok(d.differ <= 0.005 * W * H, `step ${s}: ${d.differ} pixels differ`);
+      assert.equal(d.offBoundary, 0, `step ${s}: differences away from boundaries`);
+      let holes = 0;
+      for (let p = 0; p < a.length; p++) if (m[p] !== 0 && a[p] === 0) holes++;
+      assert.equal(holes, 0, `step ${s}: domain pixels without a face`);
+    }
+  });
+
+  await t.test('non-flat surfaces show, at each pixel, the map of a step its z lies in', () => {
+    const [x0, y0, x1, y1] = tgap.meta.extent;
+    const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+    const specs = [
+      `tilted:cx=${cx},cy=${cy},dzdx=1.1,dzdy=-0.4`,
+      `sine:amplitude=120,wavelength=150,angle=30`,
+      `lens:cx=${cx},cy=${cy},radius=150,depth=300`,
+      `idw:power=2,points=${x0} ${y0} 20;${x1} ${y1} 460;${cx} ${cy} 250`,
+    ];
+    const view = fitView(tgap.meta.extent, W, H);
+    const maps = new Map<number, Uint32Array>();
+    const mapAt = (s: number): Uint32Array => {
+      let m = maps.get(s);
+      if (!m) maps.set(s, (m = rasterizeAt(tgap, s, view).ids));
+      return m;
+    };
+    for (const spec of specs) {
+      const base = 300;
+      const sl = runSsc(['slice', cube, '--step', String(base), '--surface', spec, '--size', `${W}x${H}`, '--out', path.join(dir, 's.png'), '--ids', path.join(dir, 's.ids')]);
+      assert.equal(sl.code, 0, sl.stderr);
+      const a = readIds(path.join(dir, 's.ids'));
+      const surface = { base, spec: parseSurface(spec) };
+      const px = (view.bbox[2] - view.bbox[0]) / W, py = (view.bbox[3] - view.bbox[1]) / H;
+      let bad = 0, zs = new Set<number>();
+      for (let j = 0; j < H; j++) {
+        for (let i = 0; i < W; i++) {
+          const z = surfaceZ(surface, view.bbox[0] + (i + 0.5) * px, view.bbox[3] - (j + 0.5) * py, steps);
+          zs.add(Math.floor(z));
+          // Within step k (k - 1 < z < k) a point shows the face it had in state k - 1, one that
+          // face passed its area on to during the step, or one that became the face of state k.
+          const k = Math.min(steps, Math.ceil(z));
+          const lo = mapAt(Math.floor(z)), hi = mapAt(k);
+          const p = j * W + i;
+          const shown = a[p]!;
+          let ok = shown === lo[p] || shown === hi[p] || (shown > 0 && resolveFace(tgap.faces, shown, k) === hi[p]);
+          for (let f = lo[p]!; !ok && f > 0 && tgap.faces[f]!.stepHigh <= k && tgap.faces[f]!.mergedInto > 0; ) {
+            f = tgap.faces[f]!.mergedInto;
+            ok = f === shown;
+          }
+          if (!ok) {
+            // Allowed only on a boundary of either map.
+            let edge = false;
+            for (const m of [lo, hi]) for (let dj = -1; dj <= 1; dj++) for (let di = -1; di <= 1; di++) {
+              const ii = i + di, jj = j + dj;
+              if (ii >= 0 && jj >= 0 && ii < W && jj < H && m[jj * W + ii] !== m[p]) edge = true;
+            }
+            if (!edge) bad++;
+          }
+        }
+      }
+      assert.ok(zs.size > 20, `${spec} spans many steps (${zs.size})`);
+      assert.equal(bad, 0, `${spec}: pixels showing a face of no neighbouring state`);
+    }
+  });
+
+  await t.test('a slice of one unchunked cube equals the slice through the index', () => {
+    const one = path.join(dir, 'one');
+    assert.equal(runSsc(['build', tgapFile, '--out', one, '--chunk-bytes', String(1 << 30), '--quiet', '--no-precompress']).code, 0);
+    assert.equal(readdirSync(one).filter((f) => f.startsWith('c-')).length, 1);
+    assert.ok(readdirSync(cube).filter((f) => f.startsWith('c-') && f.endsWith('.bin')).length > 1);
+    for (const s of [0, 150, 400, steps]) {
+      for (const [d, name] of [[cube, 'a'], [one, 'b']] as const) {
+        assert.equal(runSsc(['slice', d, '--step', String(s), '--size', `${W}x${H}`, '--out', path.join(dir, `${name}.png`), '--ids', path.join(dir, `${name}.ids`)]).code, 0);
+      }
+      assert.ok(readFileSync(path.join(dir, 'a.ids')).equals(readFileSync(path.join(dir, 'b.ids'))), `step ${s}: chunking changed the slice`);
+    }
+  });
+
+  await t.test('writer and reader round-trip bit-exactly', () => {
+    for (const f of readdirSync(cube).filter((n) => n.startsWith('c-') && n.endsWith('.bin'))) {
+      const bytes = readFileSync(path.join(cube, f));
+      const c = decodeChunk(new Uint8Array(bytes));
+      assert.ok(Buffer.from(encodeChunk(c)).equals(bytes), `${f} re-encodes to the same bytes`);
+    }
+    const tb = readFileSync(tgapFile);
+    assert.ok(Buffer.from(encodeTgap(decodeTgap(tb, 'o.tgap'))).equals(tb), 'the tGAP re-encodes to the same bytes');
+  });
+
+  await t.test('the build is deterministic', () => {
+    const again = path.join(dir, 'again');
+    assert.equal(runSsc(['build', tgapFile, '--out', again, '--quiet']).code, 0);
+    const names = readdirSync(cube).sort();
+    assert.deepEqual(readdirSync(again).sort(), names);
+    for (const n of names) assert.ok(readFileSync(path.join(cube, n)).equals(readFileSync(path.join(again, n))), `${n} differs`);
+  });
+
+  await t.test('a corrupt or truncated chunk is reported with its file name', () => {
+    const damaged = path.join(dir, 'damaged');
+    mkdirSync(damaged);
+    for (const n of readdirSync(cube)) writeFileSync(path.join(damaged, n), readFileSync(path.join(cube, n)));
+    const chunk = readdirSync(damaged).find((n) => n.startsWith('c-') && n.endsWith('.bin'))!;
+    const bytes = readFileSync(path.join(damaged, chunk));
+    bytes[200] = bytes[200]! ^ 0xff;
+    writeFileSync(path.join(damaged, chunk), bytes);
+    let r = runSsc(['slice', damaged, '--step', '0', '--size', '40x30', '--out', path.join(dir, 'x.png')]);
+    assert.notEqual(r.code, 0);
+    assert.match(r.stderr, new RegExp(`${chunk.replace('.', '\\.')}.*corrupt`));
+    writeFileSync(path.join(damaged, chunk), bytes.subarray(0, bytes.length - 7));
+    r = runSsc(['slice', damaged, '--step', '0', '--size', '40x30', '--out', path.join(dir, 'x.png')]);
+    assert.notEqual(r.code, 0);
+    assert.match(r.stderr, new RegExp(`${chunk.replace('.', '\\.')}.*truncated`));
+    assert.ok(!existsSync(path.join(dir, 'x.png')), 'no image written');
+    assert.throws(() => decodeChunk(new Uint8Array(bytes.subarray(0, 100)), chunk), /truncated|bytes/);
+  });
+
+  await t.test('a failed build leaves the old directory and nothing else', () => {
+    const bad = path.join(dir, 'bad.geojson');
+    writeFileSync(bad, JSON.stringify({ type: 'FeatureCollection', crs: { type: 'name', properties: { name: 'EPSG:28992' } }, features: [{ type: 'Feature', properties: { layer: 'pand' }, geometry: { type: 'Point', coordinates: [1, 2] } }] }));
+    const before = readdirSync(cube).sort();
+    const r = runSsc(['build', bad, '--style', styleFile('bgt.json'), '--out', cube, '--quiet']);
+    assert.notEqual(r.code, 0);
+    assert.match(r.stderr, /feature #0.*Point/);
+    assert.deepEqual(readdirSync(cube).sort(), before, 'the existing cube is untouched');
+    assert.deepEqual(readdirSync(dir).filter((n) => n.includes('.tmp-')), [], 'no temporary directory left');
+  });
+
+  await t.test('inspect reports sizes, overhead and the per-scale view table', () => {
+    const r = runSsc(['inspect', cube, '--json']);
+    assert.equal(r.code, 0, r.stderr);
+    const rep = JSON.parse(r.stdout) as { chunks: number; triangles: number; bytes: { total: number; cv: number }; overhead: number; views: unknown[] };
+    const files = readdirSync(cube).filter((n) => n.startsWith('c-') && n.endsWith('.bin'));
+    assert.equal(rep.chunks, files.length);
+    assert.equal(rep.bytes.total, files.reduce((a, f) => a + readFileSync(path.join(cube, f)).length, 0));
+    assert.ok(rep.bytes.cv <= 0.25, `chunk sizes vary too much (CV ${rep.bytes.cv})`);
+    assert.ok(rep.overhead <= 1.05, `chunking costs ${rep.overhead}`);
+    assert.equal(rep.views.length, 8);
+  });
+});

@@ -1,0 +1,703 @@
+// Hand-made topology cases for the input stage of `ssc generalize`: tiny GeoJSON (and one
+// TopoJSON) files run through the real CLI, and where it helps through buildTopology itself.
+// Every expected number (counts, repairs, areas, shared boundary lengths) is derived by hand
+// from the fixture drawn in the comment above it.
+import test from 'node:test';
+import assert from 'node:assert/strict';
+import { existsSync, readdirSync, writeFileSync } from 'node:fs';
+import path from 'node:path';
+import { runSsc, tempDir } from './helpers.js';
+import { resolveCrs } from '../io/crs.js';
+import { InputError } from '../io/errors.js';
+import { readInput } from '../io/read-input.js';
+import { readTgap } from '../tgap/format.js';
+import type { Tgap } from '../tgap/model.js';
+import { buildTopology, type Topology, type TopologyRepairs } from '../topology/build-topology.js';
+
+type Json = null | boolean | number | string | Json[] | { [key: string]: Json };
+type XY = [number, number];
+
+// Fixtures are drawn in small local numbers and written shifted by (OX, OY), in a projected
+// CRS: (0, 0) is (1000, 2000) in the file. The two offsets differ so that a swapped x and y
+// would show.
+const OX = 1000, OY = 2000;
+const CRS = 'EPSG:28992';
+const at = (x: number, y: number): XY => [OX + x, OY + y];
+
+/** Counterclockwise rectangle, open (no closing point). */
+const rect = (x0: number, y0: number, x1: number, y1: number): XY[] => [[x0, y0], [x1, y0], [x1, y1], [x0, y1]];
+/** Shifted positions of a local ring, closed unless `open`. */
+const ring = (pts: XY[], open = false): Json[] => {
+  const out: Json[] = pts.map(([x, y]) => at(x, y));
+  return open ? out : [...out, at(pts[0]![0], pts[0]![1])];
+};
+const polygon = (...rings: XY[][]): Json => ({ type: 'Polygon', coordinates: rings.map((r) => ring(r)) });
+const feature = (id: string | null, geometry: Json, cls = 'field'): Json => ({
+  type: 'Feature',
+  properties: id === null ? { cls } : { id, cls },
+  geometry,
+});
+const collection = (features: Json[], crs: string | null = CRS): Json => ({
+  type: 'FeatureCollection',
+  ...(crs ? { crs: { type: 'name', properties: { name: crs } } } : {}),
+  features,
+});
+
+const STYLE = {
+  name: 'topology cases',
+  classProperty: 'cls',
+  baseScale: 1000,
+  classes: {
+    field: { color: '#b3d49a', weight: 1 },
+    water: { color: '#9ec9e8', weight: 2 },
+  },
+};
+
+interface Case {
+  dir: string;
+  input: string;
+  style: string;
+  /** Files in the folder before any run: what must still be all that is there after a refusal. */
+  files: string[];
+}
+
+function writeCase(t: { after: (fn: () => void) => void }, name: string, doc: Json | string, style: object = STYLE): Case {
+  const dir = tempDir(t);
+  const input = path.join(dir, name);
+  writeFileSync(input, typeof doc === 'string' ? doc : JSON.stringify(doc));
+  const styleFile = path.join(dir, 'style.json');
+  writeFileSync(styleFile, JSON.stringify(style));
+  return { dir, input, style: styleFile, files: readdirSync(dir).sort() };
+}
+
+interface Run {
+  code: number;
+  stdout: string;
+  stderr: string;
+  out: string;
+}
+
+function generalize(c: Case, out: string, ...extra: string[]): Run {
+  const file = path.join(c.dir, out);
+  const r = runSsc(['generalize', c.input, '--style', c.style, '--out', file, '--quiet', ...extra]);
+  return { ...r, out: file };
+}
+
+const NO_REPAIRS: TopologyRepairs = {
+  closedRings: 0, duplicatePoints: 0, reorientedRings: 0, tJunctions: 0, snappedPoints: 0, mergedPoints: 0, spikes: 0,
+};
+
+interface Counts {
+  faces: number;
+  edges: number;
+  nodes: number;
+  vertices: number;
+}
+
+interface Expected {
+  counts: Counts;
+  repairs?: Partial<TopologyRepairs>;
+  /** Area of each feature, in input order. */
+  areas: number[];
+  /** Shared boundary length of each pair of neighbours ("A|B", features by id; "out" is outside the domain). */
+  shared: Record<string, number>;
+  extent?: [number, number, number, number];
+}
+
+function countsOf(stdout: string): Counts {
+  const m = /^topology: (\d+) faces, (\d+) edges, (\d+) nodes, (\d+) vertices$/m.exec(stdout);
+  assert.ok(m, `no topology line in:\n${stdout}`);
+  return { faces: Number(m[1]), edges: Number(m[2]), nodes: Number(m[3]), vertices: Number(m[4]) };
+}
+
+const round = (v: number): number => Math.round(v * 1e6) / 1e6;
+
+/** Name of tGAP face f at step 0: the id of input feature f - 1, or "out". */
+function faceName(t: Tgap, f: number): string {
+  return f === 0 ? 'out' : String(t.meta.attributes[f - 1]!.id);
+}
+
+/** Shared boundary length per pair of faces at step 0, from the tGAP's edges. */
+function sharedLengths(t: Tgap): Record<string, number> {
+  const out: Record<string, number> = {};
+  for (const e of t.edges) {
+    if (e.stepLow !== 0) continue;
+    assert.notEqual(e.left, e.right, 'an edge has the same face on both sides');
+    let len = 0;
+    for (let i = 0; i + 1 < e.verts.length; i++) {
+      const a = e.verts[i]!, b = e.verts[i + 1]!;
+      len += Math.hypot(t.xs[b]! - t.xs[a]!, t.ys[b]! - t.ys[a]!);
+    }
+    const key = [faceName(t, e.left), faceName(t, e.right)].sort().join('|');
+    out[key] = (out[key] ?? 0) + len;
+  }
+  for (const k of Object.keys(out)) out[k] = round(out[k]!);
+  return out;
+}
+
+function sortedKeys(o: Record<string, number>): Record<string, number> {
+  return Object.fromEntries(Object.entries(o).sort(([a], [b]) => (a < b ? -1 : a > b ? 1 : 0)));
+}
+
+/** Runs the CLI on a valid case and checks what it reports and writes against `exp`. */
+async function expectPartition(c: Case, exp: Expected, ...extra: string[]): Promise<Tgap> {
+  const r = generalize(c, 'out.tgap', ...extra);
+  assert.equal(r.code, 0, r.stderr);
+  assert.deepEqual(countsOf(r.stdout), exp.counts, 'faces, edges, nodes, vertices');
+  const t = await readTgap(r.out);
+  assert.deepEqual(t.meta.repairs, { ...NO_REPAIRS, ...exp.repairs }, 'repairs');
+  assert.equal(t.meta.baseFaces, exp.areas.length);
+  assert.equal(t.meta.facesAlive[0], exp.areas.length);
+  for (let f = 1; f <= exp.areas.length; f++) {
+    const a = t.faces[f]!.area2 / 2;
+    assert.ok(Math.abs(a - exp.areas[f - 1]!) < 1e-6, `area of ${faceName(t, f)} is ${a}, expected ${exp.areas[f - 1]}`);
+  }
+  assert.deepEqual(sortedKeys(sharedLengths(t)), sortedKeys(exp.shared), 'neighbours and shared lengths');
+  if (exp.extent) assert.deepEqual(t.meta.extent, exp.extent.map((v, i) => v + (i % 2 ? OY : OX)), 'extent');
+  return t;
+}
+
+/** The topology of an input as the pipeline builds it (read, CRS, topology). */
+async function topologyOf(file: string): Promise<Topology> {
+  const raw = await readInput(file);
+  resolveCrs(raw);
+  return buildTopology(raw.features, { precision: 0.001, file: raw.file, inputRepairs: raw.repairs });
+}
+
+async function topologyError(file: string): Promise<InputError> {
+  try {
+    await topologyOf(file);
+  } catch (err) {
+    assert.ok(err instanceof InputError, `not an InputError: ${String(err)}`);
+    return err;
+  }
+  assert.fail('buildTopology accepted the input');
+}
+
+/** True when (px, py) lies on a side of one of the local rings (given shifted). */
+function onBoundary(rings: XY[][], px: number, py: number): boolean {
+  for (const r of rings) {
+    for (let i = 0; i < r.length; i++) {
+      const [ax, ay] = at(...r[i]!), [bx, by] = at(...r[(i + 1) % r.length]!);
+      const cross = (bx - ax) * (py - ay) - (by - ay) * (px - ax);
+      const len = Math.hypot(bx - ax, by - ay);
+      const t = ((px - ax) * (bx - ax) + (py - ay) * (by - ay)) / (len * len);
+      if (Math.abs(cross) / len < 1e-3 && t >= -1e-9 && t <= 1 + 1e-9) return true;
+    }
+  }
+  return false;
+}
+
+interface Refusal {
+  /**
+   * Index and id (null: none) of the feature the message must name; null when the message is
+   * about the whole file, or when the caller checks the features named itself.
+   */
+  feature: [number, string | number | null] | null;
+  message: RegExp;
+  /** Check on the location named; null when no location is expected. */
+  location: ((x: number, y: number) => boolean) | null;
+}
+
+/** Runs the CLI on input that must be refused and checks the message, the exit code and that nothing is written. */
+function expectRefusal(c: Case, exp: Refusal, ...extra: string[]): string {
+  const r = generalize(c, 'out.tgap', ...extra);
+  assert.notEqual(r.code, 0, `accepted:\n${r.stdout}`);
+  assert.equal(r.stdout, '', 'nothing on stdout');
+  const lines = r.stderr.trimEnd().split('\n');
+  assert.equal(lines.length, 1, `one line on stderr:\n${r.stderr}`);
+  const msg = lines[0]!;
+  assert.ok(msg.startsWith(`ssc generalize: ${path.basename(c.input)}`), `names the file: ${msg}`);
+  if (exp.feature) {
+    const [index, id] = exp.feature;
+    const ref = id === null ? `feature #${index}` : `feature #${index} (id ${JSON.stringify(id)})`;
+    assert.ok(msg.includes(`, ${ref}, `) || msg.includes(`, ${ref}: `), `names ${ref}: ${msg}`);
+  }
+  assert.match(msg, exp.message);
+  const loc = /, at \((-?[\d.e+]+), (-?[\d.e+]+)\): /.exec(msg);
+  if (exp.location) {
+    assert.ok(loc, `names a location: ${msg}`);
+    const x = Number(loc[1]), y = Number(loc[2]);
+    assert.ok(exp.location(x, y), `location (${x}, ${y}) is not where expected: ${msg}`);
+  } else {
+    assert.equal(loc, null, `names no location: ${msg}`);
+  }
+  assert.equal(existsSync(r.out), false, 'no output file');
+  assert.deepEqual(readdirSync(c.dir).sort(), c.files, 'no output or temporary file left in the folder');
+  return msg;
+}
+
+const isAt = (x: number, y: number) => (px: number, py: number): boolean => px === OX + x && py === OY + y;
+
+// ---------------------------------------------------------------------------------------------
+// Valid partitions
+
+test('T-junction: a corner of two faces in the middle of a neighbour\'s side is put on that side', async (t) => {
+  //  (0,20) +------+------+ (20,20)
+  //         |      |  C   |
+  //         |  A   +------+ (20,10)     A's right side runs straight from (10,0) to (10,20);
+  //         |      |  B   |             B and C have a corner at (10,10) in its middle.
+  //  (0,0)  +------+------+ (20,0)
+  const A = rect(0, 0, 10, 20), B = rect(10, 0, 20, 10), C = rect(10, 10, 20, 20);
+  const c = writeCase(t, 't.geojson', collection([feature('A', polygon(A)), feature('B', polygon(B)), feature('C', polygon(C))]));
+  // Vertices: the 4 corners of A, (20,0), (20,10), (10,10), (20,20). Nodes (3 directions):
+  // (10,0), (10,10), (10,20), (20,10). Edges: A|B, A|C, B|C and one outside chain per face.
+  await expectPartition(c, {
+    counts: { faces: 3, edges: 6, nodes: 4, vertices: 8 },
+    repairs: { tJunctions: 1 },
+    areas: [200, 100, 100],
+    shared: { 'A|B': 10, 'A|C': 10, 'B|C': 10, 'A|out': 40, 'B|out': 20, 'C|out': 20 },
+  });
+  const topo = await topologyOf(c.input);
+  const ends = (f: number, g: number): string[] => {
+    const e = topo.edges.filter((e) => (e.left === f && e.right === g) || (e.left === g && e.right === f));
+    assert.equal(e.length, 1, `one edge between faces ${f} and ${g}`);
+    return [...e[0]!.verts].map((v) => `${topo.xs[v]},${topo.ys[v]}`).sort();
+  };
+  // A's side is cut at the T: (10,0)-(10,10) with B, (10,10)-(10,20) with C, nothing in between.
+  assert.deepEqual(ends(1, 2), [at(10, 0), at(10, 10)].map(String).sort());
+  assert.deepEqual(ends(1, 3), [at(10, 10), at(10, 20)].map(String).sort());
+  assert.deepEqual(ends(2, 3), [at(10, 10), at(20, 10)].map(String).sort());
+});
+
+test('a hole filled by two other faces', async (t) => {
+  //  +-----------------+ (30,30)
+  //  |   A  +--+--+    |       A's hole (10,10)-(20,20), clockwise, with points at (15,10)
+  //  |      |B |C |    |       and (15,20); B and C fill it.
+  //  |      +--+--+    |
+  //  +-----------------+
+  const outer = rect(0, 0, 30, 30);
+  const hole: XY[] = [[10, 10], [10, 20], [15, 20], [20, 20], [20, 10], [15, 10]];
+  const c = writeCase(t, 'hole.geojson', collection([
+    feature('A', polygon(outer, hole)),
+    feature('B', polygon(rect(10, 10, 15, 20)), 'water'),
+    feature('C', polygon(rect(15, 10, 20, 20)), 'water'),
+  ]));
+  // Vertices: 4 outer + 6 on the hole. Nodes: (15,10) and (15,20), and one on A's outer ring
+  // (a ring without any node is a loop). Edges: A|B, A|C, B|C and the outer loop.
+  await expectPartition(c, {
+    counts: { faces: 3, edges: 4, nodes: 3, vertices: 10 },
+    areas: [900 - 100, 50, 50],
+    shared: { 'A|B': 5 + 10 + 5, 'A|C': 5 + 10 + 5, 'B|C': 10, 'A|out': 120 },
+  });
+});
+
+test('an island: a face alone in another face\'s hole, no node on its ring', async (t) => {
+  const outer = rect(0, 0, 30, 30);
+  const hole: XY[] = [[20, 20], [20, 10], [10, 10], [10, 20]]; // clockwise, starting at another corner
+  const c = writeCase(t, 'island.geojson', collection([feature('A', polygon(outer, hole)), feature('B', polygon(rect(10, 10, 20, 20)), 'water')]));
+  // Two rings without nodes: two loop edges, one node each.
+  await expectPartition(c, {
+    counts: { faces: 2, edges: 2, nodes: 2, vertices: 8 },
+    areas: [800, 100],
+    shared: { 'A|B': 40, 'A|out': 120 },
+  });
+  const topo = await topologyOf(c.input);
+  for (const e of topo.edges) {
+    assert.equal(e.start, e.end, 'a loop');
+    assert.equal(e.verts.length, 5, 'four corners and back to the first');
+  }
+});
+
+test('a MultiPolygon feature with two parts', async (t) => {
+  //  +----+----+----+
+  //  | A1 | B  | A2 |      A is one feature of two parts on either side of B.
+  //  +----+----+----+
+  const c = writeCase(t, 'multi.geojson', collection([
+    feature('A', { type: 'MultiPolygon', coordinates: [[ring(rect(0, 0, 10, 10))], [ring(rect(20, 0, 30, 10))]] }),
+    feature('B', polygon(rect(10, 0, 20, 10)), 'water'),
+  ]));
+  // Nodes: (10,0), (10,10), (20,0), (20,10). Edges: two A|B, two A|out (3 sides each), two B|out.
+  const tg = await expectPartition(c, {
+    counts: { faces: 2, edges: 6, nodes: 4, vertices: 8 },
+    areas: [200, 100],
+    shared: { 'A|B': 20, 'A|out': 60, 'B|out': 20 },
+  });
+  assert.equal(tg.edges.filter((e) => e.stepLow === 0 && e.left * e.right === 2).length, 2, 'B borders each part of A on its own edge');
+});
+
+test('faces touching at a single point are not neighbours', async (t) => {
+  await t.test('four squares around a point: the diagonal pairs', async (t) => {
+    //  +---+---+
+    //  | D | B |    A and B touch only at (10,10), and so do C and D.
+    //  +---+---+
+    //  | A | C |
+    //  +---+---+
+    const c = writeCase(t, 'checker.geojson', collection([
+      feature('A', polygon(rect(0, 0, 10, 10))),
+      feature('B', polygon(rect(10, 10, 20, 20))),
+      feature('C', polygon(rect(10, 0, 20, 10)), 'water'),
+      feature('D', polygon(rect(0, 10, 10, 20)), 'water'),
+    ]));
+    // Nodes: the centre (4 directions) and the middle of each outer side (3).
+    await expectPartition(c, {
+      counts: { faces: 4, edges: 8, nodes: 5, vertices: 9 },
+      areas: [100, 100, 100, 100],
+      shared: { 'A|C': 10, 'A|D': 10, 'B|C': 10, 'B|D': 10, 'A|out': 20, 'B|out': 20, 'C|out': 20, 'D|out': 20 },
+    });
+  });
+  await t.test('two squares touching at a corner: never merged', async (t) => {
+    const c = writeCase(t, 'pinch.geojson', collection([feature('A', polygon(rect(0, 0, 10, 10))), feature('B', polygon(rect(10, 10, 20, 20)))]));
+    // One node where they touch (4 directions), each square one loop edge from it.
+    const tg = await expectPartition(c, {
+      counts: { faces: 2, edges: 2, nodes: 1, vertices: 7 },
+      areas: [100, 100],
+      shared: { 'A|out': 40, 'B|out': 40 },
+    });
+    assert.equal(tg.meta.steps, 0, 'faces that are not neighbours are not merged');
+    assert.deepEqual(tg.meta.facesAlive, [2]);
+  });
+});
+
+test('rings given clockwise (holes counterclockwise) are reoriented and counted', async (t) => {
+  // The island case with every ring turned the other way: 3 rings reoriented, the same result.
+  const rev = (r: XY[]): XY[] => [...r].reverse();
+  const c = writeCase(t, 'cw.geojson', collection([
+    feature('A', polygon(rev(rect(0, 0, 30, 30)), rect(10, 10, 20, 20))),
+    feature('B', polygon(rev(rect(10, 10, 20, 20))), 'water'),
+  ]));
+  await expectPartition(c, {
+    counts: { faces: 2, edges: 2, nodes: 2, vertices: 8 },
+    repairs: { reorientedRings: 3 },
+    areas: [800, 100],
+    shared: { 'A|B': 40, 'A|out': 120 },
+  });
+});
+
+test('open rings are closed and counted', async (t) => {
+  const open = (r: XY[]): Json => ({ type: 'Polygon', coordinates: [ring(r, true)] });
+  const c = writeCase(t, 'open.geojson', collection([feature('A', open(rect(0, 0, 10, 10))), feature('B', open(rect(10, 0, 20, 10)))]));
+  await expectPartition(c, {
+    counts: { faces: 2, edges: 3, nodes: 2, vertices: 6 },
+    repairs: { closedRings: 2 },
+    areas: [100, 100],
+    shared: { 'A|B': 10, 'A|out': 30, 'B|out': 30 },
+  });
+});
+
+test('repeated consecutive points are dropped and counted', async (t) => {
+  // A: (10,0) twice, (10,10) three times, the closing (0,0) twice: 1 + 2 + 1 repeats.
+  // B: (20,0) twice: 1 repeat.
+  const a: XY[] = [[0, 0], [10, 0], [10, 0], [10, 10], [10, 10], [10, 10], [0, 10], [0, 0], [0, 0]];
+  const b: XY[] = [[10, 0], [20, 0], [20, 0], [20, 10], [10, 10], [10, 0]];
+  const c = writeCase(t, 'dup.geojson', collection([
+    feature('A', { type: 'Polygon', coordinates: [ring(a, true)] }),
+    feature('B', { type: 'Polygon', coordinates: [ring(b, true)] }),
+  ]));
+  await expectPartition(c, {
+    counts: { faces: 2, edges: 3, nodes: 2, vertices: 6 },
+    repairs: { duplicatePoints: 5 },
+    areas: [100, 100],
+    shared: { 'A|B': 10, 'A|out': 30, 'B|out': 30 },
+  });
+});
+
+test('points closer than the precision are merged and counted', async (t) => {
+  // B's left side is at x = 10.001, one grid step (the default precision, 0.001) from A's
+  // right side at x = 10: its two points there become A's. (20, 0.0004) is snapped to (20, 0).
+  const b: XY[] = [[10.001, 0], [20, 0.0004], [20, 10], [10.001, 10]];
+  const c = writeCase(t, 'near.geojson', collection([feature('A', polygon(rect(0, 0, 10, 10))), feature('B', polygon(b))]));
+  await expectPartition(c, {
+    // The merged-away points are no vertices of the topology.
+    counts: { faces: 2, edges: 3, nodes: 2, vertices: 6 },
+    repairs: { snappedPoints: 1, mergedPoints: 2 },
+    areas: [100, 100], // B is 10 x 10 once on A's side, not 9.999 x 10
+    shared: { 'A|B': 10, 'A|out': 30, 'B|out': 30 },
+    extent: [0, 0, 20, 10],
+  });
+});
+
+test('zero-width spikes are removed and counted', async (t) => {
+  await t.test('a spike out of the domain', async (t) => {
+    // A goes out along y = 5 to (30,5) and straight back; B sits on top of A.
+    const a: XY[] = [[0, 0], [10, 0], [10, 5], [30, 5], [10, 5], [10, 10], [0, 10]];
+    const c = writeCase(t, 'spike-out.geojson', collection([feature('A', polygon(a)), feature('B', polygon(rect(0, 10, 10, 20)))]));
+    await expectPartition(c, {
+      // (30,5) is gone: 5 points of A and 2 of B; the map's extent ends at x = 10.
+      counts: { faces: 2, edges: 3, nodes: 2, vertices: 7 },
+      repairs: { spikes: 1 },
+      areas: [100, 100],
+      shared: { 'A|B': 10, 'A|out': 30, 'B|out': 30 },
+      extent: [0, 0, 10, 20],
+    });
+  });
+  await t.test('a spike into the neighbour', async (t) => {
+    // A's spike (10,5)-(14,5)-(10,5) pokes into B; (10,5) is then a T-junction on B's side.
+    const a: XY[] = [[0, 0], [10, 0], [10, 5], [14, 5], [10, 5], [10, 10], [0, 10]];
+    const c = writeCase(t, 'spike-in.geojson', collection([feature('A', polygon(a)), feature('B', polygon(rect(10, 0, 20, 10)))]));
+    await expectPartition(c, {
+      counts: { faces: 2, edges: 3, nodes: 2, vertices: 7 },
+      repairs: { spikes: 1, tJunctions: 1 },
+      areas: [100, 100],
+      shared: { 'A|B': 10, 'A|out': 30, 'B|out': 30 },
+      extent: [0, 0, 20, 10],
+    });
+  });
+});
+
+// ---------------------------------------------------------------------------------------------
+// Refusals: exit code 1, the feature and the place named, nothing written.
+
+test('overlapping faces whose sides cross are refused', async (t) => {
+  // A (0,0)-(10,10) and B (5,5)-(15,15): the sides cross at (10,5) and (5,10).
+  const c = writeCase(t, 'cross.geojson', collection([feature('a', polygon(rect(0, 0, 10, 10))), feature('b', polygon(rect(5, 5, 15, 15)))]));
+  const crossing = (x: number, y: number): boolean => isAt(10, 5)(x, y) || isAt(5, 10)(x, y);
+  const msg = expectRefusal(c, { feature: null, message: /crosses feature #\d \(id "[ab]"\) \(self-intersection or overlap\)/, location: crossing });
+  assert.match(msg, /feature #0 \(id "a"\)/);
+  assert.match(msg, /feature #1 \(id "b"\)/);
+  const err = await topologyError(c.input);
+  assert.ok(err.location && crossing(...err.location));
+});
+
+test('a face inside another face without a hole for it is refused', async (t) => {
+  const inner = rect(10, 10, 20, 20);
+  const c = writeCase(t, 'nested.geojson', collection([feature('outer', polygon(rect(0, 0, 30, 30))), feature('inner', polygon(inner))]));
+  expectRefusal(c, {
+    feature: [1, 'inner'],
+    message: /lies inside the area of other features without a hole for it \(overlap\)/,
+    location: (x, y) => onBoundary([inner], x, y),
+  });
+  const err = await topologyError(c.input);
+  assert.deepEqual(err.feature, { index: 1, id: 'inner' });
+});
+
+test('a duplicated polygon is refused', async (t) => {
+  await t.test('the same square as two features', async (t) => {
+    const b = rect(10, 0, 20, 10);
+    const c = writeCase(t, 'dup-feature.geojson', collection([
+      feature('a', polygon(rect(0, 0, 10, 10))),
+      feature('b', polygon(b)),
+      feature('copy of b', polygon(b)),
+    ]));
+    const msg = expectRefusal(c, {
+      feature: null,
+      message: /overlaps feature #\d \(id "[^"]+"\): both lie on the same side of the segment/,
+      location: (x, y) => onBoundary([b], x, y),
+    });
+    // Both copies are named, and not the neighbour.
+    assert.match(msg, /feature #1 \(id "b"\)/);
+    assert.match(msg, /feature #2 \(id "copy of b"\)/);
+    assert.doesNotMatch(msg, /feature #0/);
+  });
+  await t.test('the same part twice in one MultiPolygon', async (t) => {
+    const part = [ring(rect(10, 0, 20, 10))];
+    const c = writeCase(t, 'dup-part.geojson', collection([
+      feature('a', polygon(rect(0, 0, 10, 10))),
+      feature('b', { type: 'MultiPolygon', coordinates: [part, part] }),
+    ]));
+    expectRefusal(c, {
+      feature: [1, 'b'],
+      message: /has a boundary segment twice in the same direction \(a repeated ring or part\)/,
+      location: (x, y) => onBoundary([rect(10, 0, 20, 10)], x, y),
+    });
+  });
+});
+
+test('a gap inside the domain is refused, and taken as an enclave with --allow-holes', async (t) => {
+  await t.test('a hole that no feature fills', async (t) => {
+    const hole = rect(10, 10, 20, 20);
+    const doc = collection([feature('frame', polygon(rect(0, 0, 30, 30), [...hole].reverse()))]);
+    const c = writeCase(t, 'hole.geojson', doc);
+    expectRefusal(c, {
+      feature: [0, 'frame'],
+      message: /borders a gap inside the domain \(an area no feature covers, 100\.0 square units, bounding box 1010, 2010, 1020, 2020\).*--allow-holes/,
+      location: (x, y) => onBoundary([hole], x, y),
+    });
+    const exp: Expected = {
+      counts: { faces: 1, edges: 2, nodes: 2, vertices: 8 },
+      areas: [800],
+      shared: { 'frame|out': 120 + 40 },
+    };
+    const tg = await expectPartition(c, exp, '--allow-holes');
+    assert.equal(tg.meta.holes.length, 1);
+    assert.equal(tg.meta.holes[0]!.area, 100);
+    assert.ok(onBoundary([hole], tg.meta.holes[0]!.x, tg.meta.holes[0]!.y), 'the hole is named by a point on it');
+    assert.equal(tg.meta.options.allowHoles, true);
+    // The same through the style.
+    const c2 = writeCase(t, 'hole.geojson', doc, { ...STYLE, allowHoles: true });
+    const tg2 = await expectPartition(c2, exp);
+    assert.equal(tg2.meta.holes.length, 1);
+  });
+  await t.test('a gap between four features', async (t) => {
+    //  +-----------+ (30,30)
+    //  |     B     |
+    //  +---+---+---+ (30,20)      The middle square (10,10)-(20,20) is in no feature.
+    //  | C |   | D |
+    //  +---+---+---+ (30,10)
+    //  |     A     |
+    //  +-----------+
+    const gap = rect(10, 10, 20, 20);
+    const c = writeCase(t, 'gap.geojson', collection([
+      feature('A', polygon(rect(0, 0, 30, 10))),
+      feature('B', polygon(rect(0, 20, 30, 30))),
+      feature('C', polygon(rect(0, 10, 10, 20)), 'water'),
+      feature('D', polygon(rect(20, 10, 30, 20)), 'water'),
+    ]));
+    const msg = expectRefusal(c, {
+      feature: null,
+      message: /borders a gap inside the domain \(an area no feature covers, 100\.0 square units, bounding box 1010, 2010, 1020, 2020\)/,
+      location: (x, y) => onBoundary([gap], x, y),
+    });
+    assert.match(msg, /feature #(0 \(id "A"\)|1 \(id "B"\)|2 \(id "C"\)|3 \(id "D"\))/, 'names a feature along the gap');
+    // With --allow-holes: C's and D's corners are T-junctions on A's top and B's bottom side.
+    // Nodes: every corner of the gap and (0,10), (30,10), (0,20), (30,20); edges: A and B
+    // have 4 each (outside, C, gap, D), C and D 2 each (outside, gap).
+    const tg = await expectPartition(c, {
+      counts: { faces: 4, edges: 12, nodes: 8, vertices: 12 },
+      repairs: { tJunctions: 4 },
+      areas: [300, 300, 100, 100],
+      shared: { 'A|C': 10, 'A|D': 10, 'B|C': 10, 'B|D': 10, 'A|out': 50 + 10, 'B|out': 50 + 10, 'C|out': 10 + 10, 'D|out': 10 + 10 },
+    }, '--allow-holes');
+    assert.equal(tg.meta.holes.length, 1);
+    assert.equal(tg.meta.holes[0]!.area, 100);
+    assert.ok(onBoundary([gap], tg.meta.holes[0]!.x, tg.meta.holes[0]!.y));
+  });
+});
+
+test('a self-intersecting ring (bow-tie) is refused', async (t) => {
+  // (0,0)-(30,30) crosses (30,20)-(0,5) at (10,10); the two loops (100 and 25 square units)
+  // do not cancel out. Feature #0 is a good square elsewhere.
+  const bow: XY[] = [[0, 0], [30, 30], [30, 20], [0, 5]];
+  const c = writeCase(t, 'bow.geojson', collection([feature('square', polygon(rect(40, 0, 50, 10))), feature('bow', polygon(bow))]));
+  expectRefusal(c, { feature: [1, 'bow'], message: /is self-intersecting: its boundary crosses itself$/, location: isAt(10, 10) });
+});
+
+test('coordinates that are not finite numbers are refused', async (t) => {
+  // Feature #1's ring is (10,0), (20,0), (20,10), (10,10); one value is replaced by `bad`.
+  const cases: { name: string; bad: string; pos: number; axis: 0 | 1; shown: string; near: XY }[] = [
+    { name: 'NaN', bad: 'NaN', pos: 2, axis: 0, shown: '[NaN, 2010]', near: [20, 0] },
+    { name: 'Infinity', bad: '-Infinity', pos: 2, axis: 1, shown: '[1020, -Infinity]', near: [20, 0] },
+    { name: 'a number too large (1e999)', bad: '1e999', pos: 2, axis: 0, shown: '[Infinity, 2010]', near: [20, 0] },
+    // The first point of the ring: the place is the first good point after it.
+    { name: 'a string', bad: '"1010"', pos: 0, axis: 0, shown: '["1010", 2000]', near: [20, 0] },
+    { name: 'null', bad: 'null', pos: 3, axis: 1, shown: '[1010, null]', near: [20, 10] },
+  ];
+  for (const k of cases) {
+    await t.test(k.name, (t) => {
+      const pts: XY[] = [...rect(10, 0, 20, 10), [10, 0] as XY].map(([x, y]) => at(x, y));
+      const coords: Json[] = pts.map((p, i) => (i === k.pos ? p.map((v, j) => (j === k.axis ? '@BAD@' : v)) : p));
+      const doc = collection([
+        feature('ok', polygon(rect(0, 0, 10, 10))),
+        feature('bad', { type: 'Polygon', coordinates: [coords] }),
+      ]);
+      const c = writeCase(t, 'coords.geojson', JSON.stringify(doc).replace('"@BAD@"', k.bad));
+      const msg = expectRefusal(c, { feature: [1, 'bad'], message: /has a coordinate that is not a finite number: /, location: isAt(...k.near) });
+      assert.ok(msg.endsWith(`not a finite number: ${k.shown}`), msg);
+    });
+  }
+});
+
+test('geometry that is not a polygon is refused', async (t) => {
+  const cases: { name: string; geometry: Json; id: string | null; message: RegExp; location: ((x: number, y: number) => boolean) | null }[] = [
+    { name: 'Point', geometry: { type: 'Point', coordinates: at(5, 5) }, id: 'pt', message: /has geometry type "Point"; only Polygon and MultiPolygon are accepted/, location: isAt(5, 5) },
+    { name: 'LineString', geometry: { type: 'LineString', coordinates: [at(0, 0), at(10, 10)] }, id: 'line', message: /has geometry type "LineString"/, location: isAt(0, 0) },
+    // Nothing to place: the feature's index (it has no id) is all there is.
+    { name: 'null geometry', geometry: null, id: null, message: /has no geometry \(polygon expected\)/, location: null },
+  ];
+  for (const k of cases) {
+    await t.test(k.name, (t) => {
+      const c = writeCase(t, 'geom.geojson', collection([feature('ok', polygon(rect(0, 0, 10, 10))), feature(k.id, k.geometry)]));
+      expectRefusal(c, { feature: [1, k.id], message: k.message, location: k.location });
+    });
+  }
+});
+
+test('a class value the style does not define is refused', (t) => {
+  const c = writeCase(t, 'class.geojson', collection([
+    feature('f0', polygon(rect(0, 0, 10, 10))),
+    feature('f1', polygon(rect(10, 0, 20, 10)), 'forest'),
+  ]));
+  // The feature is named, and found on the map by its first point.
+  expectRefusal(c, { feature: [1, 'f1'], message: /has class "forest" \(property "cls"\), which the style style\.json does not define/, location: isAt(10, 0) });
+});
+
+// Two cells of 0.001 degrees near Otterlo (lon 5.85, lat 52.05).
+const lonLat = (x0: number, y0: number, x1: number, y1: number): Json => ({
+  type: 'Polygon',
+  coordinates: [[[x0, y0], [x1, y0], [x1, y1], [x0, y1], [x0, y0]]],
+});
+const lonLatDoc = (crs: string | null): Json => ({
+  type: 'FeatureCollection',
+  ...(crs ? { crs: { type: 'name', properties: { name: crs } } } : {}),
+  features: [
+    { type: 'Feature', properties: { id: 'A', cls: 'field' }, geometry: lonLat(5.85, 52.05, 5.851, 52.051) },
+    { type: 'Feature', properties: { id: 'B', cls: 'field' }, geometry: lonLat(5.851, 52.05, 5.852, 52.051) },
+  ],
+});
+
+test('longitude/latitude declared as a projected CRS is refused', (t) => {
+  const c = writeCase(t, 'degrees.geojson', lonLatDoc('urn:ogc:def:crs:EPSG::28992'));
+  // A property of the whole file: the extent is the place, no feature is named.
+  expectRefusal(c, {
+    feature: null,
+    message: /declares EPSG:28992 \(projected, metres\) but its coordinates look like degrees \(5\.8500, 52\.0500, 5\.8520, 52\.0510\)/,
+    location: null,
+  });
+});
+
+test('longitude/latitude without a crs member is projected to its UTM zone', async (t) => {
+  const c = writeCase(t, 'lonlat.geojson', lonLatDoc(null));
+  const r = generalize(c, 'out.tgap');
+  assert.equal(r.code, 0, r.stderr);
+  // Zone: floor((5.85 + 180) / 6) + 1 = 31, north.
+  assert.match(r.stdout, /^input: lonlat\.geojson \(EPSG:32631, projected from OGC:CRS84\)$/m);
+  assert.deepEqual(countsOf(r.stdout), { faces: 2, edges: 3, nodes: 2, vertices: 6 });
+  const tg = await readTgap(r.out);
+  assert.equal(tg.meta.crs, 'EPSG:32631');
+  assert.equal(tg.meta.projectedFrom, 'OGC:CRS84');
+  assert.match(tg.meta.proj4 ?? '', /\+proj=utm \+zone=31 /);
+  // Metres on the WGS 84 ellipsoid at 52.0505 N: a cell is N cos(lat) dLon wide and M dLat
+  // high (N, M the radii of curvature); UTM's scale there is within 0.1% of 1.
+  const a = 6378137, e2 = 0.00669437999014, lat = (52.0505 * Math.PI) / 180, d = (0.001 * Math.PI) / 180;
+  const w = 1 - e2 * Math.sin(lat) ** 2;
+  const width = (a / Math.sqrt(w)) * Math.cos(lat) * d, height = (a * (1 - e2)) / w ** 1.5 * d;
+  const near = (v: number, want: number, what: string): void => assert.ok(Math.abs(v / want - 1) < 0.003, `${what}: ${v}, expected about ${want}`);
+  near(tg.faces[1]!.area2 / 2, width * height, 'area of A');
+  near(tg.faces[2]!.area2 / 2, width * height, 'area of B');
+  const shared = sharedLengths(tg);
+  near(shared['A|B']!, height, 'shared side');
+  near(shared['A|out']!, 2 * width + height, 'A along the outside');
+  // East of the zone's central meridian (3 E), about 52 degrees north of the equator.
+  const [x0, y0] = tg.meta.extent;
+  near(x0 - 500000, 0.9996 * (a / Math.sqrt(w)) * Math.cos(lat) * ((2.85 * Math.PI) / 180), 'easting from the central meridian');
+  assert.ok(y0 > 5.7e6 && y0 < 5.8e6, `northing ${y0}`);
+  const { snappedPoints, ...rest } = tg.meta.repairs;
+  assert.deepEqual(rest, { closedRings: 0, duplicatePoints: 0, reorientedRings: 0, tJunctions: 0, mergedPoints: 0, spikes: 0 });
+  assert.ok(snappedPoints !== undefined && snappedPoints <= 8, 'at most the 8 ring points were snapped to the millimetre grid');
+});
+
+test('TopoJSON gives the same topology as the equivalent GeoJSON', async (t) => {
+  // The four squares around (10,10) (A bottom left, B top right, C bottom right, D top left),
+  // as arcs: 0-3 the spokes from the centre down, right, up, left; 4-7 the outer sides of A,
+  // C, B, D counterclockwise.
+  const arcs: XY[][] = [
+    [[10, 10], [10, 0]], [[10, 10], [20, 10]], [[10, 10], [10, 20]], [[10, 10], [0, 10]],
+    [[0, 10], [0, 0], [10, 0]], [[10, 0], [20, 0], [20, 10]], [[20, 10], [20, 20], [10, 20]], [[10, 20], [0, 20], [0, 10]],
+  ];
+  const cell = (id: string, rings: number[], cls = 'field'): Json => ({ type: 'Polygon', arcs: [rings], properties: { id, cls } });
+  const topojson: Json = {
+    type: 'Topology',
+    crs: { type: 'name', properties: { name: CRS } },
+    arcs: arcs.map((a) => a.map(([x, y]) => at(x, y))),
+    objects: {
+      cells: {
+        type: 'GeometryCollection',
+        geometries: [cell('A', [4, ~0, 3]), cell('B', [6, ~2, 1]), cell('C', [5, ~1, 0], 'water'), cell('D', [7, ~3, 2], 'water')],
+      },
+    },
+  };
+  const geojson = collection([
+    feature('A', polygon(rect(0, 0, 10, 10))),
+    feature('B', polygon(rect(10, 10, 20, 20))),
+    feature('C', polygon(rect(10, 0, 20, 10)), 'water'),
+    feature('D', polygon(rect(0, 10, 10, 20)), 'water'),
+  ]);
+  const exp: Expected = {
+    counts: { faces: 4, edges: 8, nodes: 5, vertices: 9 },
+    areas: [100, 100, 100, 100],
+    shared: { 'A|C': 10, 'A|D': 10, 'B|C': 10, 'B|D': 10, 'A|out': 20, 'B|out': 20, 'C|out': 20, 'D|out': 20 },
+  };
+  const fromTopo = await expectPartition(writeCase(t, 'cells.topojson', topojson), exp);
+  const fromGeo = await expectPartition(writeCase(t, 'cells.geojson', geojson), exp);
+  assert.deepEqual(fromTopo.meta.attributes, fromGeo.meta.attributes, 'the same features in the same order');
+});
