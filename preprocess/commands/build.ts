@@ -58,6 +58,7 @@ export async function run(argv: string[]): Promise<void> {
     precompress: !values['no-precompress'],
     ...(options.log ? { log: options.log } : {}),
   });
+  options.log?.(`build timings (ms): ${Object.entries(r.timings).map(([k, v]) => `${k} ${v}`).join(', ')}`);
   const sorted = [...r.chunkBytes].sort((a, b) => a - b);
   process.stdout.write(
     `cube: ${tgap.meta.steps} steps, ${r.triangles} triangles in ${r.chunks} chunks (${sorted[0] ?? 0}..${sorted[sorted.length - 1] ?? 0} bytes), ${r.indexFiles} index file(s)\n` +

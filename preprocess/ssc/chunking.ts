@@ -122,9 +122,12 @@ export function planChunks(inp: ChunkingInput): ChunkPlan {
         for (const ci of order) {
           for (; kk < cuts[ci]!.at; kk++) {
             const i = list[kk]!;
-            x0 = Math.min(x0, bx0[i]!); x1 = Math.max(x1, bx1[i]!);
-            y0 = Math.min(y0, by0[i]!); y1 = Math.max(y1, by1[i]!);
-            z0 = Math.min(z0, zl[i]!); z1 = Math.max(z1, zh[i]!);
+            if (bx0[i]! < x0) x0 = bx0[i]!;
+            if (bx1[i]! > x1) x1 = bx1[i]!;
+            if (by0[i]! < y0) y0 = by0[i]!;
+            if (by1[i]! > y1) y1 = by1[i]!;
+            if (zl[i]! < z0) z0 = zl[i]!;
+            if (zh[i]! > z1) z1 = zh[i]!;
             sum += cost[i]!;
           }
           leftBox[ci] = [x0, y0, x1, y1, z0, z1];
@@ -138,9 +141,12 @@ export function planChunks(inp: ChunkingInput): ChunkPlan {
           const ci = order[oi]!;
           for (; kk >= cuts[ci]!.at; kk--) {
             const i = list[kk]!;
-            x0 = Math.min(x0, bx0[i]!); x1 = Math.max(x1, bx1[i]!);
-            y0 = Math.min(y0, by0[i]!); y1 = Math.max(y1, by1[i]!);
-            z0 = Math.min(z0, zl[i]!); z1 = Math.max(z1, zh[i]!);
+            if (bx0[i]! < x0) x0 = bx0[i]!;
+            if (bx1[i]! > x1) x1 = bx1[i]!;
+            if (by0[i]! < y0) y0 = by0[i]!;
+            if (by1[i]! > y1) y1 = by1[i]!;
+            if (zl[i]! < z0) z0 = zl[i]!;
+            if (zh[i]! > z1) z1 = zh[i]!;
           }
           rightBox[ci] = [x0, y0, x1, y1, z0, z1];
         }
@@ -220,26 +226,25 @@ function groupStable(list: Uint32Array, group: Int32Array, groups: number): Uint
   return out;
 }
 
-/** Indices 0..n-1 sorted by key (ties by index), with a native numeric sort. */
+/**
+ * Indices 0..n-1 sorted by key, with a native numeric sort: the key, quantized to 2^26 levels
+ * over its range, and the index are packed into one exact double (ties go by index).
+ */
 function sortedBy(n: number, key: (i: number) => number): Uint32Array {
   const k = new Float64Array(n);
-  for (let i = 0; i < n; i++) k[i] = key(i);
-  const idx = new Uint32Array(n);
-  for (let i = 0; i < n; i++) idx[i] = i;
-  // Rank the keys, then sort rank * 2^26 + index as one exact double per triangle.
-  const sorted = Float64Array.from(k).sort();
-  const rank = (v: number): number => {
-    let lo = 0, hi = n - 1;
-    while (lo < hi) {
-      const mid = (lo + hi) >> 1;
-      if (sorted[mid]! < v) lo = mid + 1;
-      else hi = mid;
-    }
-    return lo;
-  };
+  let lo = Infinity, hi = -Infinity;
+  for (let i = 0; i < n; i++) {
+    const v = key(i);
+    k[i] = v;
+    if (v < lo) lo = v;
+    if (v > hi) hi = v;
+  }
+  const levels = 67108863;
+  const scale = hi > lo ? levels / (hi - lo) : 0;
   const packed = new Float64Array(n);
-  for (let i = 0; i < n; i++) packed[i] = rank(k[i]!) * 67108864 + i;
+  for (let i = 0; i < n; i++) packed[i] = Math.min(levels, Math.floor((k[i]! - lo) * scale)) * 67108864 + i;
   packed.sort();
+  const idx = new Uint32Array(n);
   for (let i = 0; i < n; i++) idx[i] = packed[i]! % 67108864;
   return idx;
 }
@@ -250,15 +255,18 @@ function sortedBy(n: number, key: (i: number) => number): Uint32Array {
  */
 function triangleBytes(s: Surfaces): Float64Array {
   const n = s.count;
-  const seen = new Set<number>();
   const verts = new Float64Array(s.pieces), tris = new Float64Array(s.pieces);
+  // A piece's triangles come in runs; vertices are counted per run (an estimate, a little high
+  // for a piece split over several runs).
+  let run = new Set<number>();
   for (let i = 0; i < n; i++) {
     const p = s.piece[i]!;
+    if (i > 0 && s.piece[i - 1] !== p) run = new Set();
     tris[p]!++;
     for (let j = 0; j < 3; j++) {
-      const key = p * 0x4000000 + s.v[3 * i + j]!;
-      if (!seen.has(key)) {
-        seen.add(key);
+      const v = s.v[3 * i + j]!;
+      if (!run.has(v)) {
+        run.add(v);
         verts[p]!++;
       }
     }

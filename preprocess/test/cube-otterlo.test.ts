@@ -131,6 +131,24 @@ test('bgt_otterlo_400m cube', async (t) => {
     }
   });
 
+  await t.test('an index split into sub-index files reads the same', () => {
+    const split = path.join(dir, 'split');
+    assert.equal(runSsc(['build', tgapFile, '--out', split, '--chunk-bytes', '16384', '--sub-index-bytes', '1024', '--quiet', '--no-precompress']).code, 0);
+    const subs = readdirSync(split).filter((f) => /^i-[0-9a-f]{16}\.json$/.test(f));
+    assert.ok(subs.length >= 2, `sub-index files written (${subs.length})`);
+    const index = readFileSync(path.join(split, 'index.json'), 'utf8');
+    assert.ok(index.includes('"ref"'), 'the root refers to sub-index files');
+    const r = runSsc(['inspect', split, '--json']);
+    assert.equal(r.code, 0, r.stderr);
+    assert.equal((JSON.parse(r.stdout) as { index: { files: number } }).index.files, subs.length + 1);
+    for (const s of [0, 250, steps]) {
+      for (const [d, name] of [[cube, 'a'], [split, 'b']] as const) {
+        assert.equal(runSsc(['slice', d, '--step', String(s), '--size', `${W}x${H}`, '--out', path.join(dir, `${name}.png`), '--ids', path.join(dir, `${name}.ids`)]).code, 0);
+      }
+      assert.ok(readFileSync(path.join(dir, 'a.ids')).equals(readFileSync(path.join(dir, 'b.ids'))), `step ${s}: the split index changed the slice`);
+    }
+  });
+
   await t.test('writer and reader round-trip bit-exactly', () => {
     for (const f of readdirSync(cube).filter((n) => n.startsWith('c-') && n.endsWith('.bin'))) {
       const bytes = readFileSync(path.join(cube, f));
