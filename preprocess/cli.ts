@@ -10,6 +10,7 @@ interface Command {
 const commands: Record<string, () => Promise<Command>> = {
   generalize: () => import('./commands/generalize.js'),
   map: () => import('./commands/map.js'),
+  serve: () => import('./commands/serve.js'),
   build: () => import('./commands/build.js'),
   slice: () => import('./commands/slice.js'),
   inspect: () => import('./commands/inspect.js'),

@@ -1,0 +1,235 @@
+// Answers one request: method, path, file, representation (encoding), conditionals, range,
+// then the body from memory or from the open file. Every rule in one readable order.
+import type { IncomingMessage, ServerResponse } from 'node:http';
+import { open, type FileHandle } from 'node:fs/promises';
+import { pipeline } from 'node:stream/promises';
+import { codingsToTry, SIBLING_SUFFIX, type Coding } from './accept-encoding.js';
+import { parseRange } from './byte-range.js';
+import type { CachePolicy } from './cache-control.js';
+import { contentTypeFor } from './content-types.js';
+import type { Content, ContentCache } from './content-cache.js';
+import { ALLOWED_METHODS, ALLOWED_REQUEST_HEADERS, EXPOSED_HEADERS, PREFLIGHT_MAX_AGE_S, type CorsPolicy } from './cors.js';
+import { isNotModified, rangeApplies } from './preconditions.js';
+import { resolveInside, type Resolved } from './resolve-file.js';
+import { parseTargetPath, pathForSegments } from './url-path.js';
+
+export interface HandlerConfig {
+  root: string; // a real path
+  cors: CorsPolicy;
+  cachePolicy: CachePolicy;
+  contents: ContentCache;
+  onError: (err: unknown) => void;
+}
+
+type Headers = Record<string, string | number>;
+type FileFound = Extract<Resolved, { kind: 'file' }>;
+
+const STATUS_TEXT: Readonly<Record<number, string>> = {
+  400: 'bad request',
+  404: 'not found',
+  405: 'method not allowed',
+  416: 'range not satisfiable',
+  500: 'internal server error',
+};
+
+function addVary(headers: Headers, field: string): void {
+  headers.vary = headers.vary === undefined ? field : `${headers.vary}, ${field}`;
+}
+
+function sendText(req: IncomingMessage, res: ServerResponse, status: number, headers: Headers): void {
+  const body = `${status} ${STATUS_TEXT[status] ?? ''}\n`;
+  res.writeHead(status, {
+    ...headers,
+    'content-type': 'text/plain; charset=utf-8',
+    'content-length': Buffer.byteLength(body),
+    'cache-control': 'no-cache',
+  });
+  res.end(req.method === 'HEAD' ? undefined : body);
+}
+
+/** Headers every response carries: nosniff, and CORS when the origin is allowed. */
+function baseHeaders(config: HandlerConfig, req: IncomingMessage): Headers {
+  const headers: Headers = { 'x-content-type-options': 'nosniff' };
+  if (!config.cors.enabled) return headers;
+  const origin = req.headers.origin;
+  const allowed = config.cors.allowOrigin(origin);
+  if (allowed !== undefined) {
+    headers['access-control-allow-origin'] = allowed;
+    headers['access-control-expose-headers'] = EXPOSED_HEADERS;
+  }
+  if (config.cors.variesByOrigin) addVary(headers, 'Origin');
+  return headers;
+}
+
+function allowHeader(config: HandlerConfig): string {
+  return config.cors.enabled ? `${ALLOWED_METHODS}, OPTIONS` : ALLOWED_METHODS;
+}
+
+function single(value: string | string[] | undefined): string | undefined {
+  return Array.isArray(value) ? value[0] : value;
+}
+
+export function createRequestHandler(config: HandlerConfig): (req: IncomingMessage, res: ServerResponse) => void {
+  return (req, res) => {
+    handle(config, req, res).catch((err: unknown) => {
+      config.onError(err);
+      if (!res.headersSent) sendText(req, res, 500, { 'x-content-type-options': 'nosniff' });
+      else res.destroy();
+    });
+  };
+}
+
+async function handle(config: HandlerConfig, req: IncomingMessage, res: ServerResponse): Promise<void> {
+  const headers = baseHeaders(config, req);
+  const method = req.method ?? '';
+  if (method === 'OPTIONS' && config.cors.enabled) {
+    // A preflight: say what a cross-origin GET may carry. Disallowed origins get no grant.
+    headers.allow = allowHeader(config);
+    if (headers['access-control-allow-origin'] !== undefined) {
+      headers['access-control-allow-methods'] = ALLOWED_METHODS;
+      headers['access-control-allow-headers'] = ALLOWED_REQUEST_HEADERS;
+      headers['access-control-max-age'] = PREFLIGHT_MAX_AGE_S;
+    }
+    delete headers['access-control-expose-headers'];
+    res.writeHead(204, headers);
+    res.end();
+    return;
+  }
+  if (method !== 'GET' && method !== 'HEAD') {
+    sendText(req, res, 405, { ...headers, allow: allowHeader(config) });
+    return;
+  }
+  const target = parseTargetPath(req.url ?? '');
+  if (!target.ok) {
+    sendText(req, res, target.status, headers);
+    return;
+  }
+  const { segments } = target;
+  // Ranges address the identity bytes, so a Range request never gets a compressed sibling.
+  const preferred = req.headers.range !== undefined ? [] : codingsToTry(req.headers['accept-encoding']);
+  // Only codings the client prefers to identity; identity is always in the list.
+  const codings = preferred.slice(0, preferred.indexOf('identity')).filter(isCompressed);
+  let dirSegments = segments.slice(0, -1);
+  let name = segments[segments.length - 1] ?? '';
+  // The siblings are looked up alongside the file itself: each lookup waits on the disk
+  // twice (realpath, stat), and in parallel that wait is paid once.
+  let siblings = lookUpSiblings(config.root, dirSegments, name, codings);
+  let found = await resolveInside(config.root, segments);
+  if (found.kind === 'directory') {
+    if (!target.trailingSlash && segments.length > 0) {
+      // As every static server does, so that relative links in its index.html resolve.
+      res.writeHead(301, { ...headers, location: pathForSegments(segments, true) + target.query, 'content-length': 0 });
+      res.end();
+      return;
+    }
+    dirSegments = segments;
+    name = 'index.html';
+    siblings = lookUpSiblings(config.root, dirSegments, name, codings);
+    found = await resolveInside(config.root, [...segments, name]);
+  } else if (target.trailingSlash) {
+    found = { kind: 'missing' }; // a file is not a directory
+  }
+  if (found.kind !== 'file') {
+    sendText(req, res, 404, headers);
+    return;
+  }
+  // The first coding, in the client's order, whose sibling exists; else the file itself.
+  let coding: Coding = 'identity';
+  let file = found;
+  for (const [i, sibling] of (await Promise.all(siblings)).entries()) {
+    if (sibling.kind === 'file') {
+      coding = codings[i]!;
+      file = sibling;
+      break;
+    }
+  }
+  await serveFile(config, req, res, headers, file, coding, [...dirSegments, name]);
+}
+
+function isCompressed(c: Coding): c is Exclude<Coding, 'identity'> {
+  return c !== 'identity';
+}
+
+function lookUpSiblings(root: string, dirSegments: string[], name: string, codings: Exclude<Coding, 'identity'>[]): Promise<Resolved>[] {
+  // resolveInside never rejects, so a lookup whose answer goes unused is harmless.
+  return codings.map((c) => resolveInside(root, [...dirSegments, name + SIBLING_SUFFIX[c]]));
+}
+
+async function serveFile(
+  config: HandlerConfig,
+  req: IncomingMessage,
+  res: ServerResponse,
+  headers: Headers,
+  file: FileFound,
+  coding: Coding,
+  urlSegments: string[],
+): Promise<void> {
+  const name = urlSegments[urlSegments.length - 1]!;
+  const wantsBody = req.method === 'GET';
+  let content: Content | undefined = config.contents.peek(file.realPath, file.stats);
+  let handle: FileHandle | undefined;
+  if (!content || (!content.bytes && wantsBody)) {
+    handle = await open(file.realPath, 'r');
+    try {
+      const stats = await handle.stat();
+      content = config.contents.peek(file.realPath, stats) ?? (await config.contents.load(file.realPath, handle, stats));
+    } catch (err) {
+      await handle.close();
+      throw err;
+    }
+    if (content.bytes) {
+      await handle.close();
+      handle = undefined;
+    }
+  }
+
+  try {
+    addVary(headers, 'Accept-Encoding');
+    headers['cache-control'] = config.cachePolicy.headerFor(pathForSegments(urlSegments, false));
+    headers.etag = content.etag;
+    headers['last-modified'] = new Date(content.lastModifiedMs).toUTCString();
+    headers['accept-ranges'] = 'bytes';
+    if (isNotModified(req.headers['if-none-match'], req.headers['if-modified-since'], content)) {
+      res.writeHead(304, headers);
+      res.end();
+      return;
+    }
+    headers['content-type'] = contentTypeFor(name);
+    if (coding !== 'identity') headers['content-encoding'] = coding;
+
+    let start = 0;
+    let end = content.size - 1;
+    let status = 200;
+    const rangeHeader = req.headers.range;
+    if (rangeHeader !== undefined && rangeApplies(single(req.headers['if-range']), content)) {
+      const range = parseRange(rangeHeader, content.size);
+      if (range.kind === 'unsatisfiable') {
+        sendText(req, res, 416, { ...headers, 'content-range': `bytes */${content.size}` });
+        return;
+      }
+      if (range.kind === 'range') {
+        ({ start, end } = range);
+        status = 206;
+        headers['content-range'] = `bytes ${start}-${end}/${content.size}`;
+      }
+    }
+    headers['content-length'] = Math.max(0, end - start + 1);
+    res.writeHead(status, headers);
+    if (!wantsBody || end < start) {
+      res.end();
+      return;
+    }
+    if (content.bytes) {
+      res.end(content.bytes.subarray(start, end + 1));
+      return;
+    }
+    const stream = handle!.createReadStream({ start, end, autoClose: true });
+    handle = undefined; // the stream closes it now
+    await pipeline(stream, res).catch((err: unknown) => {
+      // A client that hangs up mid-file is normal; only a failing read is worth reporting.
+      if (!res.destroyed || (err as { code?: string }).code !== 'ERR_STREAM_PREMATURE_CLOSE') throw err;
+    });
+  } finally {
+    await handle?.close();
+  }
+}
