@@ -21,6 +21,8 @@ export interface GeneralizeOptions {
    * area is drawn afresh with the current, simplified geometry (detail follows scale).
    */
   reemitFactor?: number;
+  /** Vertices a face may cost beyond reemitFactor times its size (small faces are cheap to keep). */
+  reemitSlack?: number;
   /** An edge is simplified again once the tolerance has grown by this factor. */
   hysteresis?: number;
   /** Called every `progressEvery` steps. */
@@ -40,6 +42,7 @@ export interface GeneralizeResult {
 export function generalize(topo: Topology, classOf: (face: number) => number, style: Style, opts: GeneralizeOptions): GeneralizeResult {
   const st = new PlanarState(topo, classOf);
   const reemitFactor = opts.reemitFactor ?? 2;
+  const reemitSlack = opts.reemitSlack ?? 8;
   const hysteresis = opts.hysteresis ?? 1.25;
   const nb = st.aliveFaces;
   const weight = style.classes.map((c) => c.weight);
@@ -135,7 +138,7 @@ export function generalize(topo: Topology, classOf: (face: number) => number, st
   const maybeReemit = (faces: Iterable<number>, k: number): void => {
     for (const f of [...new Set(faces)].sort((p, q) => p - q)) {
       if (f <= 0 || st.faces[f]!.stepHigh !== 0x7fffffff) continue;
-      if (st.faceCost[f]! <= reemitFactor * st.faceVerts[f]! + 64) continue;
+      if (st.faceCost[f]! <= reemitFactor * st.faceVerts[f]! + reemitSlack) continue;
       const face = st.faces[f]!;
       const g = st.addFace(face.classIndex, face.feature, st.faceArea2[f]!);
       st.endFace(f, g, REEMIT_PHASE);
