@@ -18,6 +18,8 @@ export interface PipelineOptions {
   precision?: number;
   baseScale?: number;
   allowHoles?: boolean;
+  /** Independent events per step (see GeneralizeOptions.group). */
+  group?: number;
   log?: (msg: string) => void;
 }
 
@@ -95,6 +97,7 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
   const g = generalize(topo, (f) => classes[f]!, style, {
     baseScale,
     resolutionMm: style.resolutionMm,
+    ...(opts.group !== undefined ? { group: opts.group } : {}),
     onProgress: (k, alive) => log(`generalize: step ${k}, ${alive} faces left`),
   });
   lap('generalize');
@@ -115,7 +118,7 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
     source: path.basename(input),
     style: styleToJson({ ...style, baseScale }),
     attributes,
-    options: { precision, allowHoles },
+    options: { precision, allowHoles, group: opts.group ?? 1 },
   };
   const report: PipelineReport = {
     topology: { vertexCount: topo.vertexCount, nodeCount: topo.nodeCount, faceCount: topo.faceCount - 1, edges: topo.edges.length, repairs: topo.repairs, holes: topo.holes },

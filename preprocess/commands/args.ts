@@ -49,6 +49,7 @@ export const generalizeOptionSpecs = {
   precision: { type: 'string' },
   'base-scale': { type: 'string' },
   'allow-holes': { type: 'boolean' },
+  group: { type: 'string' },
   quiet: { type: 'boolean' },
 } as const;
 
@@ -60,6 +61,7 @@ export interface GeneralizeValues {
   precision?: string | undefined;
   'base-scale'?: string | undefined;
   'allow-holes'?: boolean | undefined;
+  group?: string | undefined;
   quiet?: boolean | undefined;
 }
 
@@ -67,6 +69,7 @@ export interface GeneralizeValues {
 export function pipelineOptions(values: GeneralizeValues): PipelineOptions {
   const precision = parseNumber(values.precision, '--precision', { min: 0 });
   const baseScale = parseNumber(values['base-scale'], '--base-scale', { min: 1 });
+  const group = parseNumber(values.group, '--group', { min: 1, integer: true });
   return {
     ...(values.style ? { style: values.style } : {}),
     ...(values['class-property'] ? { classProperty: values['class-property'] } : {}),
@@ -75,6 +78,7 @@ export function pipelineOptions(values: GeneralizeValues): PipelineOptions {
     ...(precision !== undefined ? { precision } : {}),
     ...(baseScale !== undefined ? { baseScale } : {}),
     ...(values['allow-holes'] ? { allowHoles: true } : {}),
+    ...(group !== undefined ? { group } : {}),
     ...(values.quiet ? {} : { log: (m: string) => process.stderr.write(m + '\n') }),
   };
 }

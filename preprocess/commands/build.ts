@@ -15,7 +15,7 @@ export const usage = `ssc build <input.geojson|file.tgap> --out <dir> [options]
   --no-precompress          do not write the .gz and .br copies
   --quiet                   no progress on stderr
 Other ssc generalize options (--class-property, --crs, --layer, --precision, --base-scale,
---allow-holes) apply to polygon input. The directory is replaced only when the build succeeds.`;
+--allow-holes, --group) apply to polygon input. The directory is replaced only when the build succeeds.`;
 
 async function isTgap(file: string): Promise<boolean> {
   try {

@@ -13,6 +13,8 @@ export const usage = `ssc generalize <input.geojson|.geojson.gz|.topojson> --out
   --precision <units>       snapping grid and T-junction tolerance (default 0.001)
   --base-scale <n>          scale denominator of the input (default: the style's, else derived)
   --allow-holes             holes in the domain are enclaves, not gaps
+  --group <n>               up to n independent merges or splits per step (default 1): fewer,
+                            longer steps, as the seed paper suggests for smoother transitions
   --quiet                   no progress on stderr`;
 
 export async function run(argv: string[]): Promise<void> {
@@ -31,7 +33,7 @@ export async function run(argv: string[]): Promise<void> {
       `topology: ${r.topology.faceCount} faces, ${r.topology.edges} edges, ${r.topology.nodeCount} nodes, ${r.topology.vertexCount} vertices`,
       `repairs: ${repairs}`,
       ...(r.topology.holes.length ? [`holes in the domain (enclaves): ${r.topology.holes.length}`] : []),
-      `tGAP: ${r.generalize.steps} steps (${r.generalize.merges} merges, ${r.generalize.splits} splits), ${r.generalize.facesLeft} face(s) left, ${r.generalize.removedVertices} vertices removed by simplification`,
+      `tGAP: ${r.generalize.steps} steps (${r.generalize.merges} merges, ${r.generalize.splits} splits, ${r.generalize.reemits} faces redrawn), ${r.generalize.facesLeft} face(s) left, ${r.generalize.removedVertices} vertices removed by simplification`,
       `scale: 1:${Math.round(tgap.meta.baseScale)} at step 0`,
       `wrote ${values.out} (${bytes.length} bytes) in ${((performance.now() - t0) / 1000).toFixed(1)} s`,
     ].join('\n') + '\n',

@@ -25,6 +25,11 @@ export interface GeneralizeOptions {
   reemitSlack?: number;
   /** An edge is simplified again once the tolerance has grown by this factor. */
   hysteresis?: number;
+  /**
+   * Events per step (default 1): more groups that many independent merges or splits (whose
+   * neighbourhoods do not meet) into one step, so each step's transition is longer.
+   */
+  group?: number;
   /** Called every `progressEvery` steps. */
   onProgress?: (step: number, aliveFaces: number) => void;
 }
@@ -180,40 +185,77 @@ export function generalize(topo: Topology, classOf: (face: number) => number, st
     return [W, ...touched];
   };
 
+  /** The faces an event on L (merging into `best`, or split) changes or reshapes. */
+  const neighbourhood = (L: number, best: number, split: boolean): Set<number> => {
+    const out = new Set<number>([L]);
+    const around = (f: number): void => {
+      for (const e of st.faceEdges[f] ?? []) for (const g of st.sides(e)) if (g > 0) out.add(g);
+    };
+    around(L);
+    // A merge also simplifies the winner's edges, a split every receiver's: their neighbours too.
+    for (const f of split ? [...out] : [best]) around(f);
+    return out;
+  };
+
+  const group = Math.max(1, Math.floor(opts.group ?? 1));
   while (queue.length > 0) {
-    const pr = queue.peekValue()!;
-    const L = queue.pop()!;
-    if (st.faces[L]!.stepHigh !== 0x7fffffff || pr !== importance[L]) continue;
-    const { best, count } = bestNeighbour(L);
-    if (best < 0) {
-      stats.unmergeable++;
-      continue; // nothing to merge with (a part of the domain on its own)
-    }
-    const k = ++st.step;
-    tris.clear();
-    const scale = opts.baseScale * Math.sqrt(nb / Math.max(1, st.aliveFaces - 1));
-    const tol = scale * metresPerMm;
-    let changed: number[];
-    const res = linear[st.faces[L]!.classIndex] && count >= 2 ? splitFace(st, L) : null;
-    if (res) {
-      st.endFace(L, -1);
-      const receivers = [...res.gains.keys()].sort((p, q) => p - q);
-      for (const f of receivers) st.faceArea2[f]! += res.gains.get(f)!;
-      for (const f of res.triFaces) st.faceCost[f]!++;
-      const joined: number[] = [];
-      for (const v of res.touchedNodes) {
-        const e = dissolve(v);
-        if (e >= 0) joined.push(e);
+    // One step: the least important face's event and, with grouping, more events on faces
+    // whose neighbourhoods do not meet (they may all use the state before the step).
+    let k = -1;
+    let tol = 0;
+    const locked = new Set<number>();
+    const deferred: number[] = [];
+    const changed: number[] = [];
+    let done = 0;
+    while (done < group && queue.length > 0 && deferred.length < 4 * group) {
+      const pr = queue.peekValue()!;
+      const L = queue.pop()!;
+      if (st.faces[L]!.stepHigh !== 0x7fffffff || pr !== importance[L]) continue;
+      const { best, count } = bestNeighbour(L);
+      if (best < 0) {
+        stats.unmergeable++;
+        continue; // nothing to merge with (a part of the domain on its own)
       }
-      events.push({ kind: EventKind.Split, step: k, loser: L, into: -1, tris: res.tris, triFaces: res.triFaces });
-      const touched = simplifyAround([...res.newEdges, ...joined], receivers, tol);
-      for (const f of receivers) setImportance(f);
-      stats.splits++;
-      changed = [...receivers, ...touched];
-    } else {
-      if (linear[st.faces[L]!.classIndex] && count >= 2) stats.splitFallbacks++;
-      changed = merge(L, best, k, tol);
+      const splitting = linear[st.faces[L]!.classIndex] && count >= 2;
+      if (group > 1) {
+        const hood = neighbourhood(L, best, splitting);
+        if ([...hood].some((f) => locked.has(f))) {
+          deferred.push(L);
+          continue;
+        }
+        for (const f of hood) locked.add(f);
+      }
+      if (k < 0) {
+        k = ++st.step;
+        tris.clear();
+        const scale = opts.baseScale * Math.sqrt(nb / Math.max(1, st.aliveFaces - Math.min(group, st.aliveFaces - 1)));
+        tol = scale * metresPerMm;
+      }
+      const res = splitting ? splitFace(st, L) : null;
+      if (res) {
+        st.endFace(L, -1);
+        const receivers = [...res.gains.keys()].sort((p, q) => p - q);
+        for (const f of receivers) st.faceArea2[f]! += res.gains.get(f)!;
+        for (const f of res.triFaces) st.faceCost[f]!++;
+        const joined: number[] = [];
+        for (const v of res.touchedNodes) {
+          const e = dissolve(v);
+          if (e >= 0) joined.push(e);
+        }
+        events.push({ kind: EventKind.Split, step: k, loser: L, into: -1, tris: res.tris, triFaces: res.triFaces });
+        const touched = simplifyAround([...res.newEdges, ...joined], receivers, tol);
+        for (const f of receivers) setImportance(f);
+        stats.splits++;
+        changed.push(...receivers, ...touched);
+      } else {
+        if (splitting) stats.splitFallbacks++;
+        changed.push(...merge(L, best, k, tol));
+      }
+      done++;
     }
+    // Faces passed over for this step wait for the next one, in their order of importance.
+    for (const f of deferred) queue.push(f, importance[f]!);
+    if (k < 0) break;
     // Lines no event has touched for a while still get simplified: whenever the scale has grown
     // by the hysteresis factor, every edge behind the current tolerance is brought up to it.
     if (tol > refreshedTol * hysteresis) {
