@@ -3,9 +3,10 @@
 // is always the last resort because every file has it.
 
 export type Coding = 'br' | 'gzip' | 'identity';
+export type Compressed = Exclude<Coding, 'identity'>;
 
 /** The precompressed sibling of `name` for a coding is `name + suffix`. */
-export const SIBLING_SUFFIX: Readonly<Record<Exclude<Coding, 'identity'>, string>> = { br: '.br', gzip: '.gz' };
+export const SIBLING_SUFFIX: Readonly<Record<Compressed, string>> = { br: '.br', gzip: '.gz' };
 
 // Our preference among equally weighted codings: the smallest first.
 const PREFERENCE: readonly Coding[] = ['br', 'gzip', 'identity'];
@@ -48,4 +49,26 @@ export function codingsToTry(header: string | undefined): Coding[] {
   const order = PREFERENCE.filter((c) => weight(c) > 0).sort((a, b) => weight(b) - weight(a) || PREFERENCE.indexOf(a) - PREFERENCE.indexOf(b));
   if (!order.includes('identity')) order.push('identity');
   return order;
+}
+
+// Clients send one of a handful of Accept-Encoding values, so each answer is remembered by the
+// header's exact text. The bound keeps a client that sends endless variations from growing it.
+const REMEMBERED_HEADERS = 64;
+const remembered = new Map<string, readonly Compressed[]>();
+const NONE: readonly Compressed[] = Object.freeze([]);
+
+/**
+ * The precompressed copies worth looking for, best first: only codings the client prefers to
+ * identity, since identity (the file itself) is always there.
+ */
+export function siblingCodings(header: string | undefined): readonly Compressed[] {
+  if (header === undefined) return NONE;
+  let codings = remembered.get(header);
+  if (codings === undefined) {
+    const order = codingsToTry(header);
+    codings = Object.freeze(order.slice(0, order.indexOf('identity')).filter((c): c is Compressed => c !== 'identity'));
+    if (remembered.size >= REMEMBERED_HEADERS) remembered.clear();
+    remembered.set(header, codings);
+  }
+  return codings;
 }

@@ -1,7 +1,5 @@
 // Cache-Control by file name: content-hashed names never change, so caches may keep them
 // for a year without asking; everything else (index.json above all) must be revalidated.
-import path from 'node:path';
-
 export const IMMUTABLE = 'public, max-age=31536000, immutable';
 export const REVALIDATE = 'no-cache';
 
@@ -19,9 +17,11 @@ export class CachePolicy {
     this.pattern = pattern.global || pattern.sticky ? new RegExp(pattern.source, pattern.flags.replace(/[gy]/g, '')) : pattern;
   }
 
-  /** The header for a file asked for by this URL path (the name asked for, not a sibling's). */
-  headerFor(urlPath: string): string {
-    const name = path.posix.basename(urlPath);
+  /**
+   * The header for a file asked for by this name: the last segment of the URL path, decoded
+   * (as nginx's $uri is), and the name asked for rather than a precompressed sibling's.
+   */
+  headerFor(name: string): string {
     if (ALWAYS_REVALIDATED.has(name)) return REVALIDATE;
     return this.pattern.test(name) ? IMMUTABLE : REVALIDATE;
   }

@@ -3,24 +3,22 @@
 import { createHash } from 'node:crypto';
 import type { Stats } from 'node:fs';
 import type { FileHandle } from 'node:fs/promises';
+import { sameVersion, versionKey } from './file-version.js';
 
 export interface Content {
   etag: string; // strong: the same bytes always give the same tag, whatever the file's times
   size: number;
   lastModifiedMs: number; // whole seconds
+  lastModified: string; // the same as an HTTP date, formatted once rather than per response
   bytes: Buffer | undefined; // held in memory only for small files
 }
 
 interface Entry {
-  version: string;
+  stats: Stats; // the version the content was read from
   content: Content;
 }
 
 const HASH_CHUNK = 256 * 1024;
-
-function versionOf(s: Stats): string {
-  return `${s.dev}:${s.ino}:${s.size}:${s.mtimeMs}:${s.ctimeMs}`;
-}
 
 function etagOf(hash: ReturnType<typeof createHash>): string {
   // 128 bits of SHA-256 is ample to tell versions of one file apart.
@@ -42,7 +40,7 @@ export class ContentCache {
   /** The content of exactly this version of the file, if already known. */
   peek(realPath: string, stats: Stats): Content | undefined {
     const entry = this.entries.get(realPath);
-    if (!entry || entry.version !== versionOf(stats)) return undefined;
+    if (!entry || !sameVersion(entry.stats, stats)) return undefined;
     this.entries.delete(realPath);
     this.entries.set(realPath, entry);
     return entry.content;
@@ -50,11 +48,11 @@ export class ContentCache {
 
   /** Reads and hashes an open file whose fstat is `stats`; concurrent loads share one read. */
   load(realPath: string, handle: FileHandle, stats: Stats): Promise<Content> {
-    const key = `${realPath}\0${versionOf(stats)}`;
+    const key = `${realPath}\0${versionKey(stats)}`;
     let pending = this.loading.get(key);
     if (!pending) {
       pending = this.read(handle, stats).then((content) => {
-        this.remember(realPath, versionOf(stats), content);
+        this.remember(realPath, stats, content);
         return content;
       });
       const settle = (): void => void this.loading.delete(key);
@@ -66,11 +64,12 @@ export class ContentCache {
 
   private async read(handle: FileHandle, stats: Stats): Promise<Content> {
     const lastModifiedMs = Math.floor(stats.mtimeMs / 1000) * 1000;
+    const lastModified = new Date(lastModifiedMs).toUTCString();
     const hash = createHash('sha256');
     if (stats.size <= this.maxFileBytes) {
       const bytes = await handle.readFile();
       hash.update(bytes);
-      return { etag: etagOf(hash), size: bytes.length, lastModifiedMs, bytes };
+      return { etag: etagOf(hash), size: bytes.length, lastModifiedMs, lastModified, bytes };
     }
     const buf = Buffer.allocUnsafe(HASH_CHUNK);
     let position = 0;
@@ -80,16 +79,16 @@ export class ContentCache {
       hash.update(buf.subarray(0, bytesRead));
       position += bytesRead;
     }
-    return { etag: etagOf(hash), size: position, lastModifiedMs, bytes: undefined };
+    return { etag: etagOf(hash), size: position, lastModifiedMs, lastModified, bytes: undefined };
   }
 
-  private remember(realPath: string, version: string, content: Content): void {
+  private remember(realPath: string, stats: Stats, content: Content): void {
     const old = this.entries.get(realPath);
     if (old) {
       this.bytesHeld -= old.content.bytes?.length ?? 0;
       this.entries.delete(realPath);
     }
-    this.entries.set(realPath, { version, content });
+    this.entries.set(realPath, { stats, content });
     this.bytesHeld += content.bytes?.length ?? 0;
     for (const [key, entry] of this.entries) {
       if (this.bytesHeld <= this.maxBytes && this.entries.size <= this.maxEntries) break;

@@ -3,26 +3,28 @@
 import type { IncomingMessage, ServerResponse } from 'node:http';
 import { open, type FileHandle } from 'node:fs/promises';
 import { pipeline } from 'node:stream/promises';
-import { codingsToTry, SIBLING_SUFFIX, type Coding } from './accept-encoding.js';
+import { siblingCodings } from './accept-encoding.js';
 import { parseRange } from './byte-range.js';
 import type { CachePolicy } from './cache-control.js';
+import { chooseFile, type Choice } from './choose-file.js';
 import { contentTypeFor } from './content-types.js';
 import type { Content, ContentCache } from './content-cache.js';
 import { ALLOWED_METHODS, ALLOWED_REQUEST_HEADERS, EXPOSED_HEADERS, PREFLIGHT_MAX_AGE_S, type CorsPolicy } from './cors.js';
+import { sameFile } from './file-version.js';
+import type { LookupCache } from './lookup-cache.js';
 import { isNotModified, rangeApplies } from './preconditions.js';
-import { resolveInside, type Resolved } from './resolve-file.js';
 import { parseTargetPath, pathForSegments } from './url-path.js';
 
 export interface HandlerConfig {
-  root: string; // a real path
   cors: CorsPolicy;
   cachePolicy: CachePolicy;
   contents: ContentCache;
+  lookups: LookupCache;
   onError: (err: unknown) => void;
 }
 
 type Headers = Record<string, string | number>;
-type FileFound = Extract<Resolved, { kind: 'file' }>;
+type FileChoice = Extract<Choice, { kind: 'file' }>;
 
 const STATUS_TEXT: Readonly<Record<number, string>> = {
   400: 'bad request',
@@ -104,74 +106,54 @@ async function handle(config: HandlerConfig, req: IncomingMessage, res: ServerRe
     sendText(req, res, target.status, headers);
     return;
   }
-  const { segments } = target;
   // Ranges address the identity bytes, so a Range request never gets a compressed sibling.
-  const preferred = req.headers.range !== undefined ? [] : codingsToTry(req.headers['accept-encoding']);
-  // Only codings the client prefers to identity; identity is always in the list.
-  const codings = preferred.slice(0, preferred.indexOf('identity')).filter(isCompressed);
-  let dirSegments = segments.slice(0, -1);
-  let name = segments[segments.length - 1] ?? '';
-  // The siblings are looked up alongside the file itself: each lookup waits on the disk
-  // twice (realpath, stat), and in parallel that wait is paid once.
-  let siblings = lookUpSiblings(config.root, dirSegments, name, codings);
-  let found = await resolveInside(config.root, segments);
-  if (found.kind === 'directory') {
-    if (!target.trailingSlash && segments.length > 0) {
+  const codings = req.headers.range !== undefined ? [] : siblingCodings(req.headers['accept-encoding']);
+  // A second attempt only when the file chosen was replaced or removed since it was checked.
+  for (let attempt = 1; ; attempt++) {
+    const choice = await chooseFile(config.lookups, target.segments, target.trailingSlash, codings);
+    if (choice.kind === 'add-slash') {
       // As every static server does, so that relative links in its index.html resolve.
-      res.writeHead(301, { ...headers, location: pathForSegments(segments, true) + target.query, 'content-length': 0 });
+      res.writeHead(301, { ...headers, location: pathForSegments(target.segments, true) + target.query, 'content-length': 0 });
       res.end();
       return;
     }
-    dirSegments = segments;
-    name = 'index.html';
-    siblings = lookUpSiblings(config.root, dirSegments, name, codings);
-    found = await resolveInside(config.root, [...segments, name]);
-  } else if (target.trailingSlash) {
-    found = { kind: 'missing' }; // a file is not a directory
-  }
-  if (found.kind !== 'file') {
-    sendText(req, res, 404, headers);
-    return;
-  }
-  // The first coding, in the client's order, whose sibling exists; else the file itself.
-  let coding: Coding = 'identity';
-  let file = found;
-  for (const [i, sibling] of (await Promise.all(siblings)).entries()) {
-    if (sibling.kind === 'file') {
-      coding = codings[i]!;
-      file = sibling;
-      break;
+    if (choice.kind === 'missing') {
+      sendText(req, res, 404, headers);
+      return;
     }
+    if (await serveFile(config, req, res, headers, choice)) return;
+    config.lookups.forget(choice.fileSegments); // look again from scratch
+    if (attempt === 2) throw new Error(`${choice.file.realPath} keeps changing while it is opened`);
   }
-  await serveFile(config, req, res, headers, file, coding, [...dirSegments, name]);
 }
 
-function isCompressed(c: Coding): c is Exclude<Coding, 'identity'> {
-  return c !== 'identity';
-}
+const GONE = new Set(['ENOENT', 'ENOTDIR', 'ELOOP']);
 
-function lookUpSiblings(root: string, dirSegments: string[], name: string, codings: Exclude<Coding, 'identity'>[]): Promise<Resolved>[] {
-  // resolveInside never rejects, so a lookup whose answer goes unused is harmless.
-  return codings.map((c) => resolveInside(root, [...dirSegments, name + SIBLING_SUFFIX[c]]));
-}
-
-async function serveFile(
-  config: HandlerConfig,
-  req: IncomingMessage,
-  res: ServerResponse,
-  headers: Headers,
-  file: FileFound,
-  coding: Coding,
-  urlSegments: string[],
-): Promise<void> {
-  const name = urlSegments[urlSegments.length - 1]!;
+/**
+ * Sends the chosen file, from memory or from disk. False, with nothing sent, when the file
+ * at its real path is gone or is no longer the one that was checked to lie inside the root.
+ */
+async function serveFile(config: HandlerConfig, req: IncomingMessage, res: ServerResponse, headers: Headers, choice: FileChoice): Promise<boolean> {
+  const { file, coding, name } = choice;
   const wantsBody = req.method === 'GET';
   let content: Content | undefined = config.contents.peek(file.realPath, file.stats);
   let handle: FileHandle | undefined;
   if (!content || (!content.bytes && wantsBody)) {
-    handle = await open(file.realPath, 'r');
+    try {
+      handle = await open(file.realPath, 'r');
+    } catch (err) {
+      // A remembered path may be gone by now: like a replaced file, it is looked up afresh.
+      if (GONE.has((err as NodeJS.ErrnoException).code ?? '')) return false;
+      throw err;
+    }
     try {
       const stats = await handle.stat();
+      // A path checked earlier may lead elsewhere now (a rename, a symlink swapped in along
+      // it); only the very file that was checked may be read.
+      if (!sameFile(stats, file.stats)) {
+        await handle.close();
+        return false;
+      }
       content = config.contents.peek(file.realPath, stats) ?? (await config.contents.load(file.realPath, handle, stats));
     } catch (err) {
       await handle.close();
@@ -185,14 +167,14 @@ async function serveFile(
 
   try {
     addVary(headers, 'Accept-Encoding');
-    headers['cache-control'] = config.cachePolicy.headerFor(pathForSegments(urlSegments, false));
+    headers['cache-control'] = config.cachePolicy.headerFor(name);
     headers.etag = content.etag;
-    headers['last-modified'] = new Date(content.lastModifiedMs).toUTCString();
+    headers['last-modified'] = content.lastModified;
     headers['accept-ranges'] = 'bytes';
     if (isNotModified(req.headers['if-none-match'], req.headers['if-modified-since'], content)) {
       res.writeHead(304, headers);
       res.end();
-      return;
+      return true;
     }
     headers['content-type'] = contentTypeFor(name);
     if (coding !== 'identity') headers['content-encoding'] = coding;
@@ -205,7 +187,7 @@ async function serveFile(
       const range = parseRange(rangeHeader, content.size);
       if (range.kind === 'unsatisfiable') {
         sendText(req, res, 416, { ...headers, 'content-range': `bytes */${content.size}` });
-        return;
+        return true;
       }
       if (range.kind === 'range') {
         ({ start, end } = range);
@@ -217,11 +199,11 @@ async function serveFile(
     res.writeHead(status, headers);
     if (!wantsBody || end < start) {
       res.end();
-      return;
+      return true;
     }
     if (content.bytes) {
-      res.end(content.bytes.subarray(start, end + 1));
-      return;
+      res.end(status === 200 ? content.bytes : content.bytes.subarray(start, end + 1));
+      return true;
     }
     const stream = handle!.createReadStream({ start, end, autoClose: true });
     handle = undefined; // the stream closes it now
@@ -229,6 +211,7 @@ async function serveFile(
       // A client that hangs up mid-file is normal; only a failing read is worth reporting.
       if (!res.destroyed || (err as { code?: string }).code !== 'ERR_STREAM_PREMATURE_CLOSE') throw err;
     });
+    return true;
   } finally {
     await handle?.close();
   }

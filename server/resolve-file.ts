@@ -6,7 +6,7 @@ import path from 'node:path';
 
 export type Resolved =
   | { kind: 'file'; realPath: string; stats: Stats }
-  | { kind: 'directory'; realPath: string }
+  | { kind: 'directory'; realPath: string; stats: Stats }
   | { kind: 'missing' };
 
 const MISSING: Resolved = { kind: 'missing' };
@@ -32,6 +32,6 @@ export async function resolveInside(root: string, segments: readonly string[]): 
     return MISSING; // absent, unreadable, or a dangling or looping link: all the same to a client
   }
   if (stats.isFile()) return { kind: 'file', realPath: real, stats };
-  if (stats.isDirectory()) return { kind: 'directory', realPath: real };
+  if (stats.isDirectory()) return { kind: 'directory', realPath: real, stats };
   return MISSING; // sockets, FIFOs and devices are never served
 }

@@ -7,6 +7,7 @@ import { CachePolicy } from './cache-control.js';
 import { ContentCache } from './content-cache.js';
 import { watchConnections } from './connection-watchdog.js';
 import { CorsPolicy, type CorsOrigins } from './cors.js';
+import { LookupCache } from './lookup-cache.js';
 import { createRequestHandler } from './request-handler.js';
 
 export interface StaticServerOptions {
@@ -34,6 +35,12 @@ export interface StaticServerOptions {
   cacheBytes?: number;
   /** Files up to this size are served from memory (default 1 MiB); larger are streamed. */
   maxCachedFileBytes?: number;
+  /**
+   * How long a file found inside the root is served again without looking at the disk
+   * (default 100 ms). A file rewritten, replaced or deleted may be served as it was for this
+   * long; 0 looks at every request. Nothing outside the root is served either way.
+   */
+  revalidateAfterMs?: number;
   /** Unexpected failures (a 500 or a broken stream); default: printed to stderr. */
   onError?: (err: unknown) => void;
 }
@@ -75,10 +82,10 @@ export function createStaticServer(options: StaticServerOptions): StaticServer {
       requireHostHeader: true,
     },
     createRequestHandler({
-      root,
       cors: new CorsPolicy(options.cors),
       cachePolicy: new CachePolicy(options.immutablePattern),
       contents: new ContentCache(options.cacheBytes ?? 64 << 20, options.maxCachedFileBytes ?? 1 << 20),
+      lookups: new LookupCache(root, { revalidateAfterMs: options.revalidateAfterMs }),
       onError: options.onError ?? ((err) => console.error('static server:', err)),
     }),
   );

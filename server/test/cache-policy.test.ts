@@ -13,7 +13,7 @@ const IMMUTABLE = 'public, max-age=31536000, immutable';
 let fx: Fixture;
 before(() => {
   fx = makeFixture();
-  for (const name of ['c-3fa9b2c1.bin', 'c-3fa9b2c.bin', 'deadbeefcafe.json', '3fa9b2c1d4e5f607', 'abcdef0123g.json', 'C-3FA9B2C1D4.bin', 'report-2024010x.json', 'v2-app.js', 'chunk.3fa9b2c1d4.bin']) {
+  for (const name of ['c-3fa9b2c1.bin', 'c-3fa9b2c.bin', 'deadbeefcafe.json', '3fa9b2c1d4e5f607', 'abcdef0123g.json', 'C-3FA9B2C1D4.bin', 'report-2024010x.json', 'v2-app.js', 'chunk.3fa9b2c1d4.bin', 'x 1234567.bin']) {
     writeFileSync(path.join(fx.root, name), 'x');
   }
 });
@@ -43,6 +43,7 @@ describe('the default pattern: a run of 8 or more lowercase hex digits standing 
     ['report-2024010x.json', false],
     ['index.json', false],
     ['v2-app.js', false],
+    ['x 1234567.bin', false], // the decoded name, as nginx's $uri: the %20 it was sent as adds no digits
   ] as const) {
     it(`${name}: ${immutable ? 'immutable' : 'revalidated'}`, async () => {
       assert.equal(await cacheControl(ours.base, name), immutable ? IMMUTABLE : 'no-cache');

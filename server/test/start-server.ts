@@ -22,12 +22,12 @@ export async function startOurs(options: StaticServerOptions): Promise<Started> 
  * The usual setup of a test file: a fresh fixture folder served by our server for the whole
  * file, removed afterwards. The getters are valid once the file's tests run.
  */
-export function serveFixture(): { fx: () => Fixture; ours: () => Started } {
+export function serveFixture(options: Omit<StaticServerOptions, 'root'> = {}): { fx: () => Fixture; ours: () => Started } {
   let fx: Fixture | undefined;
   let ours: Started | undefined;
   before(async () => {
     fx = makeFixture();
-    ours = await startOurs({ root: fx.root });
+    ours = await startOurs({ ...options, root: fx.root });
   });
   after(async () => {
     await ours?.server.close();
