@@ -12,6 +12,8 @@ export const usage = `ssc serve <dir> [options]
   --host <address>    address to listen on (default 127.0.0.1: this machine only)
   --cors <origins>    let pages on other sites read the map: * or a comma-separated list
                       of origins, e.g. https://maps.example.org,http://localhost:5173
+  --revalidate-ms <n> how long a checked file may be answered from memory before it is
+                      looked at again (default 100; 0 checks the disk on every request)
 Serves the directory as the map client expects: content types, ETags, precompressed .br and
 .gz siblings, ranges, a year of caching for content-hashed names and revalidation for the
 rest. Nothing outside <dir> is served. Stop with Ctrl-C.`;
@@ -24,6 +26,7 @@ export async function run(argv: string[]): Promise<void> {
       port: { type: 'string' },
       host: { type: 'string' },
       cors: { type: 'string' },
+      'revalidate-ms': { type: 'string' },
     },
   });
   if (positionals.length !== 1) throw new UsageError('give one directory to serve');
@@ -31,6 +34,7 @@ export async function run(argv: string[]): Promise<void> {
   const port = parseNumber(values.port ?? '8080', '--port', { min: 0, integer: true })!;
   if (port > 65535) throw new UsageError('--port must be at most 65535');
   const host = values.host ?? '127.0.0.1';
+  const revalidateAfterMs = parseNumber(values['revalidate-ms'], '--revalidate-ms', { min: 0 });
   let cors: CorsOrigins | undefined;
   if (values.cors !== undefined) {
     cors = parseCorsOrigins(values.cors);
@@ -47,7 +51,7 @@ export async function run(argv: string[]): Promise<void> {
 
   let server;
   try {
-    server = createStaticServer({ root: dir, ...(cors === undefined ? {} : { cors }) });
+    server = createStaticServer({ root: dir, ...(cors === undefined ? {} : { cors }), ...(revalidateAfterMs === undefined ? {} : { revalidateAfterMs }) });
   } catch (err) {
     if (err instanceof CorsConfigError) throw new UsageError(`--cors: ${err.message}`);
     throw err;
