@@ -29,5 +29,5 @@ if (files.length === 0) {
   process.exit(1);
 }
 // One file at a time: browser tests are heavy and this machine has two cores.
-const r = spawnSync(process.execPath, ['--test', '--test-concurrency=1', ...files], { stdio: 'inherit', cwd: root });
+const r = spawnSync(process.execPath, ['--test', '--test-concurrency=1', '--test-timeout=600000', ...files], { stdio: 'inherit', cwd: root });
 process.exit(r.status ?? 1);

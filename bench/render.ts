@@ -1,0 +1,133 @@
+// npm run bench:render [-- <dataset filter>]: the WebGL2 client in headless Chromium at
+// 1280x720, for bgt_otterlo_1800m and nlcd_zion at the base scale, a middle scale and the full
+// extent. Per view: time from page load to the first complete map, frame time (median and p95
+// over 60 frames of continuous redrawing, each frame a new view so the worker queries the
+// index), triangles submitted per frame, index query time per frame, and the chunks and bytes
+// the view needs. Cubes are built fresh (ssc build) and served by the project's static server.
+// SwiftShader is a software GPU: the numbers compare versions on one machine, nothing more.
+import { execFile } from 'node:child_process';
+import { cp, mkdtemp, readFile, rm } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { promisify } from 'node:util';
+import { chromium } from 'playwright-core';
+import { parseIndex, type ChunkLeaf, type IndexNode } from '../client/src/shared/cube-index.js';
+import { createStaticServer } from '../server/static-server.js';
+import { datasets, median, root } from './datasets.js';
+
+const run = promisify(execFile);
+const WIDTH = 1280, HEIGHT = 720, FRAMES = 60, WARMUP = 5;
+const ARGS = ['--no-sandbox', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--enable-unsafe-swiftshader', '--host-resolver-rules=MAP * ~NOTFOUND , EXCLUDE 127.0.0.1 , EXCLUDE localhost'];
+
+interface PageMap {
+  whenIdle(): Promise<{ complete: boolean }>;
+  firstCompleteAt: number | null;
+  getCenter(): [number, number];
+  jumpTo(v: { center: [number, number] }): void;
+  redraw(): void;
+  on(t: 'render', f: (s: { triangles: number; queryMs: number }) => void): void;
+  off(t: 'render', f: (s: { triangles: number; queryMs: number }) => void): void;
+  neededChunks(): { visible: string[]; margin: string[] };
+  cubeMeta: unknown;
+}
+declare const map: PageMap;
+
+function p95(xs: number[]): number {
+  const s = [...xs].sort((a, b) => a - b);
+  return s[Math.min(s.length - 1, Math.ceil(0.95 * s.length) - 1)]!;
+}
+
+function leaves(n: IndexNode, out: ChunkLeaf[]): ChunkLeaf[] {
+  if ('file' in n) out.push(n);
+  else if ('children' in n) n.children.forEach((c) => leaves(c, out));
+  return out;
+}
+
+async function main(): Promise<void> {
+  const filter = process.argv[2];
+  const sets = datasets(filter).filter((d) => d.name === 'bgt_otterlo_1800m' || d.name === 'nlcd_zion');
+  if (sets.length === 0) throw new Error('no dataset (bgt_otterlo_1800m, nlcd_zion) found in ../shared/data');
+  const browser = await chromium.launch({ executablePath: process.env.CHROMIUM_PATH ?? '/usr/lib/chromium/chromium', args: ARGS });
+  const rows: string[][] = [['dataset', 'view', 'scale', 'first map ms', 'frame ms median', 'frame ms p95', 'triangles/frame', 'query ms/frame', 'chunks', 'MB']];
+  try {
+    for (const d of sets) {
+      const dir = await mkdtemp(path.join(tmpdir(), 'ssc-bench-'));
+      try {
+        process.stderr.write(`building ${d.name}...\n`);
+        await run(process.execPath, [path.join(root, 'bin/ssc.js'), 'build', d.file, '--style', d.style, '--out', path.join(dir, 'cube'), '--quiet'], { maxBuffer: 1 << 26 });
+        await cp(path.join(root, 'dist/client'), dir, { recursive: true, filter: (src) => !src.includes(`${path.sep}src${path.sep}`) });
+        const index = parseIndex(JSON.parse(await readFile(path.join(dir, 'cube/index.json'), 'utf8')));
+        // Sub-index files are not followed here: the byte count covers the chunks in index.json.
+        const leafBytes = new Map(leaves(index.root, []).map((l) => [l.file, l.bytes]));
+        const meta = index.meta;
+        const [x0, y0, x1, y1] = meta.extent;
+        const centre: [number, number] = [(x0 + x1) / 2, (y0 + y1) / 2];
+        const full = (Math.max((x1 - x0) / WIDTH, (y1 - y0) / HEIGHT) * 1000) / meta.pixelSizeMm;
+        const views: [string, number][] = [['base', meta.baseScale], ['middle', Math.sqrt(meta.baseScale * full)], ['extent', full]];
+        const server = createStaticServer({ root: dir });
+        await server.listen(0, '127.0.0.1');
+        try {
+          for (const [name, scale] of views) {
+            const context = await browser.newContext({ viewport: { width: WIDTH, height: HEIGHT } });
+            const page = await context.newPage();
+            const errors: string[] = [];
+            page.on('pageerror', (e) => errors.push(e.message));
+            await page.goto(`${server.url}index.html?source=cube/&center=${centre.join(',')}&scale=${scale}&supersampling=1`);
+            await page.waitForFunction(() => typeof map !== 'undefined' && map.cubeMeta !== null);
+            await page.evaluate(() => map.whenIdle());
+            const firstMs = await page.evaluate(() => map.firstCompleteAt);
+            const needed = await page.evaluate(() => map.neededChunks());
+            const files = [...needed.visible, ...needed.margin];
+            const bytes = files.reduce((s, f) => s + (leafBytes.get(f) ?? 0), 0);
+            const samples = await page.evaluate(
+              ([n]) =>
+                new Promise<{ t: number; triangles: number; queryMs: number }[]>((resolve) => {
+                  const out: { t: number; triangles: number; queryMs: number }[] = [];
+                  const [cx, cy] = map.getCenter();
+                  const f = (s: { triangles: number; queryMs: number }): void => {
+                    out.push({ t: performance.now(), triangles: s.triangles, queryMs: s.queryMs });
+                    if (out.length >= n) {
+                      map.off('render', f);
+                      resolve(out);
+                      return;
+                    }
+                    // A new view every frame (a millimetre pan): a full redraw and an index query.
+                    map.jumpTo({ center: [cx + (out.length % 2) * 1e-3, cy] });
+                  };
+                  map.on('render', f);
+                  map.redraw();
+                }),
+              [FRAMES + WARMUP + 1] as const,
+            );
+            const kept = samples.slice(WARMUP);
+            const frameMs = kept.slice(1).map((s, i) => s.t - kept[i]!.t);
+            rows.push([
+              d.name, name, `1:${Math.round(scale)}`,
+              firstMs === null ? 'never' : firstMs.toFixed(0),
+              median(frameMs).toFixed(1), p95(frameMs).toFixed(1),
+              Math.round(median(kept.map((s) => s.triangles))).toString(),
+              median(kept.map((s) => s.queryMs)).toFixed(2),
+              String(files.length), (bytes / 1e6).toFixed(2),
+            ]);
+            process.stderr.write(`${rows[rows.length - 1]!.join('  ')}\n`);
+            if (errors.length > 0) throw new Error(`page errors: ${errors.join('; ')}`);
+            await context.close();
+          }
+        } finally {
+          await server.close();
+        }
+      } finally {
+        await rm(dir, { recursive: true, force: true });
+      }
+    }
+  } finally {
+    await browser.close();
+  }
+  const widths = rows[0]!.map((_, c) => Math.max(...rows.map((r) => r[c]!.length)));
+  for (const r of rows) process.stdout.write(`${r.map((v, c) => v.padStart(widths[c]!)).join('  ')}\n`);
+}
+
+main().catch((err: unknown) => {
+  console.error(err);
+  process.exit(1);
+});

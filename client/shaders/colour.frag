@@ -1,0 +1,84 @@
+#version 300 es
+// Colour pass: from the ID buffer to colours. Per pixel the upper face's class colour (and its
+// pattern within the pattern's z range); near-intersection blending toward the face below when
+// the surface is less than uBlendDistance under the slice; face boundaries where the face id
+// changes between neighbouring pixels.
+precision highp float;
+precision highp int;
+precision highp usampler2D;
+
+uniform usampler2D uIds;      // RG32UI: upper, lower face
+uniform usampler2D uAux;      // RG32UI: classes, z of the surface (float bits)
+uniform sampler2D uSurface;   // R32F: z of the slicing surface
+uniform sampler2D uStyle;     // RGBA32F, one column per class: fill; pattern colour + kind; pattern z range
+uniform int uClassCount;
+uniform vec4 uBackground;
+uniform float uBlendDistance; // c in steps; 0: no blending
+uniform int uBoundaryBefore;  // boundary band: neighbours from -before to +after (device pixels)
+uniform int uBoundaryAfter;   // 0 and 0: no boundaries
+uniform vec4 uBoundaryColour; // rgb, alpha = opacity
+uniform float uPatternCell;   // pattern period, device pixels
+uniform float uPatternLine;   // pattern line width / dot radius, device pixels
+uniform vec2 uPatternShift;   // anchors patterns to the ground, device pixels
+
+out vec4 oColour;
+
+float patternMask(int kind) {
+  vec2 q = gl_FragCoord.xy + uPatternShift;
+  float c = uPatternCell;
+  if (kind == 1 || kind == 3) {
+    if (mod(q.x + q.y, c) < uPatternLine) return 1.0;
+  }
+  if (kind == 3) {
+    if (mod(q.x - q.y, c) < uPatternLine) return 1.0;
+  }
+  if (kind == 2) {
+    vec2 m = mod(q, c) - 0.5 * c;
+    if (dot(m, m) < uPatternLine * uPatternLine) return 1.0;
+  }
+  return 0.0;
+}
+
+vec3 classColour(uint cls, float zSlice) {
+  int i = int(cls);
+  if (i >= uClassCount) return uBackground.rgb;
+  vec3 fill = texelFetch(uStyle, ivec2(i, 0), 0).rgb;
+  vec4 pat = texelFetch(uStyle, ivec2(i, 1), 0);
+  int kind = int(pat.a + 0.5);
+  if (kind != 0) {
+    vec2 range = texelFetch(uStyle, ivec2(i, 2), 0).xy;
+    if (zSlice >= range.x && zSlice <= range.y) fill = mix(fill, pat.rgb, patternMask(kind));
+  }
+  return fill;
+}
+
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  ivec2 size = textureSize(uIds, 0);
+  uvec2 ids = texelFetch(uIds, p, 0).xy;
+  vec3 colour;
+  if (ids.x == 0u) {
+    colour = uBackground.rgb;
+  } else {
+    uvec2 aux = texelFetch(uAux, p, 0).xy;
+    float zSlice = texelFetch(uSurface, p, 0).r;
+    uint upperClass = aux.x & 0xffffu;
+    uint lowerClass = aux.x >> 16;
+    colour = classColour(upperClass, zSlice);
+    if (uBlendDistance > 0.0 && ids.y != 0u && lowerClass != 0xffffu) {
+      float d = zSlice - uintBitsToFloat(aux.y);
+      if (d < uBlendDistance) colour = mix(classColour(lowerClass, zSlice), colour, d / uBlendDistance);
+    }
+  }
+  if (uBoundaryBefore + uBoundaryAfter > 0) {
+    bool edge = false;
+    for (int k = -uBoundaryBefore; k <= uBoundaryAfter; k++) {
+      if (k == 0) continue;
+      ivec2 a = clamp(p + ivec2(k, 0), ivec2(0), size - 1);
+      ivec2 b = clamp(p + ivec2(0, k), ivec2(0), size - 1);
+      if (texelFetch(uIds, a, 0).x != ids.x || texelFetch(uIds, b, 0).x != ids.x) edge = true;
+    }
+    if (edge) colour = mix(colour, uBoundaryColour.rgb, uBoundaryColour.a);
+  }
+  oColour = vec4(colour, 1.0);
+}

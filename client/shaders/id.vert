@@ -1,0 +1,25 @@
+#version 300 es
+// ID pass: the SSC's upward-facing triangles, top-down and orthographic. Positions are relative
+// to the chunk's origin; uMatrix carries the chunk's offset from the view centre, composed in
+// float64 on the CPU, so national grid coordinates keep their millimetres.
+precision highp float;
+precision highp int;
+
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in uint aUpper;
+layout(location = 2) in uint aLower;
+layout(location = 3) in uint aUpperClass;
+layout(location = 4) in uint aLowerClass;
+
+uniform mat4 uMatrix;
+
+flat out uvec2 vIds;
+flat out uint vClasses;
+out float vZ;
+
+void main() {
+  gl_Position = uMatrix * vec4(aPosition.xy, 0.0, 1.0);
+  vIds = uvec2(aUpper, aLower);
+  vClasses = (aUpperClass & 0xffffu) | ((aLowerClass & 0xffffu) << 16);
+  vZ = aPosition.z;
+}

@@ -1,0 +1,77 @@
+// Colour pass: the ID targets to colours (colour.frag), accumulated into the colour target
+// with weight 1 / n for the n-th supersampling frame (a running mean).
+import colourFrag from '../../shaders/colour.frag?raw';
+import fullscreenVert from '../../shaders/fullscreen.vert?raw';
+import { Program } from './program.js';
+import type { Rgba } from './style-texture.js';
+import type { Targets } from './targets.js';
+
+export interface ColourParams {
+  style: WebGLTexture;
+  classCount: number;
+  background: Rgba;
+  /** c in steps; 0: no blending. */
+  blendDistance: number;
+  /** Boundary band in device pixels around each id change (both 0: none). */
+  boundaryBefore: number;
+  boundaryAfter: number;
+  boundaryColour: Rgba;
+  patternCell: number;
+  patternLine: number;
+  patternShift: [number, number];
+  /** Weight of this frame in the accumulated colour: 1 for the first. */
+  weight: number;
+}
+
+export class ColourPass {
+  private readonly program: Program;
+
+  constructor(private readonly gl: WebGL2RenderingContext) {
+    this.program = new Program(gl, fullscreenVert, colourFrag, 'colour pass');
+  }
+
+  draw(targets: Targets, c: ColourParams): void {
+    const gl = this.gl;
+    const p = this.program;
+    p.use();
+    const bind = (unit: number, tex: WebGLTexture, name: string): void => {
+      gl.activeTexture(gl.TEXTURE0 + unit);
+      gl.bindTexture(gl.TEXTURE_2D, tex);
+      gl.uniform1i(p.loc(name), unit);
+    };
+    bind(0, targets.ids, 'uIds');
+    bind(1, targets.aux, 'uAux');
+    bind(2, targets.surface, 'uSurface');
+    bind(3, c.style, 'uStyle');
+    gl.uniform1i(p.loc('uClassCount'), c.classCount);
+    gl.uniform4fv(p.loc('uBackground'), c.background);
+    gl.uniform1f(p.loc('uBlendDistance'), c.blendDistance);
+    gl.uniform1i(p.loc('uBoundaryBefore'), c.boundaryBefore);
+    gl.uniform1i(p.loc('uBoundaryAfter'), c.boundaryAfter);
+    gl.uniform4fv(p.loc('uBoundaryColour'), c.boundaryColour);
+    gl.uniform1f(p.loc('uPatternCell'), c.patternCell);
+    gl.uniform1f(p.loc('uPatternLine'), c.patternLine);
+    gl.uniform2f(p.loc('uPatternShift'), c.patternShift[0], c.patternShift[1]);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, targets.colourFb);
+    gl.viewport(0, 0, targets.width, targets.height);
+    gl.disable(gl.DEPTH_TEST);
+    if (c.weight >= 1) {
+      gl.disable(gl.BLEND);
+    } else {
+      // acc = weight * colour + (1 - weight) * acc
+      gl.enable(gl.BLEND);
+      gl.blendColor(0, 0, 0, c.weight);
+      gl.blendFunc(gl.CONSTANT_ALPHA, gl.ONE_MINUS_CONSTANT_ALPHA);
+    }
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+    gl.disable(gl.BLEND);
+    for (let u = 3; u >= 0; u--) {
+      gl.activeTexture(gl.TEXTURE0 + u);
+      gl.bindTexture(gl.TEXTURE_2D, null);
+    }
+  }
+
+  delete(): void {
+    this.program.delete();
+  }
+}

@@ -1,0 +1,71 @@
+// ID pass: every chunk's triangles into the ID targets; per pixel the nearest surface at or
+// below the slicing surface wins (discard above, depth = distance below).
+import { mat4 } from 'gl-matrix';
+import idFrag from '../../shaders/id.frag?raw';
+import idVert from '../../shaders/id.vert?raw';
+import type { ViewGeometry } from '../shared/view.js';
+import type { GpuChunk } from './gpu-chunk.js';
+import { Program } from './program.js';
+import type { Targets } from './targets.js';
+
+export class IdPass {
+  private readonly program: Program;
+  // Float64 matrices: the chunk's offset from the view centre is composed in double precision
+  // and only the (small) result is rounded to float32.
+  private readonly projection = new Float64Array(16);
+  private readonly matrix = new Float64Array(16);
+  private readonly matrix32 = new Float32Array(16);
+
+  constructor(private readonly gl: WebGL2RenderingContext) {
+    this.program = new Program(gl, idVert, idFrag, 'id pass');
+  }
+
+  /**
+   * Draws the chunks; `jitter` shifts the image by a fraction of a pixel (supersampling).
+   * Returns the triangles submitted.
+   */
+  draw(targets: Targets, view: ViewGeometry, chunks: Iterable<GpuChunk>, depthRange: number, jitter: [number, number]): number {
+    const gl = this.gl;
+    const p = this.program;
+    const hw = (view.width * view.resolution) / 2, hh = (view.height * view.resolution) / 2;
+    mat4.ortho(this.projection, -hw, hw, -hh, hh, -1, 1);
+    // Jitter in pixels -> clip space, applied after the projection.
+    const jx = (2 * jitter[0]) / view.width, jy = (2 * jitter[1]) / view.height;
+    gl.bindFramebuffer(gl.FRAMEBUFFER, targets.idFb);
+    gl.viewport(0, 0, targets.width, targets.height);
+    gl.clearBufferuiv(gl.COLOR, 0, new Uint32Array([0, 0, 0, 0]));
+    gl.clearBufferuiv(gl.COLOR, 1, new Uint32Array([0xffffffff, 0, 0, 0]));
+    gl.clearBufferfv(gl.DEPTH, 0, new Float32Array([1]));
+    gl.enable(gl.DEPTH_TEST);
+    gl.depthFunc(gl.LESS);
+    gl.depthMask(true);
+    // No face culling: the worker already kept only the upward-facing triangles, exactly (see
+    // upward-triangles.ts); culling by the snapped winding would drop flipped slivers.
+    gl.disable(gl.CULL_FACE);
+    gl.disable(gl.BLEND);
+    p.use();
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, targets.surface);
+    gl.uniform1i(p.loc('uSurface'), 0);
+    gl.uniform1f(p.loc('uDepthScale'), 1 / depthRange);
+    const uMatrix = p.loc('uMatrix');
+    let triangles = 0;
+    for (const c of chunks) {
+      mat4.translate(this.matrix, this.projection, [c.originX - view.centerX, c.originY - view.centerY, 0]);
+      this.matrix[12] += jx;
+      this.matrix[13] += jy;
+      this.matrix32.set(this.matrix);
+      gl.uniformMatrix4fv(uMatrix, false, this.matrix32);
+      c.draw(gl);
+      triangles += c.triangleCount;
+    }
+    gl.bindVertexArray(null);
+    gl.disable(gl.CULL_FACE);
+    gl.disable(gl.DEPTH_TEST);
+    return triangles;
+  }
+
+  delete(): void {
+    this.program.delete();
+  }
+}

@@ -1,0 +1,224 @@
+// The GPU side of the map: the WebGL2 context and everything made in it (passes, targets, the
+// style texture, the chunks), one frame at a time, and reading the ID buffer back. A lost
+// context is given up quietly and rebuilt on restore; the chunks then have to be uploaded again.
+import type { CubeMeta } from '../shared/cube-index.js';
+import type { Surface } from '../shared/surfaces.js';
+import type { ViewGeometry } from '../shared/view.js';
+import type { ChunkPayload } from '../source/worker-protocol.js';
+import { ChunkStore } from './chunk-store.js';
+import { ColourPass, type ColourParams } from './colour-pass.js';
+import type { GpuChunk } from './gpu-chunk.js';
+import { IdPass } from './id-pass.js';
+import { PresentPass } from './present-pass.js';
+import { createStyleTexture } from './style-texture.js';
+import { SurfacePass } from './surface-pass.js';
+import { Targets } from './targets.js';
+
+export interface FrameParams {
+  view: ViewGeometry;
+  surface: Surface;
+  zMax: number;
+  /** Sub-pixel offset of this frame (device pixels); [0, 0] for the plain image. */
+  jitter: [number, number];
+  colour: Omit<ColourParams, 'style' | 'classCount'>;
+}
+
+export interface IdBuffer {
+  width: number;
+  height: number;
+  /** Per pixel, rows from the top: upper face (0: none), lower face, classes, surface z. */
+  upper: Uint32Array;
+  lower: Uint32Array;
+  classes: Uint32Array;
+  z: Float32Array;
+  /** z of the slicing surface per pixel. */
+  slice: Float32Array;
+}
+
+interface Gpu {
+  surface: SurfacePass;
+  id: IdPass;
+  colour: ColourPass;
+  present: PresentPass;
+  targets: Targets;
+  emptyVao: WebGLVertexArrayObject;
+  style: { texture: WebGLTexture; classCount: number } | null;
+}
+
+export class Renderer {
+  readonly store: ChunkStore;
+  private gpu: Gpu | null = null;
+  private meta: CubeMeta | null = null;
+  private lastFrame: FrameParams | null = null;
+  private lastChunks: GpuChunk[] = [];
+  private idsJittered = false;
+
+  private constructor(
+    readonly canvas: HTMLCanvasElement,
+    readonly gl: WebGL2RenderingContext,
+    budgetBytes: number,
+    private readonly onLost: (files: string[]) => void,
+    private readonly onRestored: () => void,
+  ) {
+    this.store = new ChunkStore(budgetBytes);
+    canvas.addEventListener('webglcontextlost', this.lostHandler);
+    canvas.addEventListener('webglcontextrestored', this.restoredHandler);
+    this.build();
+  }
+
+  /** Null where WebGL2 is missing. */
+  static create(canvas: HTMLCanvasElement, budgetBytes: number, onLost: (files: string[]) => void, onRestored: () => void): Renderer | null {
+    const gl = canvas.getContext('webgl2', {
+      alpha: false,
+      antialias: false,
+      depth: false,
+      stencil: false,
+      premultipliedAlpha: true,
+      preserveDrawingBuffer: false,
+      powerPreference: 'high-performance',
+    });
+    if (!gl) return null;
+    return new Renderer(canvas, gl, budgetBytes, onLost, onRestored);
+  }
+
+  get lost(): boolean {
+    return this.gpu === null;
+  }
+
+  private build(): void {
+    const gl = this.gl;
+    if (gl.isContextLost()) return;
+    const floatTargets = gl.getExtension('EXT_color_buffer_float') !== null;
+    const targets = new Targets(gl, { floatTargets });
+    this.gpu = {
+      surface: new SurfacePass(gl),
+      id: new IdPass(gl),
+      colour: new ColourPass(gl),
+      present: new PresentPass(gl),
+      targets,
+      emptyVao: gl.createVertexArray(),
+      style: this.meta ? createStyleTexture(gl, this.meta) : null,
+    };
+  }
+
+  private readonly lostHandler = (ev: Event): void => {
+    // Without preventDefault the browser never restores the context.
+    ev.preventDefault();
+    this.gpu = null;
+    this.lastChunks = [];
+    this.onLost(this.store.clear(null));
+  };
+
+  private readonly restoredHandler = (): void => {
+    this.build();
+    this.onRestored();
+  };
+
+  setMeta(meta: CubeMeta): void {
+    this.meta = meta;
+    if (this.gpu) {
+      if (this.gpu.style) this.gl.deleteTexture(this.gpu.style.texture);
+      this.gpu.style = createStyleTexture(this.gl, meta);
+    }
+  }
+
+  upload(payload: ChunkPayload, frame: number): boolean {
+    if (!this.gpu) return false;
+    this.store.add(this.gl, payload, frame);
+    return true;
+  }
+
+  evict(visible: ReadonlySet<string>, margin: ReadonlySet<string>): string[] {
+    if (!this.gpu) return [];
+    return this.store.evict(this.gl, visible, margin);
+  }
+
+  /** Draws a frame; returns the triangles submitted. */
+  render(f: FrameParams, chunks: GpuChunk[]): number {
+    const g = this.gpu;
+    if (!g || !g.style) return 0;
+    const gl = this.gl;
+    g.targets.resize(f.view.width, f.view.height);
+    gl.bindVertexArray(g.emptyVao);
+    g.surface.draw(g.targets, f.view, f.surface, f.zMax);
+    const triangles = g.id.draw(g.targets, f.view, chunks, f.zMax + 1, f.jitter);
+    this.idsJittered = f.jitter[0] !== 0 || f.jitter[1] !== 0;
+    gl.bindVertexArray(g.emptyVao);
+    g.colour.draw(g.targets, { ...f.colour, style: g.style.texture, classCount: g.style.classCount });
+    g.present.draw(g.targets);
+    gl.bindVertexArray(null);
+    this.lastFrame = f;
+    this.lastChunks = chunks;
+    return triangles;
+  }
+
+  /** The ID buffer of the last frame, without jitter. Null before the first frame or when lost. */
+  readIds(x = 0, y = 0, w?: number, h?: number): IdBuffer | null {
+    const g = this.gpu;
+    const f = this.lastFrame;
+    if (!g || !f) return null;
+    const gl = this.gl;
+    const T = g.targets;
+    if (this.idsJittered) {
+      // Only chunks still on the GPU (some may have been evicted since).
+      const chunks = this.lastChunks.filter((c) => this.store.get(c.file) === c);
+      g.id.draw(T, f.view, chunks, f.zMax + 1, [0, 0]);
+      this.idsJittered = false;
+    }
+    const W = w ?? T.width - x, H = h ?? T.height - y;
+    // Rows from the top in the result; GL counts them from the bottom.
+    const glY = T.height - y - H;
+    const read = (fb: WebGLFramebuffer, attachment: number, integer: boolean): Uint32Array | Float32Array => {
+      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, fb);
+      gl.readBuffer(gl.COLOR_ATTACHMENT0 + attachment);
+      const out = integer ? new Uint32Array(W * H * 4) : new Float32Array(W * H * 4);
+      gl.readPixels(x, glY, W, H, integer ? gl.RGBA_INTEGER : gl.RGBA, integer ? gl.UNSIGNED_INT : gl.FLOAT, out);
+      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
+      return out;
+    };
+    const ids = read(T.idFb, 0, true) as Uint32Array;
+    const aux = read(T.idFb, 1, true) as Uint32Array;
+    let slice: Float32Array;
+    if (T.surfaceFb) slice = read(T.surfaceFb, 0, false) as Float32Array;
+    else {
+      // Computed on the CPU: the same layout as a readback (4 per pixel, rows from the bottom).
+      slice = new Float32Array(W * H * 4);
+      const cpu = g.surface.cpu!;
+      for (let r = 0; r < H; r++) for (let i = 0; i < W; i++) slice[4 * (r * W + i)] = cpu[(glY + r) * T.width + x + i]!;
+    }
+    const n = W * H;
+    const out: IdBuffer = { width: W, height: H, upper: new Uint32Array(n), lower: new Uint32Array(n), classes: new Uint32Array(n), z: new Float32Array(n), slice: new Float32Array(n) };
+    const zBits = new Float32Array(1);
+    const zWord = new Uint32Array(zBits.buffer);
+    for (let r = 0; r < H; r++) {
+      const src = (H - 1 - r) * W;
+      for (let i = 0; i < W; i++) {
+        const s = 4 * (src + i), d = r * W + i;
+        out.upper[d] = ids[s]!;
+        out.lower[d] = ids[s + 1]!;
+        out.classes[d] = aux[s]!;
+        zWord[0] = aux[s + 1]!;
+        out.z[d] = zBits[0]!;
+        out.slice[d] = slice[s]!;
+      }
+    }
+    return out;
+  }
+
+  destroy(): void {
+    this.canvas.removeEventListener('webglcontextlost', this.lostHandler);
+    this.canvas.removeEventListener('webglcontextrestored', this.restoredHandler);
+    const g = this.gpu;
+    if (g) {
+      this.store.clear(this.gl);
+      g.surface.delete();
+      g.id.delete();
+      g.colour.delete();
+      g.present.delete();
+      g.targets.delete();
+      this.gl.deleteVertexArray(g.emptyVao);
+      if (g.style) this.gl.deleteTexture(g.style.texture);
+    }
+    this.gpu = null;
+  }
+}

@@ -1,0 +1,87 @@
+// The offscreen targets of a frame, sized to the canvas in device pixels:
+// - ids: RG32UI upper/lower face + RG32UI classes/surface z, with a float depth buffer (MRT);
+// - surface: R32F slicing surface z;
+// - colour: the accumulated (supersampled) colour.
+// Integer and float textures are sampled with texelFetch and NEAREST filtering (integer
+// textures read as zero with any other filter).
+
+export function texture2d(gl: WebGL2RenderingContext, internal: number, w: number, h: number): WebGLTexture {
+  const t = gl.createTexture();
+  gl.bindTexture(gl.TEXTURE_2D, t);
+  gl.texStorage2D(gl.TEXTURE_2D, 1, internal, w, h);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
+  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+  gl.bindTexture(gl.TEXTURE_2D, null);
+  return t;
+}
+
+function framebuffer(gl: WebGL2RenderingContext, colours: WebGLTexture[], depth: WebGLRenderbuffer | null, name: string): WebGLFramebuffer {
+  const fb = gl.createFramebuffer();
+  gl.bindFramebuffer(gl.FRAMEBUFFER, fb);
+  colours.forEach((t, i) => gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0 + i, gl.TEXTURE_2D, t, 0));
+  if (depth) gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, depth);
+  gl.drawBuffers(colours.map((_, i) => gl.COLOR_ATTACHMENT0 + i));
+  const status = gl.checkFramebufferStatus(gl.FRAMEBUFFER);
+  gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+  if (status !== gl.FRAMEBUFFER_COMPLETE && !gl.isContextLost()) throw new Error(`${name} framebuffer incomplete (0x${status.toString(16)})`);
+  return fb;
+}
+
+export interface Caps {
+  /** R32F and RGBA16F/32F can be rendered to. */
+  floatTargets: boolean;
+}
+
+export class Targets {
+  width = 0;
+  height = 0;
+  ids!: WebGLTexture;
+  aux!: WebGLTexture;
+  depth!: WebGLRenderbuffer;
+  idFb!: WebGLFramebuffer;
+  surface!: WebGLTexture;
+  surfaceFb: WebGLFramebuffer | null = null;
+  colour!: WebGLTexture;
+  colourFb!: WebGLFramebuffer;
+  /** The colour target's format (to read it back). */
+  colourFloat = false;
+  private live = false;
+
+  constructor(
+    private readonly gl: WebGL2RenderingContext,
+    private readonly caps: Caps,
+  ) {}
+
+  resize(width: number, height: number): void {
+    if (this.live && width === this.width && height === this.height) return;
+    this.delete();
+    const gl = this.gl;
+    this.width = width;
+    this.height = height;
+    this.ids = texture2d(gl, gl.RG32UI, width, height);
+    this.aux = texture2d(gl, gl.RG32UI, width, height);
+    this.depth = gl.createRenderbuffer();
+    gl.bindRenderbuffer(gl.RENDERBUFFER, this.depth);
+    gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT32F, width, height);
+    gl.bindRenderbuffer(gl.RENDERBUFFER, null);
+    this.idFb = framebuffer(gl, [this.ids, this.aux], this.depth, 'id');
+    this.surface = texture2d(gl, gl.R32F, width, height);
+    // Without renderable float targets the surface is computed on the CPU and uploaded.
+    this.surfaceFb = this.caps.floatTargets ? framebuffer(gl, [this.surface], null, 'surface') : null;
+    this.colourFloat = this.caps.floatTargets;
+    this.colour = texture2d(gl, this.colourFloat ? gl.RGBA16F : gl.RGBA8, width, height);
+    this.colourFb = framebuffer(gl, [this.colour], null, 'colour');
+    this.live = true;
+  }
+
+  delete(): void {
+    if (!this.live) return;
+    const gl = this.gl;
+    for (const t of [this.ids, this.aux, this.surface, this.colour]) gl.deleteTexture(t);
+    gl.deleteRenderbuffer(this.depth);
+    for (const f of [this.idFb, this.surfaceFb, this.colourFb]) if (f) gl.deleteFramebuffer(f);
+    this.live = false;
+  }
+}

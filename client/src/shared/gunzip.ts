@@ -1,0 +1,26 @@
+// Bodies that are still gzip: a host that serves the precompressed copy of a file without a
+// Content-Encoding header hands the client the gzip bytes themselves. Decompressed with the
+// platform's DecompressionStream, or pako where that is missing (loaded only then).
+
+export function isGzip(bytes: ArrayBuffer): boolean {
+  if (bytes.byteLength < 2) return false;
+  const b = new Uint8Array(bytes, 0, 2);
+  return b[0] === 0x1f && b[1] === 0x8b;
+}
+
+/** The bytes, decompressed when they are gzip. */
+export async function gunzipIfNeeded(bytes: ArrayBuffer): Promise<ArrayBuffer> {
+  if (!isGzip(bytes)) return bytes;
+  if (typeof DecompressionStream === 'function') {
+    const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream('gzip'));
+    return await new Response(stream).arrayBuffer();
+  }
+  return gunzipWithPako(bytes);
+}
+
+export async function gunzipWithPako(bytes: ArrayBuffer): Promise<ArrayBuffer> {
+  const { ungzip } = await import('pako');
+  const out = ungzip(new Uint8Array(bytes));
+  // A view of exactly the output, so typed arrays over it start at offset 0.
+  return out.byteOffset === 0 && out.byteLength === out.buffer.byteLength ? (out.buffer as ArrayBuffer) : (out.slice().buffer as ArrayBuffer);
+}

@@ -1,0 +1,51 @@
+// One chunk from the network to GPU-ready arrays: fetch (with retries), gunzip when the body
+// is still gzip, decode and check it, and compare its SHA-256 with the index.
+import type { ChunkLeaf } from '../shared/cube-index.js';
+import { ChunkFormatError, decodeChunk } from '../shared/chunk-format.js';
+import { gunzipIfNeeded } from '../shared/gunzip.js';
+import { sha256Hex } from '../shared/sha256.js';
+import { keepUpwardTriangles } from '../shared/upward-triangles.js';
+import { fetchBytes, type RetryOptions } from './fetch-retry.js';
+import type { ChunkPayload } from './worker-protocol.js';
+
+export class ChunkCorrupt extends Error {
+  constructor(message: string) {
+    super(message);
+    this.name = 'ChunkCorrupt';
+  }
+}
+
+export async function fetchChunk(leaf: ChunkLeaf, url: string, retry: RetryOptions, signal: AbortSignal): Promise<ChunkPayload> {
+  const raw = await fetchBytes(url, retry, signal);
+  let bytes: ArrayBuffer;
+  try {
+    bytes = await gunzipIfNeeded(raw);
+  } catch (err) {
+    throw new ChunkCorrupt(`${leaf.file}: bad gzip body (${(err as Error).message})`);
+  }
+  let chunk;
+  try {
+    chunk = decodeChunk(bytes, leaf.file);
+  } catch (err) {
+    if (err instanceof ChunkFormatError) throw new ChunkCorrupt(err.message);
+    throw err;
+  }
+  const hash = await sha256Hex(bytes);
+  if (hash !== null && hash !== leaf.sha256) throw new ChunkCorrupt(`${leaf.file}: SHA-256 ${hash} does not match the index (${leaf.sha256})`);
+  // After the hash check: this rewrites the index section in place.
+  const triangleCount = keepUpwardTriangles(chunk.positions, chunk.indices);
+  return {
+    file: leaf.file,
+    bbox: leaf.bbox,
+    buffer: chunk.positions.buffer as ArrayBuffer,
+    vertexCount: chunk.vertexCount,
+    triangleCount,
+    originX: chunk.originX,
+    originY: chunk.originY,
+    vertexByteOffset: chunk.vertexByteOffset,
+    vertexByteLength: chunk.vertexByteLength,
+    indexByteOffset: chunk.indices.byteOffset,
+    indexSize: chunk.indices.BYTES_PER_ELEMENT as 2 | 4,
+    verified: hash !== null,
+  };
+}

@@ -1,0 +1,115 @@
+// The map's side of the chunk worker: starts it, forwards views and GPU notices, mirrors every
+// chunk's status, and turns the worker's messages into events.
+import type { CubeMeta } from '../shared/cube-index.js';
+import { Evented } from '../events.js';
+import type { ChunkPayload, ChunkStatus, FeatureInfo, FromWorker, SourceErrorInfo, SourceOptions, ToWorker, ViewRequest } from './worker-protocol.js';
+
+export interface NeededChunks {
+  seq: number;
+  visible: string[];
+  margin: string[];
+  indexComplete: boolean;
+  queryMs: number;
+}
+
+export interface ChunkSourceEvents {
+  meta: CubeMeta;
+  chunk: ChunkPayload;
+  needed: NeededChunks;
+  status: { file: string; status: ChunkStatus };
+  error: SourceErrorInfo;
+}
+
+export const defaultSourceOptions: SourceOptions = { concurrency: 6, retries: 5, backoffMs: 250, maxBackoffMs: 4000 };
+
+export class ChunkSource extends Evented<ChunkSourceEvents> {
+  readonly url: string;
+  private readonly worker: Worker;
+  private readonly statuses = new Map<string, ChunkStatus>();
+  private readonly featureRequests = new Map<number, { resolve: (f: (FeatureInfo | null)[]) => void; reject: (e: Error) => void }>();
+  private nextFeatureRequest = 1;
+  meta: CubeMeta | null = null;
+
+  constructor(url: string, options: Partial<SourceOptions> = {}) {
+    super();
+    // The index URL: a cube directory (ending in /) means its index.json.
+    this.url = new URL(url.endsWith('/') ? `${url}index.json` : url, location.href).href;
+    this.worker = new Worker(new URL('./chunk-worker.ts', import.meta.url), { type: 'module', name: 'ssc-chunks' });
+    this.worker.addEventListener('message', (ev: MessageEvent<FromWorker>) => this.receive(ev.data));
+    this.worker.addEventListener('error', (ev) => this.fire('error', { kind: 'index', message: `chunk worker failed: ${ev.message}`, url: this.url }));
+    this.send({ type: 'init', url: this.url, options: { ...defaultSourceOptions, ...options } });
+  }
+
+  setView(view: ViewRequest): void {
+    this.send({ type: 'view', view });
+  }
+
+  /** The chunk went to the GPU. */
+  uploaded(file: string): void {
+    this.statuses.set(file, 'gpu');
+    this.send({ type: 'uploaded', file });
+  }
+
+  /** The chunks left the GPU (budget, or a lost context): fetched again when needed. */
+  evicted(files: string[]): void {
+    if (files.length === 0) return;
+    for (const f of files) this.statuses.set(f, 'evicted');
+    this.send({ type: 'evicted', files });
+  }
+
+  status(file: string): ChunkStatus {
+    return this.statuses.get(file) ?? 'not-requested';
+  }
+
+  allStatuses(): Map<string, ChunkStatus> {
+    return new Map(this.statuses);
+  }
+
+  features(faces: number[]): Promise<(FeatureInfo | null)[]> {
+    const id = this.nextFeatureRequest++;
+    return new Promise((resolve, reject) => {
+      this.featureRequests.set(id, { resolve, reject });
+      this.send({ type: 'features', id, faces });
+    });
+  }
+
+  destroy(): void {
+    this.worker.terminate();
+    for (const r of this.featureRequests.values()) r.reject(new Error('the map was removed'));
+    this.featureRequests.clear();
+  }
+
+  private send(msg: ToWorker): void {
+    this.worker.postMessage(msg);
+  }
+
+  private receive(msg: FromWorker): void {
+    switch (msg.type) {
+      case 'meta':
+        this.meta = msg.meta;
+        this.fire('meta', msg.meta);
+        break;
+      case 'needed':
+        this.fire('needed', msg);
+        break;
+      case 'status':
+        this.statuses.set(msg.file, msg.status);
+        this.fire('status', { file: msg.file, status: msg.status });
+        break;
+      case 'chunk':
+        this.statuses.set(msg.chunk.file, 'received');
+        this.fire('chunk', msg.chunk);
+        break;
+      case 'error':
+        this.fire('error', msg.error);
+        break;
+      case 'features': {
+        const r = this.featureRequests.get(msg.id);
+        this.featureRequests.delete(msg.id);
+        if (msg.error !== undefined) r?.reject(new Error(msg.error));
+        else r?.resolve(msg.features);
+        break;
+      }
+    }
+  }
+}

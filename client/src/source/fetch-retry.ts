@@ -1,0 +1,77 @@
+// fetch with retries: server errors (5xx) and network failures are retried with exponential
+// backoff, since they are usually passing; client errors (4xx) are not, they will not change.
+import { gunzipIfNeeded } from '../shared/gunzip.js';
+
+export interface RetryOptions {
+  /** Retries after the first attempt. */
+  retries: number;
+  /** Wait before the first retry; doubled for each next one. */
+  backoffMs: number;
+  maxBackoffMs: number;
+}
+
+export type FetchFailureKind = 'http' | 'network' | 'abort';
+
+export class FetchFailure extends Error {
+  constructor(
+    message: string,
+    readonly kind: FetchFailureKind,
+    readonly url: string,
+    readonly status?: number,
+    readonly attempts = 1,
+  ) {
+    super(message);
+    this.name = 'FetchFailure';
+  }
+}
+
+function sleep(ms: number, signal?: AbortSignal): Promise<void> {
+  return new Promise((resolve, reject) => {
+    if (signal?.aborted) return reject(new FetchFailure('aborted', 'abort', ''));
+    const t = setTimeout(() => {
+      signal?.removeEventListener('abort', onAbort);
+      resolve();
+    }, ms);
+    const onAbort = (): void => {
+      clearTimeout(t);
+      reject(new FetchFailure('aborted', 'abort', ''));
+    };
+    signal?.addEventListener('abort', onAbort, { once: true });
+  });
+}
+
+const isAbort = (err: unknown): boolean => err instanceof Error && err.name === 'AbortError';
+
+/** The body of `url` as bytes; throws FetchFailure. */
+export async function fetchBytes(url: string, opts: RetryOptions, signal?: AbortSignal): Promise<ArrayBuffer> {
+  let attempt = 0;
+  for (;;) {
+    attempt++;
+    let failure: FetchFailure;
+    try {
+      const res = await fetch(url, signal ? { signal } : {});
+      if (res.ok) return await res.arrayBuffer();
+      // Drain nothing: the body of an error is not needed; cancel it to free the connection.
+      void res.body?.cancel().catch(() => undefined);
+      failure = new FetchFailure(`HTTP ${res.status} for ${url}`, 'http', url, res.status, attempt);
+      if (res.status < 500) throw failure;
+    } catch (err) {
+      if (err instanceof FetchFailure) throw err;
+      if (isAbort(err) || signal?.aborted) throw new FetchFailure('aborted', 'abort', url, undefined, attempt);
+      failure = new FetchFailure(`network error for ${url}: ${(err as Error).message}`, 'network', url, undefined, attempt);
+    }
+    if (attempt > opts.retries) throw failure;
+    const wait = Math.min(opts.maxBackoffMs, opts.backoffMs * 2 ** (attempt - 1));
+    try {
+      await sleep(wait, signal);
+    } catch {
+      throw new FetchFailure('aborted', 'abort', url, undefined, attempt);
+    }
+  }
+}
+
+/** The body of `url` as JSON (a body that is not JSON is not retried). */
+export async function fetchJson(url: string, opts: RetryOptions, signal?: AbortSignal): Promise<unknown> {
+  const bytes = await gunzipIfNeeded(await fetchBytes(url, opts, signal));
+  return JSON.parse(new TextDecoder().decode(bytes)) as unknown;
+}

@@ -1,0 +1,47 @@
+// The cube's R-tree in the worker: the root from index.json, sub-index files fetched the first
+// time a query reaches them (once each, however many queries ask meanwhile).
+import { parseIndex, parseSubIndex, type CubeIndex, type InnerNode } from '../shared/cube-index.js';
+import { queryIndex, type QueryBox, type QueryResult } from '../shared/index-query.js';
+import { fetchJson, type RetryOptions } from './fetch-retry.js';
+
+export class IndexTree {
+  private readonly subs = new Map<string, InnerNode>();
+  private readonly loading = new Map<string, Promise<void>>();
+
+  private constructor(
+    readonly index: CubeIndex,
+    private readonly baseUrl: string,
+    private readonly retry: RetryOptions,
+  ) {}
+
+  static async load(indexUrl: string, retry: RetryOptions): Promise<IndexTree> {
+    const json = await fetchJson(indexUrl, retry);
+    return new IndexTree(parseIndex(json), new URL('.', indexUrl).href, retry);
+  }
+
+  url(file: string): string {
+    return new URL(file, this.baseUrl).href;
+  }
+
+  query(q: QueryBox): QueryResult {
+    return queryIndex(this.index.root, q, (ref) => this.subs.get(ref));
+  }
+
+  /** Loads the sub-index files (those not loaded or loading yet); resolves when all are in. */
+  loadSubs(refs: string[]): Promise<void> {
+    return Promise.all(
+      refs.map((ref) => {
+        let p = this.loading.get(ref);
+        if (!p) {
+          p = fetchJson(this.url(ref), this.retry).then((json) => {
+            this.subs.set(ref, parseSubIndex(json, ref));
+          });
+          // A failed load may be retried by a later query.
+          p.catch(() => this.loading.delete(ref));
+          this.loading.set(ref, p);
+        }
+        return p;
+      }),
+    ).then(() => undefined);
+  }
+}

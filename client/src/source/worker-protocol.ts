@@ -1,0 +1,88 @@
+// Messages between the map (main thread) and the chunk worker.
+import type { Box3, CubeMeta } from '../shared/cube-index.js';
+
+/** not-requested -> requested -> received -> gpu -> evicted (-> requested ...); failed: corrupt or gave up. */
+export type ChunkStatus = 'not-requested' | 'requested' | 'received' | 'gpu' | 'evicted' | 'failed';
+
+export interface SourceOptions {
+  /** Chunk requests in flight at once. */
+  concurrency: number;
+  retries: number;
+  backoffMs: number;
+  maxBackoffMs: number;
+}
+
+export interface ViewRequest {
+  seq: number;
+  /** The ground box on screen and the box with the prefetch margin. */
+  visible: [number, number, number, number];
+  margin: [number, number, number, number];
+  /** The z range of the slicing surface over the margin box. */
+  zMin: number;
+  zMax: number;
+  /** View centre and base z, to fetch the nearest chunks first. */
+  centerX: number;
+  centerY: number;
+  z: number;
+}
+
+export type ToWorker =
+  | { type: 'init'; url: string; options: SourceOptions }
+  | { type: 'view'; view: ViewRequest }
+  | { type: 'uploaded'; file: string }
+  | { type: 'evicted'; files: string[] }
+  | { type: 'features'; id: number; faces: number[] };
+
+export interface SourceErrorInfo {
+  kind: 'http' | 'network' | 'corrupt' | 'index';
+  message: string;
+  url: string;
+  status?: number;
+  /** The chunk file, when a chunk failed. */
+  file?: string;
+}
+
+/** A decoded chunk as transferred: views over one buffer (moved, not copied). */
+export interface ChunkPayload {
+  file: string;
+  /** The index leaf's box (z1: the top of its relevance). */
+  bbox: Box3;
+  buffer: ArrayBuffer;
+  vertexCount: number;
+  triangleCount: number;
+  originX: number;
+  originY: number;
+  vertexByteOffset: number;
+  vertexByteLength: number;
+  indexByteOffset: number;
+  indexSize: 2 | 4;
+  /** False when crypto.subtle was unavailable (not a secure context) to check the hash. */
+  verified: boolean;
+}
+
+export interface FeatureInfo {
+  face: number;
+  classIndex: number;
+  feature: number;
+  stepLow: number;
+  stepHigh: number;
+  mergedInto: number;
+  properties: Record<string, unknown> | null;
+}
+
+export type FromWorker =
+  | { type: 'meta'; meta: CubeMeta }
+  | {
+      type: 'needed';
+      seq: number;
+      visible: string[];
+      margin: string[];
+      /** False while sub-index files the view reaches are still loading. */
+      indexComplete: boolean;
+      queryMs: number;
+      visited: number;
+    }
+  | { type: 'status'; file: string; status: ChunkStatus }
+  | { type: 'chunk'; chunk: ChunkPayload }
+  | { type: 'error'; error: SourceErrorInfo }
+  | { type: 'features'; id: number; features: (FeatureInfo | null)[]; error?: string };

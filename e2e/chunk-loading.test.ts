@@ -1,0 +1,390 @@
+// Chunk loading in the worker against a server that misbehaves on purpose: every chunk fetched
+// once while it stays needed, the nearest first; requests for a view left behind aborted; a
+// small GPU memory budget evicts and later fetches again; 30% failing requests still give a
+// complete map; a 404 and corrupt chunks are reported as errors; sub-index files load on
+// demand; gzip bodies without Content-Encoding are read. The cube is a real one of
+// bgt_otterlo_400m in small chunks (about 60) with sub-index files.
+import assert from 'node:assert/strict';
+import { request } from 'node:http';
+import { after, afterEach, before, describe, test } from 'node:test';
+import type { Browser } from 'playwright-core';
+import type { ChunkLeaf, ExternalNode, InnerNode } from '../client/src/shared/cube-index.js';
+import { boxMeets } from '../client/src/shared/index-query.js';
+import { fitBbox, growBbox, viewBbox, type Bbox } from '../client/src/shared/view.js';
+import { openMap, type MapPage } from './helpers/browser.js';
+import { compareIds, cpuSlice, type BuiltCube, type CubeContents } from './helpers/cube.js';
+import { checkAndClose, setUpTestBed, tearDownTestBed } from './helpers/test-bed.js';
+import { readIds, waitIdle } from './helpers/map-page.js';
+import type { LoggedRequest, TestServer } from './helpers/test-server.js';
+
+const W = 640, H = 480;
+const MARGIN = 0.25; // the map's default prefetch margin
+
+describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
+  let cube: BuiltCube;
+  let contents: CubeContents;
+  let server: TestServer;
+  let browser: Browser;
+  let mp: MapPage | null = null;
+  let logStart = 0;
+
+  before(async () => {
+    ({ cube, contents, server, browser } = await setUpTestBed(['--chunk-bytes', '16384', '--sub-index-bytes', '3000']));
+    assert.ok(contents.leaves.length >= 30, `${contents.leaves.length} chunks`);
+    assert.ok(contents.subIndexFiles.length >= 2, `${contents.subIndexFiles.length} sub-index files`);
+  });
+
+  afterEach(async () => {
+    await checkAndClose(mp);
+    mp = null;
+    Object.assign(server.faults, { chunkFailRate: 0, notFound: new Set(), unavailable: new Set(), delayMs: () => 0, corrupt: new Map(), gzipWithoutEncoding: false });
+  });
+
+  after(async () => {
+    await tearDownTestBed({ cube, server, browser });
+  });
+
+  const ext = (): Bbox => contents.meta.extent;
+  /** A box of `w` by `h` metres with its lower left corner at (fx, fy) of the extent. */
+  const box = (fx: number, fy: number, w: number, h: number): Bbox => {
+    const [x0, y0, x1, y1] = ext();
+    const x = x0 + fx * (x1 - x0), y = y0 + fy * (y1 - y0);
+    return [x, y, x + w, y + h];
+  };
+  /** Views of 70 x 52 m over the extent, row by row from the south west. */
+  const candidates = (): Bbox[] => {
+    const out: Bbox[] = [];
+    for (let fy = 0.02; fy < 0.85; fy += 0.06) for (let fx = 0.02; fx < 0.8; fx += 0.06) out.push(box(fx, fy, 70, 52));
+    return out;
+  };
+  /**
+   * The first pair of candidate views with the property a test needs (the chunking is the
+   * build's to choose, so the tests look for suitable places rather than assume them).
+   */
+  const pickPair = (ok: (a: Bbox, b: Bbox) => boolean, second: (a: Bbox) => Bbox[] = () => candidates()): [Bbox, Bbox] => {
+    for (const a of candidates()) for (const b of second(a)) if (ok(a, b)) return [a, b];
+    throw new Error('no pair of views with the property this test needs (is the cube in small chunks?)');
+  };
+  const files = (ls: ChunkLeaf[]): Set<string> => new Set(ls.map((l) => l.file));
+  /** Chunks on screen in view b that view a did not need at all. */
+  const fresh = (a: Bbox, b: Bbox, z: number): ChunkLeaf[] => needed(b, z).visible.filter((l) => !files(needed(a, z).all).has(l.file));
+  /** The chunks a view of `bbox` at z needs on screen and with the prefetch margin. */
+  const needed = (bbox: Bbox, z: number): { visible: ChunkLeaf[]; all: ChunkLeaf[] } => {
+    const v = viewBbox(fitBbox(bbox, W, H));
+    const m = growBbox(v, MARGIN);
+    return {
+      visible: contents.leaves.filter((l) => boxMeets(l.bbox, { ground: v, zMin: z, zMax: z })),
+      all: contents.leaves.filter((l) => boxMeets(l.bbox, { ground: m, zMin: z, zMax: z })),
+    };
+  };
+  /** The sub-index files a query reaches (their node's box meets it). */
+  const reachedRefs = (ground: Bbox, z: number): string[] => {
+    const out: string[] = [];
+    const walk = (n: InnerNode | ExternalNode | ChunkLeaf): void => {
+      if (!boxMeets(n.bbox, { ground, zMin: z, zMax: z })) return;
+      if ('ref' in n) {
+        out.push(n.ref);
+        walk(contents.subs.get(n.ref)!);
+      } else if ('children' in n) n.children.forEach(walk);
+    };
+    walk(contents.root);
+    return out;
+  };
+  const chunkRequests = (): LoggedRequest[] => server.log.slice(logStart).filter((e) => /^\/cube\/c-/.test(e.path));
+  const fileOf = (e: LoggedRequest): string => e.path.slice('/cube/'.length);
+  const countBy = (rs: LoggedRequest[]): Map<string, number> => {
+    const m = new Map<string, number>();
+    for (const r of rs) m.set(fileOf(r), (m.get(fileOf(r)) ?? 0) + 1);
+    return m;
+  };
+
+  async function open(bbox: Bbox, z: number, extra: Record<string, string | number> = {}): Promise<MapPage> {
+    logStart = server.log.length;
+    mp = await openMap(browser, server.url, { source: 'cube/', bbox: bbox.join(','), z, supersampling: 1, ...extra });
+    return mp;
+  }
+
+  async function goTo(p: MapPage, bbox: Bbox, z: number): Promise<void> {
+    await p.page.evaluate(([b, zz]) => map.fitBounds(b, { z: zz }), [bbox, z] as const);
+  }
+
+  async function assertMatchesSlicer(p: MapPage, bbox: Bbox, z: number, label: string): Promise<void> {
+    const gpu = await readIds(p.page);
+    const ref = await cpuSlice(cube.dir, { step: z, width: W, height: H, bbox });
+    const c = compareIds(gpu.upper, ref, W, H);
+    // Face boundaries only here; slice-accuracy.test.ts covers the sub-pixel cases.
+    assert.ok(c.share >= 0.995, `${label}: ${(100 * c.share).toFixed(3)}% equal to the CPU slicer; ${c.examples.join('; ')}`);
+  }
+
+  test('each chunk is fetched once while it stays needed, and the map is complete', async () => {
+    const z = 30;
+    // Five pans of 12 m east, somewhere the views reach only some of the sub-index files.
+    const pans = (a: Bbox): Bbox[] => [0, 1, 2, 3, 4].map((k) => [a[0] + 12 * k, a[1], a[2] + 12 * k, a[3]] as Bbox);
+    const reachedBy = (vs: Bbox[]): Set<string> => new Set(vs.flatMap((v) => reachedRefs(growBbox(viewBbox(fitBbox(v, W, H)), MARGIN), z)));
+    const [first] = pickPair((a) => reachedBy(pans(a)).size < contents.subIndexFiles.length && needed(a, z).visible.length >= 3, (a) => [a]);
+    const views = pans(first);
+    const p = await open(views[0]!, z);
+    assert.equal(await waitIdle(p.page), true);
+    for (const v of views.slice(1)) {
+      await goTo(p, v, z);
+      assert.equal(await waitIdle(p.page), true);
+    }
+    const counts = countBy(chunkRequests());
+    const twice = [...counts].filter(([, n]) => n > 1);
+    assert.deepEqual(twice, [], 'no chunk requested twice');
+    const union = new Set(views.flatMap((v) => needed(v, z).all.map((l) => l.file)));
+    const visible = new Set(views.flatMap((v) => needed(v, z).visible.map((l) => l.file)));
+    for (const f of counts.keys()) assert.ok(union.has(f), `${f} was fetched but no view needed it`);
+    for (const f of visible) assert.ok(counts.has(f), `${f} was on screen but never fetched`);
+    assert.ok(visible.size >= 3 && visible.size < contents.leaves.length / 2, `${visible.size} chunks on screen: a zoomed-in view`);
+    const statuses = await p.page.evaluate(() => [...map.chunkStatuses()]);
+    const last = needed(views[views.length - 1]!, z).visible;
+    for (const l of last) assert.equal(new Map(statuses).get(l.file), 'gpu', `${l.file} is on the GPU`);
+    // Sub-index files: exactly those the views reach, each once.
+    const subs = countBy(server.log.slice(logStart).filter((e) => /^\/cube\/i-/.test(e.path)));
+    const reached = reachedBy(views);
+    assert.ok(reached.size >= 1 && reached.size < contents.subIndexFiles.length, `the views reach ${reached.size} of ${contents.subIndexFiles.length} sub-index files`);
+    assert.deepEqual(new Set(subs.keys()), reached);
+    for (const [f, n] of subs) assert.equal(n, 1, `${f} fetched ${n} times`);
+    await assertMatchesSlicer(p, views[views.length - 1]!, z, 'after the pans');
+  });
+
+  test('chunks on screen and nearest the view centre are fetched first', async () => {
+    const bbox = box(0.35, 0.3, 120, 90);
+    const z = 60;
+    const p = await open(bbox, z, { concurrency: 1 });
+    assert.equal(await waitIdle(p.page), true);
+    const v = fitBbox(bbox, W, H);
+    const n = needed(bbox, z);
+    const onScreen = new Set(n.visible.map((l) => l.file));
+    const leafOf = new Map(contents.leaves.map((l) => [l.file, l]));
+    // One request at a time, so the server sees them in the order the map chose.
+    const order = chunkRequests().map(fileOf);
+    assert.ok(order.length >= 5);
+    // On screen first; then by the ground distance from the view centre to the chunk's box
+    // (every chunk needed meets the flat slice's z, so z does not order them).
+    const distance = (f: string): number => {
+      const b = leafOf.get(f)!.bbox;
+      return Math.hypot(Math.max(b[0] - v.centerX, 0, v.centerX - b[3]), Math.max(b[1] - v.centerY, 0, v.centerY - b[4]));
+    };
+    const rank = (f: string): [number, number] => [onScreen.has(f) ? 0 : 1, distance(f)];
+    for (let i = 1; i < order.length; i++) {
+      const a = rank(order[i - 1]!), b = rank(order[i]!);
+      assert.ok(a[0] < b[0] || (a[0] === b[0] && a[1] <= b[1] + 1e-12), `request ${i}: ${order[i - 1]} (${a}) before ${order[i]} (${b})`);
+    }
+  });
+
+  test('panning away aborts the requests for the view left behind', async () => {
+    server.faults.delayMs = (f) => (f.startsWith('c-') ? 1500 : 0);
+    const z = 30;
+    const only = (a: Bbox, b: Bbox): Set<string> => {
+      const out = files(needed(a, z).all);
+      for (const l of needed(b, z).all) out.delete(l.file);
+      return out;
+    };
+    const [west, east] = pickPair((a, b) => only(a, b).size >= 3 && needed(a, z).visible.length >= 3);
+    const westOnly = only(west, east);
+    const p = await open(west, z);
+    await p.page.waitForFunction(() => [...map.chunkStatuses().values()].filter((s) => s === 'requested').length >= 3);
+    await goTo(p, east, z);
+    assert.equal(await waitIdle(p.page), true, 'the new view is complete');
+    const west200 = chunkRequests().filter((e) => westOnly.has(fileOf(e)));
+    assert.ok(west200.length >= 3, `${west200.length} requests for the west view`);
+    for (const e of west200) assert.equal(e.outcome, 'aborted', `${e.path} was ${e.outcome}, not aborted`);
+    const statuses = new Map(await p.page.evaluate(() => [...map.chunkStatuses()]));
+    for (const f of westOnly) {
+      const s = statuses.get(f);
+      assert.ok(s === undefined || s === 'not-requested', `${f}: ${s}`);
+    }
+    await assertMatchesSlicer(p, east, z, 'east');
+  });
+
+  test('while chunks are in flight the map keeps drawing what it has', async () => {
+    const z = 30;
+    // A pan by half the view's width that needs chunks the first view did not fetch.
+    const [a, b] = pickPair((x, y) => fresh(x, y, z).length >= 1, (x) => [[x[0] + 35, x[1], x[2] + 35, x[3]]]);
+    const newOnes = fresh(a, b, z);
+    const p = await open(a, z);
+    assert.equal(await waitIdle(p.page), true);
+    server.faults.delayMs = (f) => (f.startsWith('c-') ? 2000 : 0);
+    await p.page.evaluate(() => {
+      (globalThis as unknown as { frames: number }).frames = 0;
+      map.on('render', () => (globalThis as unknown as { frames: number }).frames++);
+    });
+    await goTo(p, b, z);
+    await p.page.waitForFunction((files) => files.some((f) => map.chunkStatuses().get(f) === 'requested'), newOnes.map((l) => l.file));
+    const during = await readIds(p.page);
+    const inFlight = await p.page.evaluate((files) => files.filter((f) => map.chunkStatuses().get(f) === 'requested').length, newOnes.map((l) => l.file));
+    assert.ok(inFlight >= 1, 'still in flight while reading');
+    assert.equal(await p.page.evaluate(() => map.loaded()), false);
+    // The half of the new view the old chunks cover is drawn already.
+    let drawn = 0;
+    for (const v of during.upper) if (v !== 0) drawn++;
+    assert.ok(drawn > W * H * 0.3, `${drawn} pixels drawn while loading`);
+    assert.ok((await p.page.evaluate(() => (globalThis as unknown as { frames: number }).frames)) >= 1);
+    assert.equal(await waitIdle(p.page), true);
+    await assertMatchesSlicer(p, b, z, 'after loading');
+  });
+
+  test('a small GPU memory budget evicts the least recently used chunks and fetches them again', async () => {
+    const z = 30;
+    const bytes = (ls: ChunkLeaf[]): number => ls.reduce((s, l) => s + l.bytes, 0);
+    // Room for either view with its margin, never for both.
+    const budgetFor = (x: Bbox, y: Bbox): number => Math.max(bytes(needed(x, z).all), bytes(needed(y, z).all)) * 1.05;
+    const onlyA = (x: Bbox, y: Bbox): ChunkLeaf[] => needed(x, z).visible.filter((l) => !files(needed(y, z).all).has(l.file));
+    const [a, b] = pickPair((x, y) => onlyA(x, y).length >= 2 && bytes(needed(x, z).all) + bytes(needed(y, z).all) > 1.3 * budgetFor(x, y));
+    const nb = needed(b, z);
+    const budget = budgetFor(a, b);
+    const aOnly = onlyA(a, b);
+    const p = await open(a, z, { budget: Math.round(budget) });
+    assert.equal(await waitIdle(p.page), true);
+    const idsA = await readIds(p.page);
+    await goTo(p, b, z);
+    assert.equal(await waitIdle(p.page), true);
+    // Margin chunks may still be arriving; wait until all of b's are in.
+    await p.page.waitForFunction((files) => files.every((f) => map.chunkStatuses().get(f) === 'gpu'), nb.all.map((l) => l.file));
+    const stats = await p.page.evaluate(() => map.stats());
+    assert.ok(stats.gpuBytes <= budget, `${stats.gpuBytes} bytes on the GPU, budget ${budget}`);
+    const statuses = new Map(await p.page.evaluate(() => [...map.chunkStatuses()]));
+    const evicted = aOnly.filter((l) => statuses.get(l.file) === 'evicted');
+    assert.ok(evicted.length >= 1, `none of ${aOnly.length} chunks only a needed was evicted: ${aOnly.map((l) => statuses.get(l.file))}`);
+    await goTo(p, a, z);
+    assert.equal(await waitIdle(p.page), true);
+    const counts = countBy(chunkRequests());
+    for (const l of evicted) assert.equal(counts.get(l.file), 2, `${l.file} fetched again after eviction`);
+    const idsA2 = await readIds(p.page);
+    assert.deepEqual(idsA2.upper, idsA.upper, 'the same map as before');
+  });
+
+  test('with 30% of chunk requests failing, retries still give a complete map', async () => {
+    server.faults.chunkFailRate = 0.3;
+    server.faults.seed = 7;
+    const z = 120;
+    const p = await open(ext(), z, { retries: 12, backoff: 10 });
+    // Chromium reports each failed request on the console; those are the injected faults.
+    p.expect(/Failed to load resource: the server responded with a status of 503/);
+    p.expect(/Failed to load resource: net::ERR_(EMPTY_RESPONSE|CONNECTION_(RESET|CLOSED))/);
+    assert.equal(await waitIdle(p.page), true, 'complete');
+    const rs = chunkRequests();
+    const failures = rs.filter((e) => e.outcome === 503 || e.outcome === 'network');
+    assert.ok(failures.length >= 0.15 * rs.length, `${failures.length} of ${rs.length} requests failed`);
+    const ok = countBy(rs.filter((e) => e.outcome === 200));
+    for (const l of needed(ext(), z).visible) assert.equal(ok.get(l.file), 1, `${l.file} answered once`);
+    await assertMatchesSlicer(p, ext(), z, 'despite failures');
+  });
+
+  test('a chunk that is not found gives an error event and is not asked for again', async () => {
+    const z = 40;
+    const [start, target] = pickPair((x, y) => fresh(x, y, z).length >= 2);
+    const missing = needed(target, z).visible.find((l) => !needed(start, z).all.some((m) => m.file === l.file))!;
+    assert.ok(missing);
+    server.faults.notFound.add(missing.file);
+    const p = await open(start, z, { retries: 3, backoff: 10 });
+    p.expect(/Failed to load resource: the server responded with a status of 404/);
+    assert.equal(await waitIdle(p.page), true);
+    await p.page.evaluate(() => {
+      const errors: unknown[] = [];
+      (globalThis as unknown as { errors: unknown[] }).errors = errors;
+      map.on('error', (e) => errors.push(e));
+    });
+    await goTo(p, target, z);
+    assert.equal(await waitIdle(p.page), false, 'idle, but not complete');
+    const errors = await p.page.evaluate(() => (globalThis as unknown as { errors: { kind: string; status?: number; file?: string }[] }).errors);
+    assert.deepEqual(errors.map((e) => [e.kind, e.status, e.file]), [['http', 404, missing.file]]);
+    assert.equal(countBy(chunkRequests()).get(missing.file), 1, '4xx is not retried');
+    const status = await p.page.evaluate((f) => map.chunkStatuses().get(f), missing.file);
+    assert.equal(status, 'failed');
+  });
+
+  test('a chunk that keeps failing with 503 is retried, then reported', async () => {
+    const z = 40;
+    const [start, target] = pickPair((x, y) => fresh(x, y, z).length >= 2);
+    const down = needed(target, z).visible.find((l) => !needed(start, z).all.some((m) => m.file === l.file))!;
+    server.faults.unavailable.add(down.file);
+    const p = await open(start, z, { retries: 3, backoff: 10 });
+    p.expect(/Failed to load resource: the server responded with a status of 503/);
+    assert.equal(await waitIdle(p.page), true);
+    await p.page.evaluate(() => {
+      const errors: unknown[] = [];
+      (globalThis as unknown as { errors: unknown[] }).errors = errors;
+      map.on('error', (e) => errors.push(e));
+    });
+    await goTo(p, target, z);
+    assert.equal(await waitIdle(p.page), false);
+    const errors = await p.page.evaluate(() => (globalThis as unknown as { errors: { kind: string; status?: number; file?: string }[] }).errors);
+    assert.deepEqual(errors.map((e) => [e.kind, e.status, e.file]), [['http', 503, down.file]]);
+    assert.equal(countBy(chunkRequests()).get(down.file), 4, 'the first attempt and 3 retries');
+  });
+
+  test('a missing index gives an error event', async () => {
+    logStart = server.log.length;
+    mp = await openMap(browser, server.url, { source: 'no-such-cube/' });
+    mp.expect(/Failed to load resource: the server responded with a status of 404/);
+    await mp.page.waitForFunction("document.getElementById('info').textContent !== ''");
+    const text = (await mp.page.textContent('#info')) ?? '';
+    assert.match(text, /^http error: HTTP 404 for http:\/\/127\.0\.0\.1:\d+\/no-such-cube\/index\.json/);
+    assert.equal(server.log.slice(logStart).filter((e) => e.path === '/no-such-cube/index.json').length, 1, 'a 404 is not retried');
+  });
+
+  test('corrupt chunks are reported and not drawn', async () => {
+    const z = 40;
+    const [start, target] = pickPair((x, y) => fresh(x, y, z).length >= 2);
+    const [badHash, badMagic] = needed(target, z).visible.filter((l) => !needed(start, z).all.some((m) => m.file === l.file));
+    assert.ok(badHash && badMagic);
+    server.faults.corrupt.set(badHash.file, (b) => {
+      const c = Buffer.from(b);
+      c[100] = c[100]! ^ 0xff; // inside the positions: only the hash can tell
+      return c;
+    });
+    server.faults.corrupt.set(badMagic.file, (b) => {
+      const c = Buffer.from(b);
+      c.writeUInt32LE(0x12345678, 0);
+      return c;
+    });
+    const p = await open(start, z);
+    assert.equal(await waitIdle(p.page), true);
+    await p.page.evaluate(() => {
+      const errors: unknown[] = [];
+      (globalThis as unknown as { errors: unknown[] }).errors = errors;
+      map.on('error', (e) => errors.push(e));
+    });
+    await goTo(p, target, z);
+    assert.equal(await waitIdle(p.page), false);
+    const errors = await p.page.evaluate(() => (globalThis as unknown as { errors: { kind: string; file?: string; message: string }[] }).errors);
+    const byFile = new Map(errors.map((e) => [e.file, e]));
+    assert.equal(byFile.get(badHash.file)?.kind, 'corrupt');
+    assert.match(byFile.get(badHash.file)!.message, /SHA-256/);
+    assert.equal(byFile.get(badMagic.file)?.kind, 'corrupt');
+    assert.match(byFile.get(badMagic.file)!.message, /magic/);
+    const statuses = new Map(await p.page.evaluate(() => [...map.chunkStatuses()]));
+    assert.equal(statuses.get(badHash.file), 'failed');
+    assert.equal(statuses.get(badMagic.file), 'failed');
+    const counts = countBy(chunkRequests());
+    assert.equal(counts.get(badHash.file), 1);
+    // The rest of the view is drawn.
+    for (const l of needed(target, z).visible) {
+      if (l !== badHash && l !== badMagic) assert.equal(statuses.get(l.file), 'gpu');
+    }
+  });
+
+  test('chunks served as gzip without Content-Encoding are decompressed', async () => {
+    server.faults.gzipWithoutEncoding = true;
+    const leaf = contents.leaves[0]!;
+    // What the browser will get: gzip bytes, no Content-Encoding.
+    const head = await new Promise<{ enc: string | undefined; magic: number }>((resolve, reject) => {
+      const req = request(`${server.cubeUrl}${leaf.file}`, { headers: { 'accept-encoding': 'identity' } }, (res) => {
+        const parts: Buffer[] = [];
+        res.on('data', (d: Buffer) => parts.push(d));
+        res.on('end', () => resolve({ enc: res.headers['content-encoding'], magic: Buffer.concat(parts).readUInt16BE(0) }));
+      });
+      req.on('error', reject);
+      req.end();
+    });
+    assert.equal(head.enc, undefined);
+    assert.equal(head.magic, 0x1f8b);
+    const bbox = box(0.3, 0.3, 120, 90);
+    const p = await open(bbox, 50);
+    assert.equal(await waitIdle(p.page), true);
+    await assertMatchesSlicer(p, bbox, 50, 'gzip bodies');
+  });
+});

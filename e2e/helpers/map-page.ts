@@ -1,0 +1,112 @@
+// Driving the demo page's map (window.map, a SliceMap) from the tests.
+import type { Page } from 'playwright-core';
+
+/** The part of SliceMap the tests use, as seen from the page (structural, no DOM types). */
+export interface MapApi {
+  whenIdle(): Promise<{ complete: boolean }>;
+  loaded(): boolean;
+  fitBounds(b: [number, number, number, number], o?: { z?: number | null }): unknown;
+  jumpTo(v: { center?: [number, number]; scaleDenominator?: number; z?: number | null }): unknown;
+  getView(): { centerX: number; centerY: number; resolution: number; width: number; height: number };
+  getZ(): number;
+  getScale(): number;
+  getSurface(): { base: number; spec: { kind: string } & Record<string, unknown> };
+  setSurface(s: string | object): unknown;
+  setBlending(b: object): unknown;
+  setBoundaries(b: object): unknown;
+  setSupersampling(n: number): unknown;
+  setGpuMemoryBudget(n: number): unknown;
+  readIds(): { width: number; height: number; upper: Uint32Array; lower: Uint32Array; classes: Uint32Array; z: Float32Array; slice: Float32Array } | null;
+  queryFeatures(p: [number, number]): Promise<unknown[]>;
+  chunkStatuses(): Map<string, string>;
+  neededChunks(): { visible: string[]; margin: string[] };
+  stats(): { frame: number; triangles: number; chunks: number; queryMs: number; gpuBytes: number };
+  cubeMeta: {
+    zMax: number;
+    extent: [number, number, number, number];
+    baseScale: number;
+    baseFaces: number;
+    scaleTable: [number, number][];
+    pixelSizeMm: number;
+    style: { background: string; classes: { key: string; label: string; color: string; pattern?: { kind: string; color: string; maxScale?: number; minScale?: number } }[] };
+  } | null;
+  on(type: string, fn: (ev: unknown) => void): unknown;
+  once(type: string): Promise<unknown>;
+  canvas: { getContext(t: string): unknown };
+}
+
+
+/** Waits until the map is idle (everything fetched and drawn); returns whether it is complete. */
+export async function waitIdle(page: Page): Promise<boolean> {
+  await page.waitForFunction(() => typeof map !== "undefined" && map.cubeMeta !== null);
+  // A map that never settles is a failure to report, not a test that hangs.
+  const limitMs = 120_000;
+  let timer: NodeJS.Timeout | undefined;
+  const timeout = new Promise<never>((_, reject) => {
+    timer = setTimeout(() => reject(new Error(`the map did not become idle within ${limitMs / 1000} s`)), limitMs);
+  });
+  try {
+    return await Promise.race([page.evaluate(async () => (await map.whenIdle()).complete), timeout]);
+  } finally {
+    clearTimeout(timer);
+  }
+}
+
+export interface PageIds {
+  width: number;
+  height: number;
+  upper: Uint32Array;
+  lower: Uint32Array;
+  /** upper class | lower class << 16 */
+  classes: Uint32Array;
+  z: Float32Array;
+  slice: Float32Array;
+}
+
+/** The map's ID buffer (upper and lower face, surface z and slice z per pixel). */
+export async function readIds(page: Page): Promise<PageIds> {
+  const r = await page.evaluate(() => {
+    const ids = map.readIds();
+    if (!ids) return null;
+    const b64 = (a: ArrayBufferView): string => {
+      const u8 = new Uint8Array(a.buffer, a.byteOffset, a.byteLength);
+      let s = '';
+      for (let i = 0; i < u8.length; i += 0x8000) s += String.fromCharCode(...u8.subarray(i, i + 0x8000));
+      return btoa(s);
+    };
+    return { width: ids.width, height: ids.height, upper: b64(ids.upper), lower: b64(ids.lower), classes: b64(ids.classes), z: b64(ids.z), slice: b64(ids.slice) };
+  });
+  if (!r) throw new Error('the map has no ID buffer (no WebGL2, or not drawn yet)');
+  const u32 = (s: string): Uint32Array => {
+    const b = Buffer.from(s, 'base64');
+    return new Uint32Array(b.buffer, b.byteOffset, b.byteLength / 4).slice();
+  };
+  const f32 = (s: string): Float32Array => {
+    const b = Buffer.from(s, 'base64');
+    return new Float32Array(b.buffer, b.byteOffset, b.byteLength / 4).slice();
+  };
+  return { width: r.width, height: r.height, upper: u32(r.upper), lower: u32(r.lower), classes: u32(r.classes), z: f32(r.z), slice: f32(r.slice) };
+}
+
+export interface Rgba {
+  width: number;
+  height: number;
+  data: Uint8Array;
+}
+
+/** What the user sees: a screenshot of the page as RGBA pixels. */
+export async function screenshot(page: Page): Promise<Rgba> {
+  const { PNG } = await import('pngjs');
+  const png = PNG.sync.read(await page.screenshot({ type: 'png' }));
+  return { width: png.width, height: png.height, data: new Uint8Array(png.data.buffer, png.data.byteOffset, png.data.byteLength) };
+}
+
+export function pixel(img: Rgba, i: number, j: number): [number, number, number] {
+  const o = 4 * (j * img.width + i);
+  return [img.data[o]!, img.data[o + 1]!, img.data[o + 2]!];
+}
+
+export function hexColour(hex: string): [number, number, number] {
+  const n = parseInt(hex.slice(1), 16);
+  return [(n >> 16) & 255, (n >> 8) & 255, n & 255];
+}

@@ -1,0 +1,182 @@
+// The browser tests' server: one origin on 127.0.0.1 that serves the built client at / and a
+// cube directory at /cube/, both through the project's createStaticServer, with a fault
+// injecting proxy in front: failing or slow chunk requests, 404s, corrupt bodies, gzip bodies
+// without Content-Encoding. Every request is logged with what became of it (answered, failed,
+// or aborted by the browser). Responses are marked no-store so that a chunk fetched again
+// really reaches the server (the real server lets immutable chunks be cached forever).
+import { createServer, request as httpRequest, type IncomingMessage, type Server, type ServerResponse } from 'node:http';
+import type { AddressInfo } from 'node:net';
+import { createStaticServer, type StaticServer } from '../../server/static-server.js';
+
+export interface LoggedRequest {
+  path: string;
+  /** HTTP status sent, 'network' (socket destroyed on purpose) or 'aborted' (by the client). */
+  outcome: number | 'network' | 'aborted';
+  start: number;
+  end: number;
+}
+
+export interface Faults {
+  /** Share of chunk requests (c-*.bin) that fail, half with 503, half by a dropped connection. */
+  chunkFailRate: number;
+  /** Seed of the failure choices (deterministic per run). */
+  seed: number;
+  /** Paths (under /cube/, e.g. "c-abc.bin") answered with 404. */
+  notFound: Set<string>;
+  /** Paths answered with 503, every time. */
+  unavailable: Set<string>;
+  /** Delay before answering a cube request, ms (e.g. to abort it meanwhile). */
+  delayMs: (file: string) => number;
+  /** Cube files whose body is changed before it is sent. */
+  corrupt: Map<string, (body: Buffer) => Buffer>;
+  /** Chunks are sent as their .gz copy without a Content-Encoding header. */
+  gzipWithoutEncoding: boolean;
+}
+
+export interface TestServer {
+  url: string;
+  /** The cube's URL (a directory, ending in /). */
+  cubeUrl: string;
+  log: LoggedRequest[];
+  faults: Faults;
+  /** Requests for a cube file, e.g. requestsFor('c-') for all chunks. */
+  requestsFor(prefix: string): LoggedRequest[];
+  close(): Promise<void>;
+}
+
+function mulberry32(seed: number): () => number {
+  let a = seed >>> 0;
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
+const sleep = (ms: number): Promise<void> => new Promise((r) => setTimeout(r, ms));
+
+export async function startTestServer(opts: { clientDir: string; cubeDir: string }): Promise<TestServer> {
+  const errors: unknown[] = [];
+  const client: StaticServer = createStaticServer({ root: opts.clientDir, onError: (e) => errors.push(e) });
+  const cube: StaticServer = createStaticServer({ root: opts.cubeDir, onError: (e) => errors.push(e) });
+  const clientPort = (await client.listen(0, '127.0.0.1')).port;
+  const cubePort = (await cube.listen(0, '127.0.0.1')).port;
+  const log: LoggedRequest[] = [];
+  const faults: Faults = { chunkFailRate: 0, seed: 1, notFound: new Set(), unavailable: new Set(), delayMs: () => 0, corrupt: new Map(), gzipWithoutEncoding: false };
+  let random = mulberry32(faults.seed);
+  let seedUsed = faults.seed;
+
+  const forward = (req: IncomingMessage, res: ServerResponse, port: number, path: string, entry: LoggedRequest, transform?: (b: Buffer) => Buffer, identity = false): void => {
+    const headers = { ...req.headers, host: `127.0.0.1:${port}` };
+    // Revalidation would turn a refetch into a 304 the browser answers from its cache.
+    delete headers['if-none-match'];
+    delete headers['if-modified-since'];
+    if (identity || transform) headers['accept-encoding'] = 'identity';
+    const up = httpRequest({ host: '127.0.0.1', port, path, method: req.method, headers }, (upRes) => {
+      const h = { ...upRes.headers, 'cache-control': 'no-store' };
+      delete h.etag;
+      delete h['last-modified'];
+      if (transform && upRes.statusCode === 200) {
+        const parts: Buffer[] = [];
+        upRes.on('data', (d: Buffer) => parts.push(d));
+        upRes.on('end', () => {
+          const body = transform(Buffer.concat(parts));
+          h['content-length'] = String(body.length);
+          delete h['content-encoding'];
+          res.writeHead(200, h);
+          res.end(body);
+        });
+        return;
+      }
+      res.writeHead(upRes.statusCode ?? 502, h);
+      upRes.pipe(res);
+    });
+    up.on('error', () => res.destroy());
+    req.on('close', () => {
+      if (!res.writableFinished) up.destroy();
+    });
+    up.end();
+    res.on('finish', () => {
+      entry.outcome = res.statusCode;
+      entry.end = Date.now();
+    });
+  };
+
+  const front: Server = createServer((req, res) => {
+    const url = new URL(req.url ?? '/', 'http://127.0.0.1');
+    const entry: LoggedRequest = { path: url.pathname, outcome: 'aborted', start: Date.now(), end: 0 };
+    log.push(entry);
+    res.on('close', () => {
+      if (!res.writableFinished && entry.outcome === 'aborted') entry.end = Date.now();
+    });
+    if (!url.pathname.startsWith('/cube/')) {
+      forward(req, res, clientPort, url.pathname + url.search, entry);
+      return;
+    }
+    const file = url.pathname.slice('/cube/'.length);
+    void (async () => {
+      const delay = faults.delayMs(file);
+      if (delay > 0) await sleep(delay);
+      if (res.destroyed || req.destroyed) return; // the browser gave up meanwhile
+      if (faults.notFound.has(file)) {
+        entry.outcome = 404;
+        entry.end = Date.now();
+        res.writeHead(404, { 'content-type': 'text/plain', 'cache-control': 'no-store' });
+        res.end('404 not found\n');
+        return;
+      }
+      if (faults.unavailable.has(file)) {
+        entry.outcome = 503;
+        entry.end = Date.now();
+        res.writeHead(503, { 'content-type': 'text/plain', 'cache-control': 'no-store' });
+        res.end('503 try again\n');
+        return;
+      }
+      if (/^c-[0-9a-f]+\.bin$/.test(file) && faults.chunkFailRate > 0) {
+        if (seedUsed !== faults.seed) {
+          seedUsed = faults.seed;
+          random = mulberry32(faults.seed);
+        }
+        const r = random();
+        if (r < faults.chunkFailRate) {
+          if (r < faults.chunkFailRate / 2) {
+            entry.outcome = 503;
+            entry.end = Date.now();
+            res.writeHead(503, { 'content-type': 'text/plain', 'cache-control': 'no-store' });
+            res.end('503 try again\n');
+          } else {
+            entry.outcome = 'network';
+            entry.end = Date.now();
+            req.socket.destroy();
+          }
+          return;
+        }
+      }
+      const corrupt = faults.corrupt.get(file);
+      if (faults.gzipWithoutEncoding && /^c-[0-9a-f]+\.bin$/.test(file)) {
+        forward(req, res, cubePort, `/${file}.gz`, entry, (b) => b, true);
+      } else {
+        forward(req, res, cubePort, `/${file}${url.search}`, entry, corrupt);
+      }
+    })();
+  });
+  await new Promise<void>((resolve) => front.listen(0, '127.0.0.1', resolve));
+  const port = (front.address() as AddressInfo).port;
+  const url = `http://127.0.0.1:${port}/`;
+  return {
+    url,
+    cubeUrl: `${url}cube/`,
+    log,
+    faults,
+    requestsFor: (prefix) => log.filter((e) => e.path.startsWith(`/cube/${prefix}`)),
+    async close() {
+      front.closeAllConnections();
+      await new Promise<void>((resolve) => front.close(() => resolve()));
+      await client.close();
+      await cube.close();
+      if (errors.length > 0) throw new Error(`the static server reported: ${errors.map(String).join('; ')}`);
+    },
+  };
+}

@@ -1,0 +1,361 @@
+// What the user sees and picks, in real Chromium on a real cube of bgt_otterlo_400m: class
+// colours and patterns, near-intersection blending, face boundaries, supersampling, picking
+// (by a real click too), device pixel ratio and resize, a lost and restored WebGL context, and
+// the message where WebGL2 is missing.
+import assert from 'node:assert/strict';
+import { readFile } from 'node:fs/promises';
+import { after, afterEach, before, describe, test } from 'node:test';
+import type { Browser } from 'playwright-core';
+import { scaleAtZ, zAtScale } from '../client/src/shared/scale.js';
+import { fitBbox, pixelToGround, viewBbox, type Bbox } from '../client/src/shared/view.js';
+import { openMap, type MapPage, type OpenOptions } from './helpers/browser.js';
+import { compareIds, cpuSlice, otterlo400, type BuiltCube, type CubeContents } from './helpers/cube.js';
+import { checkAndClose, setUpTestBed, tearDownTestBed } from './helpers/test-bed.js';
+import { hexColour, pixel, readIds, screenshot, waitIdle, type PageIds, type Rgba } from './helpers/map-page.js';
+import type { TestServer } from './helpers/test-server.js';
+
+const W = 640, H = 480;
+
+describe('rendering and picking (bgt_otterlo_400m)', () => {
+  let cube: BuiltCube;
+  let contents: CubeContents;
+  let server: TestServer;
+  let browser: Browser;
+  let mp: MapPage | null = null;
+  let classColours: [number, number, number][];
+  let background: [number, number, number];
+
+  before(async () => {
+    ({ cube, contents, server, browser } = await setUpTestBed([]));
+    classColours = contents.meta.style.classes.map((c) => hexColour(c.color));
+    background = hexColour(contents.meta.style.background);
+  });
+
+  afterEach(async () => {
+    await checkAndClose(mp);
+    mp = null;
+  });
+
+  after(async () => {
+    await tearDownTestBed({ cube, server, browser });
+  });
+
+  const ext = (): Bbox => contents.meta.extent;
+  const info = () => contents.meta;
+
+  async function open(params: Record<string, string | number>, opts: OpenOptions = {}): Promise<MapPage> {
+    mp = await openMap(browser, server.url, { source: 'cube/', supersampling: 1, ...params }, opts);
+    return mp;
+  }
+
+  async function set(p: MapPage, fn: string): Promise<PageIds> {
+    await p.page.evaluate(fn);
+    assert.equal(await waitIdle(p.page), true);
+    return readIds(p.page);
+  }
+
+  /** Pixels whose colours differ between two screenshots. */
+  function changed(a: Rgba, b: Rgba): Set<number> {
+    const out = new Set<number>();
+    for (let p = 0; p < a.width * a.height; p++) {
+      if (a.data[4 * p] !== b.data[4 * p] || a.data[4 * p + 1] !== b.data[4 * p + 1] || a.data[4 * p + 2] !== b.data[4 * p + 2]) out.add(p);
+    }
+    return out;
+  }
+
+  test('every pixel shows the class colour of its face, or the background outside the cube', async () => {
+    // At this level of detail (about 1:4000) the style's patterns (up to 1:2500) are off.
+    const p = await open({ z: 410 });
+    assert.equal(await waitIdle(p.page), true);
+    const ids = await readIds(p.page);
+    const img = await screenshot(p.page);
+    let checked = 0;
+    const classesSeen = new Set<number>();
+    for (let k = 0; k < W * H; k++) {
+      const i = k % W, j = Math.floor(k / W);
+      const want = ids.upper[k] === 0 ? background : classColours[idsClass(ids, k)]!;
+      if (ids.upper[k] !== 0) classesSeen.add(idsClass(ids, k));
+      assert.deepEqual(pixel(img, i, j), want, `pixel (${i},${j})`);
+      checked++;
+    }
+    assert.equal(checked, W * H);
+    assert.ok(classesSeen.size >= 4, `${classesSeen.size} classes on screen`);
+  });
+
+  test('class patterns show only within their scale range', async () => {
+    const vegetated = contents.meta.style.classes.findIndex((c) => c.key === 'begroeidterreindeel');
+    const pat = contents.meta.style.classes[vegetated]!.pattern!;
+    assert.ok(pat && pat.maxScale, 'the style gives vegetated terrain a pattern up to a scale');
+    const patternColour = hexColour(pat.color);
+    const count = async (scale: number): Promise<{ pattern: number; of: number }> => {
+      const ids = await set(mpOrThrow(), `map.jumpTo({ scaleDenominator: ${scale}, z: null })`);
+      const img = await screenshot(mpOrThrow().page);
+      let pattern = 0, of = 0;
+      for (let k = 0; k < W * H; k++) {
+        if (ids.upper[k] === 0 || idsClass(ids, k) !== vegetated) continue;
+        of++;
+        const c = pixel(img, k % W, Math.floor(k / W));
+        if (c[0] === patternColour[0] && c[1] === patternColour[1] && c[2] === patternColour[2]) pattern++;
+      }
+      return { pattern, of };
+    };
+    await open({ center: `${(ext()[0] + ext()[2]) / 2},${(ext()[1] + ext()[3]) / 2}`, scale: 1500 });
+    assert.equal(await waitIdle(mpOrThrow().page), true);
+    const inside = await count(pat.maxScale! * 0.8);
+    assert.ok(inside.of > 1000 && inside.pattern > inside.of * 0.02, `at 1:${pat.maxScale! * 0.8} ${inside.pattern} of ${inside.of} vegetated pixels show the pattern`);
+    const beyond = await count(pat.maxScale! * 1.25);
+    assert.ok(beyond.of > 1000 && beyond.pattern === 0, `at 1:${pat.maxScale! * 1.25} ${beyond.pattern} of ${beyond.of} show it`);
+  });
+
+  function mpOrThrow(): MapPage {
+    if (!mp) throw new Error('no page');
+    return mp;
+  }
+
+  test('near-intersection blending changes colours only where a boundary in scale is near', async () => {
+    const z = 240, c = 6;
+    const p = await open({ z, blending: 'off' });
+    assert.equal(await waitIdle(p.page), true);
+    const plain = await screenshot(p.page);
+    const ids = await set(p, `map.setBlending({ mode: 'always', distance: ${c} })`);
+    const blended = await screenshot(p.page);
+    const diff = changed(plain, blended);
+    // Where the slice at z and the slice c lower show different faces, a surface lies within
+    // c under the slice: only there may the colour change.
+    const view = fitBbox(ext(), W, H);
+    const atZ = await cpuSlice(cube.dir, { step: z, width: W, height: H, bbox: viewBbox(view) });
+    const below = await cpuSlice(cube.dir, { step: z - c, width: W, height: H, bbox: viewBbox(view) });
+    let near = 0;
+    for (let k = 0; k < W * H; k++) if (atZ[k] !== below[k]) near++;
+    let outside = 0;
+    for (const k of diff) if (atZ[k] === below[k] && !onFaceBoundary(atZ, k)) outside++;
+    assert.ok(diff.size > 200, `${diff.size} pixels blended`);
+    assert.ok(near < W * H * 0.5, 'most of the map is far from a boundary in scale');
+    assert.equal(outside, 0, `${outside} of ${diff.size} changed pixels have no boundary within ${c} steps below`);
+    // And the colour is the mix the definition gives: mix(colour(lower), colour(upper), d / c).
+    let checked = 0;
+    for (const k of diff) {
+      const d = ids.slice[k]! - ids.z[k]!;
+      const up = classColours[idsClass(ids, k)]!, lo = classColours[(ids.classes[k]! >>> 16) & 0xffff];
+      if (!lo || d >= c) continue;
+      const want = up.map((u, q) => Math.round(lo[q]! + (u - lo[q]!) * (d / c)));
+      const got = pixel(blended, k % W, Math.floor(k / W));
+      for (let q = 0; q < 3; q++) assert.ok(Math.abs(got[q]! - want[q]!) <= 1, `pixel ${k}: ${got} != ${want} (d ${d})`);
+      if (++checked >= 200) break;
+    }
+    assert.ok(checked >= 50);
+    // 'moving' blends only while the slice moves: at rest it is the plain map.
+    await set(p, `map.setBlending({ mode: 'moving' })`);
+    assert.equal(changed(plain, await screenshot(p.page)).size, 0);
+  });
+
+  test('face boundaries are drawn exactly where the face id changes, in CSS pixel widths', async () => {
+    const p = await open({ z: 200 });
+    assert.equal(await waitIdle(p.page), true);
+    const plain = await screenshot(p.page);
+    const ids = await set(p, `map.setBoundaries({ enabled: true, width: 1 })`);
+    const one = changed(plain, await screenshot(p.page));
+    // Width 1: the pixel left of and below each change of id (rows from the top: below is j + 1... in
+    // screen terms the pixel whose right or upper neighbour differs).
+    const expected = new Set<number>();
+    for (let j = 0; j < H; j++) {
+      for (let i = 0; i < W; i++) {
+        const k = j * W + i;
+        if ((i + 1 < W && ids.upper[k + 1] !== ids.upper[k]) || (j > 0 && ids.upper[k - W] !== ids.upper[k])) expected.add(k);
+      }
+    }
+    assert.ok(expected.size > 1000);
+    assert.deepEqual(sortedDiff(one, expected), [[], []]);
+    await set(p, `map.setBoundaries({ width: 3 })`);
+    const three = changed(plain, await screenshot(p.page));
+    assert.ok(three.size > 2.2 * one.size && three.size < 3.5 * one.size, `${three.size} pixels at width 3, ${one.size} at width 1`);
+    await set(p, `map.setBoundaries({ enabled: false })`);
+    assert.equal(changed(plain, await screenshot(p.page)).size, 0);
+  });
+
+  test('supersampling smooths edges and leaves the inside of faces alone', async () => {
+    const p = await open({ z: 100 });
+    assert.equal(await waitIdle(p.page), true);
+    const plain = await screenshot(p.page);
+    const ids = await set(p, `map.setSupersampling(16)`);
+    const smooth = await screenshot(p.page);
+    const diff = changed(plain, smooth);
+    assert.ok(diff.size > 500, `${diff.size} pixels smoothed`);
+    // Changes belong next to an id change (or the image border, beyond which the jittered
+    // samples see what lies outside). A few elsewhere are sub-pixel details the centre misses
+    // (a wall thinner than a pixel, a sliver): at most one in a thousand changed pixels.
+    const off = [...diff].filter((k) => {
+      const i = k % W, j = Math.floor(k / W);
+      return i > 0 && j > 0 && i < W - 1 && j < H - 1 && !onFaceBoundary(ids.upper, k);
+    });
+    assert.ok(off.length <= Math.max(10, diff.size / 1000), `${off.length} of ${diff.size} changed pixels away from edges: ${off.slice(0, 10).map((k) => `(${k % W},${Math.floor(k / W)})`).join(' ')}`);
+  });
+
+  test('picking returns the face under the pointer, with its class, attributes and steps', async () => {
+    const z = 90;
+    const p = await open({ z });
+    assert.equal(await waitIdle(p.page), true);
+    const view = fitBbox(ext(), W, H);
+    const ref = await cpuSlice(cube.dir, { step: z, width: W, height: H, bbox: viewBbox(view) });
+    const input = JSON.parse(await readFile(otterlo400, 'utf8')) as { features: { properties: Record<string, unknown> }[] };
+    // Points well inside faces (a 7x7 block of one face in the reference), spread over the map.
+    const points: [number, number][] = [];
+    for (let j = 20; j < H - 20 && points.length < 12; j += 37) {
+      for (let i = 90; i < W - 90 && points.length < 12; i += 53) {
+        if (interior(ref, j * W + i, 3) && !points.some(([x]) => x === i)) points.push([i, j]);
+      }
+    }
+    assert.ok(points.length >= 8);
+    const faces = new Set<number>();
+    for (const [i, j] of points) {
+      const fs = (await p.page.evaluate((pt) => map.queryFeatures(pt), [i + 0.5, j + 0.5] as [number, number])) as {
+        face: number; classKey: string; feature: number; properties: Record<string, unknown>; stepLow: number; stepHigh: number;
+      }[];
+      assert.equal(fs.length, 1);
+      const f = fs[0]!;
+      assert.equal(f.face, ref[j * W + i], `face at (${i},${j})`);
+      faces.add(f.face);
+      assert.ok(f.stepLow <= z && z < f.stepHigh, `face ${f.face} alive at ${z}: ${f.stepLow}..${f.stepHigh}`);
+      assert.deepEqual(f.properties, input.features[f.feature]!.properties);
+      assert.equal(f.classKey, input.features[f.feature]!.properties.layer, 'the class is the feature\'s layer');
+    }
+    assert.ok(faces.size >= 4, `${faces.size} different faces picked`);
+    // Outside the cube there is nothing to pick.
+    const outside = await p.page.evaluate(() => map.queryFeatures([5, 240]));
+    assert.deepEqual(outside, []);
+    // A real click shows the picked face in the demo's info box.
+    const [ci, cj] = points[0]!;
+    await p.page.mouse.click(ci + 0.5, cj + 0.5);
+    await p.page.waitForFunction("document.getElementById('info').textContent !== ''");
+    const text = (await p.page.textContent('#info')) ?? '';
+    assert.match(text, new RegExp(`face ${ref[cj * W + ci]}\\b`));
+  });
+
+  test('a device pixel ratio of 2 draws every device pixel, and picking maps CSS pixels', async () => {
+    const z = 120;
+    const p = await open({ z }, { width: 320, height: 240, deviceScaleFactor: 2 });
+    assert.equal(await waitIdle(p.page), true);
+    const ids = await readIds(p.page);
+    assert.deepEqual([ids.width, ids.height], [W, H], 'a 320x240 CSS pixel map at ratio 2');
+    const bbox = viewBbox(fitBbox(ext(), W, H));
+    const ref = await cpuSlice(cube.dir, { step: z, width: W, height: H, bbox });
+    const c = compareIds(ids.upper, ref, W, H);
+    assert.ok(c.share >= 0.995, `${(100 * c.share).toFixed(3)}% equal`);
+    for (let k = W * 100 + 100; k < W * 400; k += 9973) {
+      if (!interior(ref, k, 2)) continue;
+      const fs = (await p.page.evaluate((pt) => map.queryFeatures(pt), [(k % W) / 2 + 0.25, Math.floor(k / W) / 2 + 0.25] as [number, number])) as { face: number }[];
+      assert.equal(fs[0]?.face, ref[k]);
+    }
+  });
+
+  test('a resized container gets a map of its new size', async () => {
+    const z = 60;
+    const p = await open({ z });
+    assert.equal(await waitIdle(p.page), true);
+    await p.page.setViewportSize({ width: 500, height: 300 });
+    await p.page.waitForFunction(() => map.getView().width === 500 && map.getView().height === 300);
+    const bbox: Bbox = [ext()[0] + 50, ext()[1] + 80, ext()[0] + 300, ext()[1] + 230];
+    const ids = await set(p, `map.fitBounds([${bbox.join(',')}], { z: ${z} })`);
+    assert.deepEqual([ids.width, ids.height], [500, 300]);
+    const ref = await cpuSlice(cube.dir, { step: z, width: 500, height: 300, bbox });
+    assert.ok(compareIds(ids.upper, ref, 500, 300).share >= 0.995);
+  });
+
+  test('a lost WebGL context is restored without reloading, with the same picture', async () => {
+    const p = await open({ z: 180, supersampling: 8 });
+    assert.equal(await waitIdle(p.page), true);
+    const before = await screenshot(p.page);
+    const idsBefore = await readIds(p.page);
+    await p.page.evaluate(async () => {
+      const ext = (map.canvas.getContext('webgl2') as { getExtension(n: string): { loseContext(): void; restoreContext(): void } }).getExtension('WEBGL_lose_context');
+      const lost = map.once('contextlost');
+      ext.loseContext();
+      await lost;
+      (globalThis as unknown as { restore: () => void }).restore = () => ext.restoreContext();
+    });
+    assert.equal(await p.page.evaluate(() => map.readIds()), null, 'nothing to read while lost');
+    await p.page.evaluate(async () => {
+      const restored = map.once('contextrestored');
+      (globalThis as unknown as { restore: () => void }).restore();
+      await restored;
+    });
+    assert.equal(await waitIdle(p.page), true);
+    const idsAfter = await readIds(p.page);
+    assert.deepEqual(idsAfter.upper, idsBefore.upper);
+    assert.equal(changed(before, await screenshot(p.page)).size, 0, 'the same picture');
+    assert.ok(new Set(idsAfter.upper).size > 20);
+  });
+
+  test('without float render targets the surface is computed on the CPU, with the same slices', async () => {
+    // Some WebGL2 devices cannot render to float textures (no EXT_color_buffer_float).
+    const noFloat = `(() => { const get = WebGL2RenderingContext.prototype.getExtension; WebGL2RenderingContext.prototype.getExtension = function (n) { return n === 'EXT_color_buffer_float' ? null : get.call(this, n); }; })()`;
+    const z = 220, spec = 'sine:amplitude=150,wavelength=130,angle=30';
+    const p = await open({ z, surface: spec, supersampling: 4 }, { initScript: noFloat });
+    assert.equal(await waitIdle(p.page), true);
+    const ids = await readIds(p.page);
+    const bbox = viewBbox(fitBbox(ext(), W, H));
+    const ref = await cpuSlice(cube.dir, { step: z, width: W, height: H, bbox, surface: spec });
+    const c = compareIds(ids.upper, ref, W, H);
+    assert.ok(c.share >= 0.995, `${(100 * c.share).toFixed(3)}% equal`);
+    // The slice z read back is the CPU's: the sine's range around z.
+    let lo = Infinity, hi = -Infinity;
+    for (const v of ids.slice) {
+      lo = Math.min(lo, v);
+      hi = Math.max(hi, v);
+    }
+    assert.ok(lo >= z - 150 - 1e-3 && hi <= z + 150 + 1e-3 && hi - lo > 250, `slice z from ${lo} to ${hi}`);
+  });
+
+  test('without WebGL2 the container says so', async () => {
+    const p = await open({}, { initScript: `(() => { const get = HTMLCanvasElement.prototype.getContext; HTMLCanvasElement.prototype.getContext = function (t, ...a) { return t === 'webgl2' ? null : get.call(this, t, ...a); }; })()` });
+    await p.page.waitForSelector('.ssc-no-webgl2');
+    const text = await p.page.textContent('.ssc-no-webgl2');
+    assert.match(text ?? '', /WebGL2/);
+    assert.equal(await p.page.evaluate(() => map.readIds()), null);
+  });
+
+  // z and scale agree with the shared definitions (a sanity check of the test's own numbers).
+  test('the scale of the default view and its z are consistent', async () => {
+    const p = await open({});
+    assert.equal(await waitIdle(p.page), true);
+    const [scale, z] = await p.page.evaluate(() => [map.getScale(), map.getZ()]);
+    assert.ok(Math.abs(z - zAtScale(info(), scale)) < 1e-9);
+    assert.ok(Math.abs(scaleAtZ(info(), z) - scale) / scale < 1e-9 || z === 0 || z === info().zMax);
+    const v = await p.page.evaluate(() => map.getView());
+    const [gx, gy] = pixelToGround(v, W / 2, H / 2);
+    assert.ok(Math.abs(gx - (ext()[0] + ext()[2]) / 2) < 1e-6 && Math.abs(gy - (ext()[1] + ext()[3]) / 2) < 1e-6);
+  });
+});
+
+/** The class of the upper face at pixel k (from the ID buffer). */
+function idsClass(ids: PageIds, k: number): number {
+  return ids.classes[k]! & 0xffff;
+}
+
+function onFaceBoundary(ids: ArrayLike<number>, k: number): boolean {
+  const i = k % W, j = Math.floor(k / W);
+  for (let dj = -1; dj <= 1; dj++) {
+    for (let di = -1; di <= 1; di++) {
+      const x = i + di, y = j + dj;
+      if (x >= 0 && y >= 0 && x < W && y < H && ids[y * W + x] !== ids[k]) return true;
+    }
+  }
+  return false;
+}
+
+/** The pixel and its (2r+1)^2 neighbourhood show one face. */
+function interior(ids: ArrayLike<number>, k: number, r: number): boolean {
+  const i = k % W, j = Math.floor(k / W);
+  if (ids[k] === 0) return false;
+  for (let dj = -r; dj <= r; dj++) {
+    for (let di = -r; di <= r; di++) {
+      const x = i + di, y = j + dj;
+      if (x < 0 || y < 0 || x >= W || y >= H || ids[y * W + x] !== ids[k]) return false;
+    }
+  }
+  return true;
+}
+
+function sortedDiff(a: Set<number>, b: Set<number>): [number[], number[]] {
+  return [[...a].filter((x) => !b.has(x)).sort((x, y) => x - y).slice(0, 10), [...b].filter((x) => !a.has(x)).sort((x, y) => x - y).slice(0, 10)];
+}
