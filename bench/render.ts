@@ -48,7 +48,8 @@ async function main(): Promise<void> {
   const sets = datasets(filter).filter((d) => d.name === 'bgt_otterlo_1800m' || d.name === 'nlcd_zion');
   if (sets.length === 0) throw new Error('no dataset (bgt_otterlo_1800m, nlcd_zion) found in ../shared/data');
   const browser = await chromium.launch({ executablePath: process.env.CHROMIUM_PATH ?? '/usr/lib/chromium/chromium', args: ARGS });
-  const rows: string[][] = [['dataset', 'view', 'scale', 'first map ms', 'frame ms median', 'frame ms p95', 'triangles/frame', 'query ms/frame', 'chunks', 'MB']];
+  const rows: string[][] = [['dataset', 'view', 'scale', 'first map ms', 'frame ms median', 'frame ms p95', 'triangles/frame', 'at 5 places', 'query ms/frame', 'chunks', 'MB']];
+  const ratios: string[] = [];
   try {
     for (const d of sets) {
       const dir = await mkdtemp(path.join(tmpdir(), 'ssc-bench-'));
@@ -66,6 +67,7 @@ async function main(): Promise<void> {
         const views: [string, number][] = [['base', meta.baseScale], ['middle', Math.sqrt(meta.baseScale * full)], ['extent', full]];
         const server = createStaticServer({ root: dir });
         await server.listen(0, '127.0.0.1');
+        const triangleMeans: number[] = [];
         try {
           for (const [name, scale] of views) {
             const context = await browser.newContext({ viewport: { width: WIDTH, height: HEIGHT } });
@@ -101,11 +103,33 @@ async function main(): Promise<void> {
             );
             const kept = samples.slice(WARMUP);
             const frameMs = kept.slice(1).map((s, i) => s.t - kept[i]!.t);
+            // One place can sit where chunks meet; the mean over the centre and four places
+            // around it says what a view at this scale usually draws.
+            const placed: number[] = [];
+            for (const [fx, fy] of [[0.5, 0.5], [0.25, 0.25], [0.75, 0.25], [0.25, 0.75], [0.75, 0.75]] as const) {
+              const c: [number, number] = [x0 + fx * (x1 - x0), y0 + fy * (y1 - y0)];
+              placed.push(await page.evaluate(
+                (at) => new Promise<number>((resolve) => {
+                  const f = (st: { triangles: number }): void => {
+                    map.off('render', f);
+                    resolve(st.triangles);
+                  };
+                  map.jumpTo({ center: at });
+                  void map.whenIdle().then(() => {
+                    map.on('render', f);
+                    map.redraw();
+                  });
+                }),
+                c,
+              ));
+            }
+            triangleMeans.push(placed.reduce((a, b) => a + b, 0) / placed.length);
             rows.push([
               d.name, name, `1:${Math.round(scale)}`,
               firstMs === null ? 'never' : firstMs.toFixed(0),
               median(frameMs).toFixed(1), p95(frameMs).toFixed(1),
               Math.round(median(kept.map((s) => s.triangles))).toString(),
+              Math.round(triangleMeans[triangleMeans.length - 1]!).toString(),
               median(kept.map((s) => s.queryMs)).toFixed(2),
               String(files.length), (bytes / 1e6).toFixed(2),
             ]);
@@ -113,6 +137,7 @@ async function main(): Promise<void> {
             if (errors.length > 0) throw new Error(`page errors: ${errors.join('; ')}`);
             await context.close();
           }
+          ratios.push(`${d.name}: triangles per frame (mean of 5 places), largest / smallest over the three scales: ${(Math.max(...triangleMeans) / Math.min(...triangleMeans)).toFixed(2)}`);
         } finally {
           await server.close();
         }
@@ -125,6 +150,7 @@ async function main(): Promise<void> {
   }
   const widths = rows[0]!.map((_, c) => Math.max(...rows.map((r) => r[c]!.length)));
   for (const r of rows) process.stdout.write(`${r.map((v, c) => v.padStart(widths[c]!)).join('  ')}\n`);
+  for (const r of ratios) process.stdout.write(`${r}\n`);
 }
 
 main().catch((err: unknown) => {
