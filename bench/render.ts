@@ -48,7 +48,7 @@ async function main(): Promise<void> {
   const sets = datasets(filter).filter((d) => d.name === 'bgt_otterlo_1800m' || d.name === 'nlcd_zion');
   if (sets.length === 0) throw new Error('no dataset (bgt_otterlo_1800m, nlcd_zion) found in ../shared/data');
   const browser = await chromium.launch({ executablePath: process.env.CHROMIUM_PATH ?? '/usr/lib/chromium/chromium', args: ARGS });
-  const rows: string[][] = [['dataset', 'view', 'scale', 'first map ms', 'frame ms median', 'frame ms p95', 'triangles/frame', 'at 5 places', 'query ms/frame', 'chunks', 'MB']];
+  const rows: string[][] = [['dataset', 'view', 'scale', 'first map ms', 'frame ms median', 'frame ms p95', 'triangles/frame', 'at 5 places', 'query ms/frame', 'chunks', 'MB', 'long tasks load', 'long tasks frames']];
   const ratios: string[] = [];
   try {
     for (const d of sets) {
@@ -72,12 +72,21 @@ async function main(): Promise<void> {
           for (const [name, scale] of views) {
             const context = await browser.newContext({ viewport: { width: WIDTH, height: HEIGHT } });
             const page = await context.newPage();
+            // Main-thread tasks over 50 ms, from the first script on: loading must not freeze the page.
+            await page.addInitScript(() => {
+              const g = globalThis as unknown as { longTasks: number[] };
+              g.longTasks = [];
+              new PerformanceObserver((list) => {
+                for (const e of list.getEntries()) g.longTasks.push(e.duration);
+              }).observe({ type: 'longtask' as unknown as 'mark', buffered: true });
+            });
             const errors: string[] = [];
             page.on('pageerror', (e) => errors.push(e.message));
             await page.goto(`${server.url}index.html?source=cube/&center=${centre.join(',')}&scale=${scale}&supersampling=1`);
             await page.waitForFunction(() => typeof map !== 'undefined' && map.cubeMeta !== null);
             await page.evaluate(() => map.whenIdle());
             const firstMs = await page.evaluate(() => map.firstCompleteAt);
+            const longLoad = await page.evaluate(() => (globalThis as unknown as { longTasks: number[] }).longTasks.splice(0));
             const needed = await page.evaluate(() => map.neededChunks());
             const files = [...needed.visible, ...needed.margin];
             const bytes = files.reduce((s, f) => s + (leafBytes.get(f) ?? 0), 0);
@@ -101,6 +110,8 @@ async function main(): Promise<void> {
                 }),
               [FRAMES + WARMUP + 1] as const,
             );
+            const longFrames = await page.evaluate(() => (globalThis as unknown as { longTasks: number[] }).longTasks.splice(0));
+            const fmt = (xs: number[]): string => (xs.length === 0 ? '0' : `${xs.length} (max ${Math.round(Math.max(...xs))} ms)`);
             const kept = samples.slice(WARMUP);
             const frameMs = kept.slice(1).map((s, i) => s.t - kept[i]!.t);
             // One place can sit where chunks meet; the mean over the centre and four places
@@ -132,6 +143,7 @@ async function main(): Promise<void> {
               Math.round(triangleMeans[triangleMeans.length - 1]!).toString(),
               median(kept.map((s) => s.queryMs)).toFixed(2),
               String(files.length), (bytes / 1e6).toFixed(2),
+              fmt(longLoad), fmt(longFrames),
             ]);
             process.stderr.write(`${rows[rows.length - 1]!.join('  ')}\n`);
             if (errors.length > 0) throw new Error(`page errors: ${errors.join('; ')}`);
