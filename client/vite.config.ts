@@ -1,4 +1,5 @@
-// Builds the browser client (client/index.html, its module worker and shaders) into dist/client.
+// Builds the browser client into dist/client: index.html (the engine's test page), demo.html
+// (the full-page demo on the public API), their module worker and shaders.
 // dist/client/src/shared holds the Node build of the shared modules (tsc), so the output
 // directory is not emptied: only Vite's own assets/ folder is cleared before each build.
 import { rmSync } from 'node:fs';
@@ -15,6 +16,12 @@ export default defineConfig({
     emptyOutDir: false,
     target: 'es2022',
     sourcemap: true,
+    rollupOptions: {
+      input: {
+        index: fileURLToPath(new URL('./index.html', import.meta.url)),
+        demo: fileURLToPath(new URL('./demo.html', import.meta.url)),
+      },
+    },
   },
   worker: { format: 'es' },
   plugins: [

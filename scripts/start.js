@@ -1,19 +1,86 @@
 #!/usr/bin/env node
-// npm start: builds the bundled dataset (data/bgt_otterlo_1800m.geojson) into chunks/ and
-// reports what it built.
+// npm start (after npm run build): builds the bundled dataset's cube into chunks/ when it is
+// missing or older than its inputs (the GeoJSON, the style, the compiled builder), then serves
+// the full-page demo (dist/client/demo.html) and the cube (at /chunks/) from 127.0.0.1 with the
+// project's static server until Ctrl-C. PORT picks the port (default 8080, else a free one).
 import { spawnSync } from 'node:child_process';
-import { mkdirSync } from 'node:fs';
-import { fileURLToPath } from 'node:url';
+import { existsSync, readdirSync, renameSync, rmSync, statSync } from 'node:fs';
+import { createServer } from 'node:http';
 import path from 'node:path';
+import { fileURLToPath } from 'node:url';
 
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
+const input = path.join(root, 'data/bgt_otterlo_1800m.geojson');
+const style = path.join(root, 'styles/bgt.json');
 const out = path.join(root, 'chunks');
-mkdirSync(out, { recursive: true });
-const ssc = (args) => {
-  const r = spawnSync(process.execPath, [path.join(root, 'bin/ssc.js'), ...args], { stdio: 'inherit', cwd: root });
+const clientDir = path.join(root, 'dist/client');
+
+/** Newest modification time of a file or of any file below a directory. */
+function newest(p) {
+  const st = statSync(p);
+  if (!st.isDirectory()) return st.mtimeMs;
+  let t = 0;
+  for (const name of readdirSync(p)) t = Math.max(t, newest(path.join(p, name)));
+  return t;
+}
+
+function cubeIsCurrent() {
+  const index = path.join(out, 'index.json');
+  if (!existsSync(index)) return false;
+  const inputs = Math.max(newest(input), newest(style), newest(path.join(root, 'dist/preprocess')));
+  return statSync(index).mtimeMs >= inputs;
+}
+
+if (cubeIsCurrent()) {
+  console.log(`The cube in ${path.relative(process.cwd(), out) || '.'}/ is up to date.`);
+} else {
+  console.log(`Building the cube of ${path.relative(root, input)} into chunks/ ...`);
+  // Built beside and then moved in, so an interrupted build never leaves a half cube behind.
+  const tmp = `${out}.building`;
+  rmSync(tmp, { recursive: true, force: true });
+  const r = spawnSync(process.execPath, [path.join(root, 'bin/ssc.js'), 'build', input, '--style', style, '--out', tmp], { stdio: 'inherit', cwd: root });
   if (r.status !== 0) process.exit(r.status ?? 1);
+  rmSync(out, { recursive: true, force: true });
+  renameSync(tmp, out);
+}
+
+const { createStaticServer } = await import(path.join(root, 'dist/server/static-server.js'));
+const demo = createStaticServer({ root: clientDir });
+const cube = createStaticServer({ root: out });
+// One origin for both: /chunks/... is the cube, everything else the built client.
+const front = createServer((req, res) => {
+  const url = req.url ?? '/';
+  if (url === '/chunks' || url.startsWith('/chunks/') || url.startsWith('/chunks?')) {
+    req.url = url.slice('/chunks'.length) || '/';
+    cube.server.emit('request', req, res);
+  } else {
+    if (url === '/' || url.startsWith('/?')) req.url = `/demo.html${url.slice(1)}`;
+    demo.server.emit('request', req, res);
+  }
+});
+
+function listen(port) {
+  return new Promise((resolve, reject) => {
+    front.once('error', reject);
+    front.listen(port, '127.0.0.1', () => {
+      front.off('error', reject);
+      resolve(front.address().port);
+    });
+  });
+}
+
+let port;
+try {
+  port = await listen(Number(process.env.PORT ?? 8080));
+} catch (err) {
+  if (err.code !== 'EADDRINUSE' || process.env.PORT) throw err;
+  port = await listen(0);
+}
+console.log(`\nThe vario-scale map of Otterlo: http://127.0.0.1:${port}/\n(Ctrl-C stops the server.)`);
+
+const stop = () => {
+  front.closeAllConnections();
+  front.close(() => process.exit(0));
 };
-ssc(['generalize', 'data/bgt_otterlo_1800m.geojson', '--style', 'styles/bgt.json', '--out', path.join(out, 'bgt_otterlo_1800m.tgap')]);
-ssc(['map', path.join(out, 'bgt_otterlo_1800m.tgap'), '--step', '0', '--size', '1280x1280', '--out', path.join(out, 'bgt_otterlo_1800m-step0.png')]);
-ssc(['map', path.join(out, 'bgt_otterlo_1800m.tgap'), '--scale', '5000', '--size', '1280x1280', '--out', path.join(out, 'bgt_otterlo_1800m-1to5000.png')]);
-console.log(`\nBuilt the tGAP of the bundled dataset in ${path.relative(process.cwd(), out) || '.'}/ with two maps drawn from it.`);
+process.on('SIGINT', stop);
+process.on('SIGTERM', stop);

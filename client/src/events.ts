@@ -25,6 +25,11 @@ export class Evented<Events extends object> {
     });
   }
 
+  /** Forgets every listener (the object is being removed). */
+  protected removeAllListeners(): void {
+    this.listeners.clear();
+  }
+
   protected listens(type: keyof Events): boolean {
     return (this.listeners.get(type)?.size ?? 0) > 0;
   }

@@ -11,7 +11,7 @@ import { colourParams, type BlendingOptions, type BoundaryOptions } from './rend
 import { Renderer, type IdBuffer } from './render/renderer.js';
 import { jitter, weight } from './render/supersampling.js';
 import { ChunkSource, type NeededChunks } from './source/chunk-source.js';
-import type { ChunkPayload, ChunkStatus, SourceErrorInfo, SourceOptions } from './source/worker-protocol.js';
+import type { AheadView, ChunkPayload, ChunkStatus, SourceErrorInfo, SourceOptions } from './source/worker-protocol.js';
 import { showWebGl2Missing } from './ui/webgl-missing.js';
 import { ViewState } from './view-state.js';
 
@@ -86,7 +86,21 @@ export interface SliceMapEvents {
   surface: Surface;
   contextlost: Record<string, never>;
   contextrestored: Record<string, never>;
+  /** A chunk request went out (`file`), and a chunk went to the GPU. */
+  dataloading: { file: string };
+  data: { file: string };
 }
+
+/** A view to come, for prefetching: centre and scale denominator on this canvas. */
+export interface PrefetchView {
+  center: [number, number];
+  scaleDenominator: number;
+  /** The slice's base z there, when it does not follow the scale. */
+  z?: number | null;
+}
+
+/** Runs at the start of every frame, before it is drawn (e.g. to advance an animation). */
+export type FrameHook = (now: number) => void;
 
 const DEFAULT_BUDGET = 256 * 1024 * 1024;
 /** Blending in the 'moving' mode stays on this long after the slice last moved (ms). */
@@ -118,6 +132,10 @@ export class SliceMap extends Evented<SliceMapEvents> {
   private needed: NeededChunks | null = null;
   private visibleSet = new Set<string>();
   private marginSet = new Set<string>();
+  private aheadSet = new Set<string>();
+  private ahead: PrefetchView[] = [];
+  private aheadChanged = false;
+  private readonly frameHooks = new Set<FrameHook>();
   private readonly pending: ChunkPayload[] = [];
   private lastSliceMove = -Infinity;
   private blendingWasOn = false;
@@ -163,6 +181,9 @@ export class SliceMap extends Evented<SliceMapEvents> {
     this.source.on('chunk', (ch) => {
       this.pending.push(ch);
       this.schedule();
+    });
+    this.source.on('status', (s) => {
+      if (s.status === 'requested') this.fire('dataloading', { file: s.file });
     });
     this.source.on('error', (e) => {
       this.fire('error', e);
@@ -236,6 +257,32 @@ export class SliceMap extends Evented<SliceMapEvents> {
     return pixelToGround(this.getView(), point[0] * r, point[1] * r);
   }
 
+  /**
+   * Views the map will show soon, in order (a flight's path): their chunks are fetched after
+   * those of the current view and its margin, and kept when they arrive. [] forgets them.
+   */
+  prefetch(views: PrefetchView[]): this {
+    this.ahead = views.slice();
+    this.aheadChanged = true;
+    this.schedule();
+    return this;
+  }
+
+  /** `fn` runs at the start of every frame; requestFrame() asks for one. */
+  addFrameHook(fn: FrameHook): this {
+    this.frameHooks.add(fn);
+    return this;
+  }
+
+  removeFrameHook(fn: FrameHook): this {
+    this.frameHooks.delete(fn);
+    return this;
+  }
+
+  requestFrame(): void {
+    this.schedule();
+  }
+
   // ---- surface and rendering options ---------------------------------------------------------------
 
   getSurface(): Surface {
@@ -254,6 +301,10 @@ export class SliceMap extends Evented<SliceMapEvents> {
     this.blending = { ...this.blending, ...b };
     this.redraw();
     return this;
+  }
+
+  getBlending(): BlendingOptions {
+    return { ...this.blending };
   }
 
   setBoundaries(b: Partial<BoundaryOptions>): this {
@@ -294,8 +345,8 @@ export class SliceMap extends Evented<SliceMapEvents> {
   }
 
   /** The chunks the current view needs: on screen and in the prefetch margin. */
-  neededChunks(): { visible: string[]; margin: string[] } {
-    return { visible: [...this.visibleSet], margin: [...this.marginSet] };
+  neededChunks(): { visible: string[]; margin: string[]; ahead: string[] } {
+    return { visible: [...this.visibleSet], margin: [...this.marginSet], ahead: [...this.aheadSet] };
   }
 
   stats(): RenderStats {
@@ -345,6 +396,12 @@ export class SliceMap extends Evented<SliceMapEvents> {
     ];
   }
 
+  /** Measures the container again (a ResizeObserver does this by itself where it can). */
+  resize(): this {
+    this.measure();
+    return this;
+  }
+
   /** Renders again (e.g. after a style change). */
   redraw(): void {
     this.accumulated = 0;
@@ -354,6 +411,7 @@ export class SliceMap extends Evented<SliceMapEvents> {
 
   remove(): void {
     this.removed = true;
+    this.frameHooks.clear();
     if (this.raf) cancelAnimationFrame(this.raf);
     this.raf = 0;
     this.resizeObserver.disconnect();
@@ -433,6 +491,7 @@ export class SliceMap extends Evented<SliceMapEvents> {
     this.needed = n;
     this.visibleSet = new Set(n.visible);
     this.marginSet = new Set(n.margin);
+    this.aheadSet = new Set(n.ahead);
     this.lastStats.queryMs = n.queryMs;
     this.schedule();
   }
@@ -457,15 +516,19 @@ export class SliceMap extends Evented<SliceMapEvents> {
     const r = this.renderer;
     const meta = this.state.meta;
     if (!r || !meta || this.removed) return;
+    const now = performance.now();
+    for (const hook of [...this.frameHooks]) hook(now);
     const q = this.state.query(this.getView(), this.prefetchMargin);
-    if (this.sentSeq !== this.viewSeq) {
+    if (this.sentSeq !== this.viewSeq || this.aheadChanged) {
       this.sentSeq = this.viewSeq;
-      this.source.setView({ seq: this.viewSeq, visible: q.visible, margin: q.margin, zMin: q.zMin, zMax: q.zMax, centerX: q.view.centerX, centerY: q.view.centerY, z: q.z });
+      this.aheadChanged = false;
+      const ahead = this.ahead.map((v) => this.aheadView(v));
+      this.source.setView({ seq: this.viewSeq, visible: q.visible, margin: q.margin, zMin: q.zMin, zMax: q.zMax, centerX: q.view.centerX, centerY: q.view.centerY, z: q.z, ahead });
     }
     if (r.lost) return; // contextrestored schedules the next frame
     this.frameNo++;
     if (this.uploadPending()) this.accumulated = 0;
-    const evicted = r.evict(this.visibleSet, this.marginSet);
+    const evicted = r.evict(this.visibleSet, this.keptSet());
     this.source.evicted(evicted);
 
     // Draw the chunks on the GPU that meet the view (whatever the worker says is needed: until
@@ -478,7 +541,6 @@ export class SliceMap extends Evented<SliceMapEvents> {
         chunks.push(c);
       }
     }
-    const now = performance.now();
     const moving = now - this.lastSliceMove < MOVING_MS;
     const blendOn = this.blending.mode === 'always' || (this.blending.mode === 'moving' && moving);
     if (blendOn !== this.blendingWasOn) this.accumulated = 0;
@@ -527,6 +589,25 @@ export class SliceMap extends Evented<SliceMapEvents> {
     }
   }
 
+  /** The chunks kept on the GPU beyond the budget besides those on screen: margin and ahead. */
+  private keptSet(): Set<string> {
+    if (this.aheadSet.size === 0) return this.marginSet;
+    return new Set([...this.marginSet, ...this.aheadSet]);
+  }
+
+  /** What the index is asked for a view to come: its box (with the margin) and z range. */
+  private aheadView(v: PrefetchView): AheadView {
+    const g = this.deviceSize();
+    const st = new ViewState();
+    if (this.state.meta) st.setMeta(this.state.meta);
+    st.spec = this.state.spec;
+    st.zPinned = v.z ?? null;
+    [st.centerX, st.centerY] = v.center;
+    st.scale = v.scaleDenominator;
+    const q = st.query(st.geometry(g.width, g.height, this.deviceRatio()), this.prefetchMargin);
+    return { box: q.margin, zMin: q.zMin, zMax: q.zMax, centerX: v.center[0], centerY: v.center[1], z: q.z };
+  }
+
   /** Uploads chunks that arrived, within the per-frame byte budget; true when any went up. */
   private uploadPending(): boolean {
     const r = this.renderer!;
@@ -536,12 +617,13 @@ export class SliceMap extends Evented<SliceMapEvents> {
     while (this.pending.length > 0 && bytes < this.uploadBytesPerFrame) {
       const c = this.pending.shift()!;
       // A chunk the view no longer needs is not kept (it is fetched again if it comes back).
-      if (this.needed && this.needed.seq === this.viewSeq && !this.visibleSet.has(c.file) && !this.marginSet.has(c.file)) {
+      if (this.needed && this.needed.seq === this.viewSeq && !this.visibleSet.has(c.file) && !this.marginSet.has(c.file) && !this.aheadSet.has(c.file)) {
         dropped.push(c.file);
         continue;
       }
       r.upload(c, this.frameNo);
       this.source.uploaded(c.file);
+      this.fire('data', { file: c.file });
       bytes += c.vertexByteLength + c.indexSize * 3 * c.triangleCount;
       any = true;
     }

@@ -33,13 +33,22 @@ export interface OpenOptions {
   deviceScaleFactor?: number;
   /** Runs in the page before its scripts (e.g. to take WebGL2 away). */
   initScript?: string;
+  /** The page under the base URL (default index.html, the engine's test page). */
+  page?: string;
+  /** A touch screen (touch events and taps). */
+  hasTouch?: boolean;
+  reducedMotion?: 'reduce' | 'no-preference';
+  /** The URL's fragment, with its #. */
+  hash?: string;
 }
 
-/** Opens the demo page with the given query parameters (source etc.). */
+/** Opens the engine's test page (or opts.page) with the given query parameters (source etc.). */
 export async function openMap(browser: Browser, baseUrl: string, params: Record<string, string | number>, opts: OpenOptions = {}): Promise<MapPage> {
   const context = await browser.newContext({
     viewport: { width: opts.width ?? 640, height: opts.height ?? 480 },
     deviceScaleFactor: opts.deviceScaleFactor ?? 1,
+    hasTouch: opts.hasTouch ?? false,
+    reducedMotion: opts.reducedMotion ?? 'no-preference',
   });
   const page = await context.newPage();
   if (opts.initScript) await page.addInitScript(opts.initScript);
@@ -58,7 +67,7 @@ export async function openMap(browser: Browser, baseUrl: string, params: Record<
     });
   });
   const q = new URLSearchParams(Object.entries(params).map(([k, v]): [string, string] => [k, String(v)]));
-  await page.goto(`${baseUrl}index.html?${q}`);
+  await page.goto(`${baseUrl}${opts.page ?? 'index.html'}?${q}${opts.hash ?? ''}`);
   return {
     page,
     context,

@@ -2,6 +2,7 @@
 // server for the client and the cube, and Chromium; and after each test, the check that the
 // page logged no console error or uncaught exception.
 import assert from 'node:assert/strict';
+import { after, afterEach, before } from 'node:test';
 import type { Browser } from 'playwright-core';
 import { launchChromium, type MapPage } from './browser.js';
 import { buildCube, clientDir, otterlo400, readCube, type BuiltCube, type CubeContents } from './cube.js';
@@ -32,4 +33,28 @@ export async function tearDownTestBed(bed: Partial<TestBed> | undefined): Promis
 export async function checkAndClose(mp: MapPage | null): Promise<void> {
   if (mp) assert.deepEqual(mp.problems, [], 'no console errors or uncaught exceptions');
   await mp?.close();
+}
+
+export interface SuiteBed extends TestBed {
+  /** The running test's page: checked for console errors and closed after the test. */
+  page: MapPage | null;
+}
+
+/**
+ * In a describe(): sets the test bed up before its tests and down after them, and checks and
+ * closes each test's page (bed.page). The fields are there from the first test on.
+ */
+export function useTestBed(buildArgs: string[] = []): SuiteBed {
+  const bed = { page: null } as SuiteBed;
+  before(async () => {
+    Object.assign(bed, await setUpTestBed(buildArgs));
+  });
+  afterEach(async () => {
+    await checkAndClose(bed.page);
+    bed.page = null;
+  });
+  after(async () => {
+    await tearDownTestBed(bed);
+  });
+  return bed;
 }

@@ -220,5 +220,7 @@ export class Renderer {
       if (g.style) this.gl.deleteTexture(g.style.texture);
     }
     this.gpu = null;
+    // Gives the context itself back now rather than whenever the canvas is collected.
+    this.gl.getExtension('WEBGL_lose_context')?.loseContext();
   }
 }

@@ -2,7 +2,8 @@
 // - a view asks the index for the chunks under it (plus a margin) over its z range;
 // - each chunk has one status; a chunk is never requested twice at once;
 // - a request for a chunk that left the view (and its margin) is aborted;
-// - the nearest to the view centre and base z go first, the on-screen ones before the margin.
+// - the nearest to the view centre and base z go first, the on-screen ones before the margin,
+//   then those of the views ahead (a flight's path), in the order they will be shown.
 import type { ChunkLeaf } from '../shared/cube-index.js';
 import { boxMeets, chunkPriority } from '../shared/index-query.js';
 import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
@@ -21,6 +22,8 @@ interface Entry {
 export type Post = (msg: FromWorker, transfer?: Transferable[]) => void;
 
 const MARGIN_TIER = 1e6;
+/** Chunks of the i-th view ahead rank from AHEAD_TIER + i * MARGIN_TIER. */
+const AHEAD_TIER = 1e8;
 
 export class ChunkScheduler {
   private readonly entries = new Map<string, Entry>();
@@ -41,22 +44,35 @@ export class ChunkScheduler {
     const res = this.tree.query(q);
     const queryMs = performance.now() - t0;
     const visibleQ = { ground: view.visible, zMin: view.zMin, zMax: view.zMax };
-    const halfDiag = Math.hypot(view.visible[2] - view.visible[0], view.visible[3] - view.visible[1]) / 2;
-    const zScale = Math.max(1, view.zMax - view.zMin);
     const visible: string[] = [];
     const margin: string[] = [];
+    const ahead: string[] = [];
     const needed = new Set<string>();
-    for (const leaf of res.leaves) {
+    const missing = new Set(res.missing);
+    const want = (leaf: ChunkLeaf, priority: number): void => {
       let e = this.entries.get(leaf.file);
       if (!e) {
         e = { leaf, status: 'not-requested', controller: null, priority: 0 };
         this.entries.set(leaf.file, e);
       }
-      const onScreen = boxMeets(leaf.bbox, visibleQ);
-      e.priority = chunkPriority(leaf.bbox, view.centerX, view.centerY, view.z, halfDiag, zScale) + (onScreen ? 0 : MARGIN_TIER);
-      (onScreen ? visible : margin).push(leaf.file);
+      e.priority = priority;
       needed.add(leaf.file);
+    };
+    const rank = view.visible;
+    for (const leaf of res.leaves) {
+      const onScreen = boxMeets(leaf.bbox, visibleQ);
+      want(leaf, priorityIn(leaf, rank, view) + (onScreen ? 0 : MARGIN_TIER));
+      (onScreen ? visible : margin).push(leaf.file);
     }
+    (view.ahead ?? []).forEach((a, i) => {
+      const r = this.tree.query({ ground: a.box, zMin: a.zMin, zMax: a.zMax });
+      for (const m of r.missing) missing.add(m);
+      for (const leaf of r.leaves) {
+        if (needed.has(leaf.file)) continue;
+        want(leaf, AHEAD_TIER + i * MARGIN_TIER + priorityIn(leaf, a.box, a));
+        ahead.push(leaf.file);
+      }
+    });
     this.needed = needed;
     for (const [file, e] of this.entries) {
       if (needed.has(file)) continue;
@@ -69,9 +85,9 @@ export class ChunkScheduler {
         this.setStatus(e, 'not-requested');
       }
     }
-    this.post({ type: 'needed', seq: view.seq, visible, margin, indexComplete: res.missing.length === 0, queryMs, visited: res.visited });
-    if (res.missing.length > 0) {
-      this.tree.loadSubs(res.missing).then(
+    this.post({ type: 'needed', seq: view.seq, visible, margin, ahead, indexComplete: res.missing.length === 0, queryMs, visited: res.visited });
+    if (missing.size > 0) {
+      this.tree.loadSubs([...missing]).then(
         () => {
           if (this.view === view) this.setView(view);
         },
@@ -147,6 +163,12 @@ export class ChunkScheduler {
   private postError(error: SourceErrorInfo): void {
     this.post({ type: 'error', error });
   }
+}
+
+/** Nearest to the centre and base z of a view with ground box `box` first. */
+function priorityIn(leaf: ChunkLeaf, box: [number, number, number, number], v: { centerX: number; centerY: number; z: number; zMin: number; zMax: number }): number {
+  const halfDiag = Math.hypot(box[2] - box[0], box[3] - box[1]) / 2;
+  return chunkPriority(leaf.bbox, v.centerX, v.centerY, v.z, halfDiag, Math.max(1, v.zMax - v.zMin));
 }
 
 function chunkError(err: unknown, file: string, url: string): SourceErrorInfo {

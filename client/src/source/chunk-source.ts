@@ -2,12 +2,14 @@
 // chunk's status, and turns the worker's messages into events.
 import type { CubeMeta } from '../shared/cube-index.js';
 import { Evented } from '../events.js';
+import { createChunkWorker } from './create-worker.js';
 import type { ChunkPayload, ChunkStatus, FeatureInfo, FromWorker, SourceErrorInfo, SourceOptions, ToWorker, ViewRequest } from './worker-protocol.js';
 
 export interface NeededChunks {
   seq: number;
   visible: string[];
   margin: string[];
+  ahead: string[];
   indexComplete: boolean;
   queryMs: number;
 }
@@ -34,7 +36,7 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
     super();
     // The index URL: a cube directory (ending in /) means its index.json.
     this.url = new URL(url.endsWith('/') ? `${url}index.json` : url, location.href).href;
-    this.worker = new Worker(new URL('./chunk-worker.ts', import.meta.url), { type: 'module', name: 'ssc-chunks' });
+    this.worker = createChunkWorker();
     this.worker.addEventListener('message', (ev: MessageEvent<FromWorker>) => this.receive(ev.data));
     this.worker.addEventListener('error', (ev) => this.fire('error', { kind: 'index', message: `chunk worker failed: ${ev.message}`, url: this.url }));
     this.send({ type: 'init', url: this.url, options: { ...defaultSourceOptions, ...options } });

@@ -24,6 +24,18 @@ export interface ViewRequest {
   centerX: number;
   centerY: number;
   z: number;
+  /** Views the map will show soon, in order (a flight's path): their chunks are fetched after the view's own. */
+  ahead?: AheadView[];
+}
+
+/** A view to come: its ground box, the z range of its surface, its centre and base z. */
+export interface AheadView {
+  box: [number, number, number, number];
+  zMin: number;
+  zMax: number;
+  centerX: number;
+  centerY: number;
+  z: number;
 }
 
 export type ToWorker =
@@ -77,6 +89,8 @@ export type FromWorker =
       seq: number;
       visible: string[];
       margin: string[];
+      /** Chunks of the views ahead that the view itself does not need, in fetch order. */
+      ahead: string[];
       /** False while sub-index files the view reaches are still loading. */
       indexComplete: boolean;
       queryMs: number;

@@ -1,0 +1,35 @@
+// The library's public surface: the map, its controls, the research tools and the scale
+// helpers. The builds start from bundle.ts, which adds the stylesheet; the type declarations
+// (tsconfig.lib.json) from here.
+
+export { VarioMap } from '../vario-map.js';
+export type {
+  AnimationOptions,
+  Bbox,
+  BlendingOptions,
+  BlendMode,
+  BoundaryOptions,
+  Camera,
+  CameraOptions,
+  Control,
+  ControlPosition,
+  Feature,
+  FlyToOptions,
+  HandlerName,
+  InteractionSettings,
+  MapMoveEvent,
+  MapPointerEvent,
+  SourceErrorInfo,
+  SurfaceSpec,
+  VarioMapEvents,
+  VarioMapOptions,
+  VarioMapSettings,
+} from '../vario-map.js';
+export type { Handler } from '../interaction/interaction-context.js';
+export type { CubeMeta } from '../shared/cube-index.js';
+export { AttributionControl } from '../ui/attribution-control.js';
+export { ScaleBar } from '../ui/scale-bar.js';
+export { SettingsPanel, type SurfaceMode } from '../ui/settings-panel.js';
+export { ZoomControl } from '../ui/zoom-control.js';
+export { InteractionLog, type LogEntry } from '../research/interaction-log.js';
+export { scaleAtZoom, zoomAtScale } from '../shared/zoom-levels.js';

@@ -1,0 +1,189 @@
+// The published builds in plain HTML pages, as docs/embedding.md shows them: the script-tag
+// (UMD) build with its inlined worker, and the ES module build with its worker file; and
+// remove(), which must leave no worker, no GPU context and no listener behind.
+import assert from 'node:assert/strict';
+import { cp, mkdtemp, rm, writeFile } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { after, afterEach, before, describe, test } from 'node:test';
+import type { Browser, Page } from 'playwright-core';
+import { launchChromium, openMap, type MapPage } from './helpers/browser.js';
+import { buildCube, otterlo400, readCube, repoRoot, type BuiltCube, type CubeContents } from './helpers/cube.js';
+import { hexColour, pixel, screenshot } from './helpers/map-page.js';
+import { checkAndClose } from './helpers/test-bed.js';
+import { startTestServer, type TestServer } from './helpers/test-server.js';
+import { camera, idle, settle, type VarioWindow } from './helpers/vario-page.js';
+
+const HEAD = `<!doctype html>
+<html lang="en">
+<head>
+  <meta charset="utf-8">
+  <title>Map</title>
+  <link rel="icon" href="data:,">
+  <link rel="stylesheet" href="lib/vario-map.css">
+  <style>html, body { margin: 0; height: 100%; } #map { position: absolute; inset: 0; }</style>
+</head>
+<body>
+  <div id="map"></div>`;
+
+const PAGES: Record<string, string> = {
+  'script-tag.html': `${HEAD}
+  <script src="lib/vario-map.umd.js"></script>
+  <script>
+    var map = new vario.VarioMap({ container: 'map', source: 'cube/index.json' });
+    map.addControl(new vario.ZoomControl());
+    map.addControl(new vario.ScaleBar(), 'bottom-left');
+  </script>
+</body>
+</html>
+`,
+  'module.html': `${HEAD}
+  <script type="module">
+    import { VarioMap, ZoomControl, ScaleBar } from './lib/vario-map.js';
+    const map = new VarioMap({ container: 'map', source: 'cube/index.json' });
+    map.addControl(new ZoomControl());
+    map.addControl(new ScaleBar(), 'bottom-left');
+    window.map = map;
+  </script>
+</body>
+</html>
+`,
+  // The map is made and removed on the test's command, with every part that listens to something.
+  'remove.html': `${HEAD}
+  <script src="lib/vario-map.umd.js"></script>
+  <script>
+    window.create = function () {
+      window.map = new vario.VarioMap({ container: 'map', source: 'cube/', hash: true });
+      var settings = new vario.SettingsPanel();
+      map.addControl(new vario.ZoomControl()).addControl(settings).addControl(new vario.ScaleBar(), 'bottom-left');
+      settings.log.start();
+    };
+  </script>
+</body>
+</html>
+`,
+};
+
+describe('the library builds in plain pages (bgt_otterlo_400m)', () => {
+  let cube: BuiltCube;
+  let contents: CubeContents;
+  let site: string;
+  let server: TestServer;
+  let browser: Browser;
+  let mp: MapPage | null = null;
+
+  before(async () => {
+    cube = await buildCube(otterlo400, ['--no-precompress']);
+    contents = await readCube(cube.dir);
+    site = await mkdtemp(path.join(tmpdir(), 'ssc-site-'));
+    await cp(path.join(repoRoot, 'dist/lib'), path.join(site, 'lib'), { recursive: true });
+    for (const [name, html] of Object.entries(PAGES)) await writeFile(path.join(site, name), html);
+    server = await startTestServer({ clientDir: site, cubeDir: cube.dir });
+    browser = await launchChromium();
+  });
+
+  afterEach(async () => {
+    await checkAndClose(mp);
+    mp = null;
+  });
+
+  after(async () => {
+    await browser?.close();
+    await server?.close();
+    await cube?.remove();
+    if (site) await rm(site, { recursive: true, force: true });
+  });
+
+  async function open(name: string): Promise<{ page: Page }> {
+    mp = await openMap(browser, server.url, {}, { page: name });
+    return { page: mp.page };
+  }
+
+  /** Share of the screen in one of the style's class colours: a map is drawn. */
+  async function mapShare(page: Page): Promise<number> {
+    const colours = contents.meta.style.classes.map((c) => hexColour(c.color).join());
+    const img = await screenshot(page);
+    let n = 0;
+    for (let j = 0; j < img.height; j += 4) for (let i = 0; i < img.width; i += 4) if (colours.includes(pixel(img, i, j).join())) n++;
+    return n / ((img.width / 4) * (img.height / 4));
+  }
+
+  async function wheelZooms(page: Page): Promise<void> {
+    const start = await camera(page);
+    await page.mouse.move(320, 300);
+    await page.mouse.wheel(0, -100);
+    await settle(page, `window.map.getScaleDenominator() < ${start.scale * 0.75}`);
+    assert.ok(Math.abs((await camera(page)).scale - start.scale / 2) < 1e-6 * start.scale);
+  }
+
+  test('the script-tag build: a global, an inlined worker, a drawn map that zooms', async () => {
+    const { page } = await open('script-tag.html');
+    await idle(page);
+    assert.equal(await page.evaluate(() => (globalThis as unknown as VarioWindow).map.whenIdle().then((r) => r.complete)), true);
+    const urls = page.workers().map((w) => w.url());
+    assert.equal(urls.length, 1, `one worker: ${urls}`);
+    assert.match(urls[0]!, /^blob:/, 'the worker is inlined');
+    assert.ok((await mapShare(page)) > 0.5, 'the map is drawn');
+    assert.match(await page.locator('.vario-map-scale-denominator').innerText(), /^1:/);
+    assert.match(await page.locator('.vario-map-attrib').innerText(), /Kadaster/);
+    await wheelZooms(page);
+  });
+
+  test('the ES module build: its worker a file beside it, a drawn map that zooms', async () => {
+    const { page } = await open('module.html');
+    await idle(page);
+    const urls = page.workers().map((w) => w.url());
+    assert.equal(urls.length, 1);
+    assert.match(urls[0]!, /\/lib\/assets\/chunk-worker-[\w-]+\.js$/);
+    assert.ok((await mapShare(page)) > 0.5, 'the map is drawn');
+    await wheelZooms(page);
+  });
+
+  test('remove() ends the worker, gives the GPU context back and leaves no listener', async () => {
+    const { page } = await open('remove.html');
+    const cdp = await mp!.context.newCDPSession(page);
+    // Which script added a listener: only the library's count (Playwright's input adds its own).
+    const scripts = new Map<string, string>();
+    cdp.on('Debugger.scriptParsed', (e: { scriptId: string; url: string }) => scripts.set(e.scriptId, e.url));
+    await cdp.send('Debugger.enable');
+    const listeners = async (expr: string): Promise<string[]> => {
+      const { result } = (await cdp.send('Runtime.evaluate', { expression: expr })) as { result: { objectId?: string } };
+      if (!result.objectId) throw new Error(`no object for ${expr}`);
+      const r = (await cdp.send('DOMDebugger.getEventListeners', { objectId: result.objectId, depth: -1, pierce: true })) as { listeners: { type: string; scriptId: string }[] };
+      return r.listeners.filter((l) => (scripts.get(l.scriptId) ?? '').includes('/lib/vario-map')).map((l) => l.type).sort();
+    };
+    const targets = ['window', 'document', "document.getElementById('map')"];
+    const before = await Promise.all(targets.map(listeners));
+    assert.deepEqual(before, [[], [], []]);
+    await page.evaluate(() => (globalThis as unknown as { create(): void }).create());
+    await idle(page);
+    const during = await Promise.all(targets.map(listeners));
+    assert.ok(during.flat().length >= 3, `the map listens: ${during.map((l) => l.join(' ')).join(' / ')}`);
+    const onCanvas = await listeners('map.getCanvasContainer()');
+    for (const type of ['wheel', 'pointerdown', 'keydown', 'dblclick']) assert.ok(onCanvas.includes(type), `${type} on the canvas container: ${onCanvas}`);
+    assert.equal(page.workers().length, 1);
+    const worker = page.workers()[0]!;
+    const closed = new Promise<void>((resolve) => worker.on('close', () => resolve()));
+    await page.evaluate(() => {
+      const w = globalThis as unknown as { map: { getCanvas(): { getContext(t: string): unknown }; getCanvasContainer(): unknown }; gl: unknown; cc: unknown };
+      w.gl = w.map.getCanvas().getContext('webgl2');
+      w.cc = w.map.getCanvasContainer();
+    });
+    await wheelZooms(page);
+    const cam = await camera(page);
+    await page.evaluate(() => (globalThis as unknown as VarioWindow).map.remove());
+    await closed; // the worker is terminated
+    assert.equal(page.workers().length, 0);
+    assert.equal(await page.evaluate(() => (globalThis as unknown as { gl: { isContextLost(): boolean } }).gl.isContextLost()), true, 'the GPU context is given back');
+    const afterRemove = await Promise.all(targets.map(listeners));
+    assert.deepEqual(afterRemove, before, 'every listener the map added is gone');
+    assert.deepEqual(await listeners('window.cc'), [], 'and none is left on its (detached) canvas container');
+    assert.equal(await page.evaluate(() => (globalThis as unknown as { document: { getElementById(id: string): { childElementCount: number } } }).document.getElementById('map').childElementCount), 0);
+    // Input now does nothing, and nothing fails.
+    await page.mouse.move(320, 240);
+    await page.mouse.wheel(0, -100);
+    await page.keyboard.press('+');
+    await page.waitForTimeout(300);
+    assert.deepEqual(await camera(page), cam);
+  });
+});
