@@ -21,9 +21,11 @@ export default defineConfig({
         index: fileURLToPath(new URL('./index.html', import.meta.url)),
         demo: fileURLToPath(new URL('./demo.html', import.meta.url)),
       },
+      // Lowercase hex hashes in the names, which servers recognise as immutable (server/cache-control.ts).
+      output: { hashCharacters: 'hex' },
     },
   },
-  worker: { format: 'es' },
+  worker: { format: 'es', rollupOptions: { output: { hashCharacters: 'hex' } } },
   plugins: [
     {
       name: 'clear-assets',

@@ -5,7 +5,6 @@
 // project's static server until Ctrl-C. PORT picks the port (default 8080, else a free one).
 import { spawnSync } from 'node:child_process';
 import { existsSync, readdirSync, renameSync, rmSync, statSync } from 'node:fs';
-import { createServer } from 'node:http';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 
@@ -44,43 +43,21 @@ if (cubeIsCurrent()) {
   renameSync(tmp, out);
 }
 
-const { createStaticServer } = await import(path.join(root, 'dist/server/static-server.js'));
-const demo = createStaticServer({ root: clientDir });
-const cube = createStaticServer({ root: out });
+const { createSiteServer } = await import(path.join(root, 'dist/server/site-server.js'));
 // One origin for both: /chunks/... is the cube, everything else the built client.
-const front = createServer((req, res) => {
-  const url = req.url ?? '/';
-  if (url === '/chunks' || url.startsWith('/chunks/') || url.startsWith('/chunks?')) {
-    req.url = url.slice('/chunks'.length) || '/';
-    cube.server.emit('request', req, res);
-  } else {
-    if (url === '/' || url.startsWith('/?')) req.url = `/demo.html${url.slice(1)}`;
-    demo.server.emit('request', req, res);
-  }
-});
-
-function listen(port) {
-  return new Promise((resolve, reject) => {
-    front.once('error', reject);
-    front.listen(port, '127.0.0.1', () => {
-      front.off('error', reject);
-      resolve(front.address().port);
-    });
-  });
-}
+const site = createSiteServer({ clientDir, cubeDir: out });
 
 let port;
 try {
-  port = await listen(Number(process.env.PORT ?? 8080));
+  port = await site.listen(Number(process.env.PORT ?? 8080), '127.0.0.1');
 } catch (err) {
   if (err.code !== 'EADDRINUSE' || process.env.PORT) throw err;
-  port = await listen(0);
+  port = await site.listen(0, '127.0.0.1');
 }
 console.log(`\nThe vario-scale map of Otterlo: http://127.0.0.1:${port}/\n(Ctrl-C stops the server.)`);
 
 const stop = () => {
-  front.closeAllConnections();
-  front.close(() => process.exit(0));
+  void site.close().then(() => process.exit(0));
 };
 process.on('SIGINT', stop);
 process.on('SIGTERM', stop);

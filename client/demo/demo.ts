@@ -1,8 +1,10 @@
 // The full-page demo `npm start` serves, built only on the library's public API: every control,
 // the URL hash, flights to a few places, and the face under a click.
 // ?source=<index.json or directory> picks another cube (default: chunks/ beside the page);
-// ?reduceMotion=1|0 and ?supersampling=n override those options.
+// ?reduceMotion=1|0 and ?supersampling=n override those options; ?sw=0 leaves the service
+// worker (offline use) out.
 import { ScaleBar, SettingsPanel, VarioMap, ZoomControl, type Control, type VarioMapOptions } from '../src/lib/bundle.js';
+import { enableOffline } from './offline.js';
 
 const params = new URLSearchParams(location.search);
 const options: VarioMapOptions = { container: 'map', source: params.get('source') ?? 'chunks/', hash: true };
@@ -67,5 +69,27 @@ class InfoBox implements Control {
 }
 map.addControl(new InfoBox(), 'top-left');
 map.on('error', (e) => console.warn(`map: ${e.kind} error: ${e.message}`));
+
+/** Offered when the service worker has fetched a new build of the cube: reloading shows it. */
+function showNewBuild(): void {
+  if (document.querySelector('.demo-update')) return;
+  const box = document.createElement('div');
+  box.className = 'demo-update';
+  box.setAttribute('role', 'status');
+  const text = document.createElement('span');
+  text.textContent = 'The map data has been updated. ';
+  const reload = document.createElement('button');
+  reload.type = 'button';
+  reload.textContent = 'Reload';
+  reload.addEventListener('click', () => location.reload());
+  box.append(text, reload);
+  document.body.appendChild(box);
+}
+
+if (params.get('sw') !== '0') {
+  const source = options.source;
+  const indexUrl = new URL(source.endsWith('/') ? `${source}index.json` : source, location.href).href;
+  enableOffline(map, indexUrl, showNewBuild);
+}
 
 Object.assign(window, { map, settings });

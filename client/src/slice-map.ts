@@ -336,8 +336,11 @@ export class SliceMap extends Evented<SliceMapEvents> {
 
   /** Resolves at the next idle, or now when the map is idle. */
   whenIdle(): Promise<SliceMapEvents['idle']> {
-    if (this.idleFired && !this.raf) return Promise.resolve({ complete: this.loaded() });
-    return this.once('idle');
+    if (!this.idleFired) return this.once('idle');
+    if (!this.raf) return Promise.resolve({ complete: this.loaded() });
+    // Settled, with one more frame due (a late answer, a failed chunk): 'idle' is not fired
+    // again for the same view, so look again after that frame (rAF callbacks run in order).
+    return new Promise((resolve) => requestAnimationFrame(() => resolve(this.whenIdle())));
   }
 
   chunkStatuses(): Map<string, ChunkStatus> {
@@ -360,6 +363,11 @@ export class SliceMap extends Evented<SliceMapEvents> {
     if (!this.renderer) return null;
     this.renderNowIfDirty();
     return this.renderer.readIds();
+  }
+
+  /** Absolute URLs of the cube's files received so far (see VarioMap.getLoadedUrls). */
+  getLoadedUrls(): Promise<string[]> {
+    return this.source.loadedUrls();
   }
 
   /** The face under a CSS pixel position in the container, with its class, attributes and steps. */
@@ -545,7 +553,9 @@ export class SliceMap extends Evented<SliceMapEvents> {
     const blendOn = this.blending.mode === 'always' || (this.blending.mode === 'moving' && moving);
     if (blendOn !== this.blendingWasOn) this.accumulated = 0;
     this.blendingWasOn = blendOn;
-    const n = this.accumulated;
+    // A redraw after the accumulation is complete (a late answer, a dropped chunk) starts it
+    // over: one more jittered frame averaged in would blur the edges of the finished image.
+    const n = this.accumulated >= this.supersampling ? 0 : this.accumulated;
     const triangles = r.render(
       {
         view: q.view,

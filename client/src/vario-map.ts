@@ -407,6 +407,15 @@ export class VarioMap extends Evented<VarioMapEvents> {
     return this.engine.queryFeatures(point);
   }
 
+  /**
+   * Absolute URLs of the cube's files this map has received (index, pages, chunks), oldest
+   * first: what a service worker that took control after the map started must still cache for
+   * these views to work offline (docs/deploy.md).
+   */
+  getLoadedUrls(): Promise<string[]> {
+    return this.engine.getLoadedUrls();
+  }
+
   loaded(): boolean {
     return this.engine.loaded();
   }

@@ -40,6 +40,8 @@ export interface OpenOptions {
   reducedMotion?: 'reduce' | 'no-preference';
   /** The URL's fragment, with its #. */
   hash?: string;
+  /** Called with the new page before it loads, e.g. to watch every response from the first. */
+  onPage?: (page: Page) => void;
 }
 
 /** Opens the engine's test page (or opts.page) with the given query parameters (source etc.). */
@@ -52,6 +54,7 @@ export async function openMap(browser: Browser, baseUrl: string, params: Record<
   });
   const page = await context.newPage();
   if (opts.initScript) await page.addInitScript(opts.initScript);
+  opts.onPage?.(page);
   const problems: string[] = [];
   const expected: RegExp[] = [];
   page.on('console', (m) => {

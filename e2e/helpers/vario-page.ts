@@ -51,7 +51,7 @@ export interface Camera {
 
 /** Opens the demo (demo.html, built on the public API) on the test cube and waits until it is idle. */
 export async function openDemo(browser: Browser, baseUrl: string, params: Record<string, string | number> = {}, opts: OpenOptions = {}): Promise<MapPage> {
-  const mp = await openMap(browser, baseUrl, { source: 'cube/', supersampling: 1, ...params }, { page: 'demo.html', ...opts });
+  const mp = await openMap(browser, baseUrl, { source: 'cube/', supersampling: 1, sw: 0, ...params }, { page: 'demo.html', ...opts });
   await idle(mp.page);
   return mp;
 }

@@ -28,8 +28,9 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
   readonly url: string;
   private readonly worker: Worker;
   private readonly statuses = new Map<string, ChunkStatus>();
-  private readonly featureRequests = new Map<number, { resolve: (f: (FeatureInfo | null)[]) => void; reject: (e: Error) => void }>();
-  private nextFeatureRequest = 1;
+  // Questions to the worker awaiting their answer, by id.
+  private readonly requests = new Map<number, { resolve: (answer: unknown) => void; reject: (e: Error) => void }>();
+  private nextRequest = 1;
   meta: CubeMeta | null = null;
 
   constructor(url: string, options: Partial<SourceOptions> = {}) {
@@ -68,17 +69,33 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
   }
 
   features(faces: number[]): Promise<(FeatureInfo | null)[]> {
-    const id = this.nextFeatureRequest++;
-    return new Promise((resolve, reject) => {
-      this.featureRequests.set(id, { resolve, reject });
-      this.send({ type: 'features', id, faces });
-    });
+    return this.ask<(FeatureInfo | null)[]>((id) => ({ type: 'features', id, faces }));
+  }
+
+  /** Absolute URLs of every file received so far (index, pages, chunks), oldest first. */
+  loadedUrls(): Promise<string[]> {
+    return this.ask<string[]>((id) => ({ type: 'loaded-urls', id }));
   }
 
   destroy(): void {
     this.worker.terminate();
-    for (const r of this.featureRequests.values()) r.reject(new Error('the map was removed'));
-    this.featureRequests.clear();
+    for (const r of this.requests.values()) r.reject(new Error('the map was removed'));
+    this.requests.clear();
+  }
+
+  private ask<T>(message: (id: number) => ToWorker): Promise<T> {
+    const id = this.nextRequest++;
+    return new Promise<T>((resolve, reject) => {
+      this.requests.set(id, { resolve: resolve as (answer: unknown) => void, reject });
+      this.send(message(id));
+    });
+  }
+
+  private answer(id: number, answer: unknown, error?: string): void {
+    const r = this.requests.get(id);
+    this.requests.delete(id);
+    if (error !== undefined) r?.reject(new Error(error));
+    else r?.resolve(answer);
   }
 
   private send(msg: ToWorker): void {
@@ -105,13 +122,12 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
       case 'error':
         this.fire('error', msg.error);
         break;
-      case 'features': {
-        const r = this.featureRequests.get(msg.id);
-        this.featureRequests.delete(msg.id);
-        if (msg.error !== undefined) r?.reject(new Error(msg.error));
-        else r?.resolve(msg.features);
+      case 'features':
+        this.answer(msg.id, msg.features, msg.error);
         break;
-      }
+      case 'loaded-urls':
+        this.answer(msg.id, msg.urls);
+        break;
     }
   }
 }

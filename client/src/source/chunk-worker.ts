@@ -17,15 +17,18 @@ let scheduler: ChunkScheduler | null = null;
 let pages: FeaturePages | null = null;
 let pendingView: ViewRequest | null = null;
 let ready: Promise<void> | null = null;
+// Every file received whole, in order: what a service worker must cache to show these views offline.
+const loadedUrls = new Set<string>();
 
 scope.addEventListener('message', (ev) => {
   const msg = ev.data;
   switch (msg.type) {
     case 'init': {
-      ready = IndexTree.load(msg.url, msg.options).then(
+      const options = { ...msg.options, onLoaded: (url: string) => loadedUrls.add(url) };
+      ready = IndexTree.load(msg.url, options).then(
         (tree) => {
-          scheduler = new ChunkScheduler(tree, msg.options, post);
-          pages = new FeaturePages(tree.index.meta.faces, tree.index.meta.attributes, (f) => tree.url(f), msg.options);
+          scheduler = new ChunkScheduler(tree, options, post);
+          pages = new FeaturePages(tree.index.meta.faces, tree.index.meta.attributes, (f) => tree.url(f), options);
           post({ type: 'meta', meta: tree.index.meta });
           if (pendingView) scheduler.setView(pendingView);
           pendingView = null;
@@ -59,5 +62,8 @@ scope.addEventListener('message', (ev) => {
       run().catch((err: unknown) => post({ type: 'features', id, features: [], error: (err as Error).message }));
       break;
     }
+    case 'loaded-urls':
+      post({ type: 'loaded-urls', id: msg.id, urls: [...loadedUrls] });
+      break;
   }
 });

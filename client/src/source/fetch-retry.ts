@@ -8,6 +8,8 @@ export interface RetryOptions {
   /** Wait before the first retry; doubled for each next one. */
   backoffMs: number;
   maxBackoffMs: number;
+  /** Told the URL of every body received whole (the worker lists them for offline caching). */
+  onLoaded?: (url: string) => void;
 }
 
 export type FetchFailureKind = 'http' | 'network' | 'abort';
@@ -50,7 +52,11 @@ export async function fetchBytes(url: string, opts: RetryOptions, signal?: Abort
     let failure: FetchFailure;
     try {
       const res = await fetch(url, signal ? { signal } : {});
-      if (res.ok) return await res.arrayBuffer();
+      if (res.ok) {
+        const body = await res.arrayBuffer();
+        opts.onLoaded?.(url);
+        return body;
+      }
       // Drain nothing: the body of an error is not needed; cancel it to free the connection.
       void res.body?.cancel().catch(() => undefined);
       failure = new FetchFailure(`HTTP ${res.status} for ${url}`, 'http', url, res.status, attempt);

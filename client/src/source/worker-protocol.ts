@@ -43,7 +43,8 @@ export type ToWorker =
   | { type: 'view'; view: ViewRequest }
   | { type: 'uploaded'; file: string }
   | { type: 'evicted'; files: string[] }
-  | { type: 'features'; id: number; faces: number[] };
+  | { type: 'features'; id: number; faces: number[] }
+  | { type: 'loaded-urls'; id: number };
 
 export interface SourceErrorInfo {
   kind: 'http' | 'network' | 'corrupt' | 'index';
@@ -99,4 +100,5 @@ export type FromWorker =
   | { type: 'status'; file: string; status: ChunkStatus }
   | { type: 'chunk'; chunk: ChunkPayload }
   | { type: 'error'; error: SourceErrorInfo }
-  | { type: 'features'; id: number; features: (FeatureInfo | null)[]; error?: string };
+  | { type: 'features'; id: number; features: (FeatureInfo | null)[]; error?: string }
+  | { type: 'loaded-urls'; id: number; urls: string[] };
