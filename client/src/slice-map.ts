@@ -553,29 +553,32 @@ export class SliceMap extends Evented<SliceMapEvents> {
     const blendOn = this.blending.mode === 'always' || (this.blending.mode === 'moving' && moving);
     if (blendOn !== this.blendingWasOn) this.accumulated = 0;
     this.blendingWasOn = blendOn;
-    // A redraw after the accumulation is complete (a late answer, a dropped chunk) starts it
-    // over: one more jittered frame averaged in would blur the edges of the finished image.
-    const n = this.accumulated >= this.supersampling ? 0 : this.accumulated;
-    const triangles = r.render(
-      {
-        view: q.view,
-        surface: this.getSurface(),
-        zMax: meta.zMax,
-        jitter: jitter(n),
-        colour: colourParams({
+    // Once the accumulation is complete the finished image stays on screen: a frame asked for
+    // without a change (a late answer, a failed or dropped chunk) draws nothing, since one more
+    // jittered frame averaged in would blur its edges. Every change resets `accumulated`.
+    if (this.accumulated < this.supersampling) {
+      const n = this.accumulated;
+      const triangles = r.render(
+        {
           view: q.view,
-          ratio: this.deviceRatio(),
-          background: meta.style.background,
-          boundaries: this.boundaries,
-          blendDistance: blendOn ? this.blending.distance : 0,
-          weight: weight(n),
-        }),
-      },
-      chunks,
-    );
-    this.accumulated = n + 1;
-    this.lastStats = { frame: this.frameNo, triangles, chunks: chunks.length, queryMs: this.lastStats.queryMs, gpuBytes: r.store.bytes, jittered: n > 0 };
-    this.fire('render', this.stats());
+          surface: this.getSurface(),
+          zMax: meta.zMax,
+          jitter: jitter(n),
+          colour: colourParams({
+            view: q.view,
+            ratio: this.deviceRatio(),
+            background: meta.style.background,
+            boundaries: this.boundaries,
+            blendDistance: blendOn ? this.blending.distance : 0,
+            weight: weight(n),
+          }),
+        },
+        chunks,
+      );
+      this.accumulated = n + 1;
+      this.lastStats = { frame: this.frameNo, triangles, chunks: chunks.length, queryMs: this.lastStats.queryMs, gpuBytes: r.store.bytes, jittered: n > 0 };
+      this.fire('render', this.stats());
+    }
 
     const complete = this.loaded();
     if (complete && !this.loadFired) {

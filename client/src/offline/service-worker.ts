@@ -47,10 +47,16 @@ const isCubeFile = (url: URL): boolean => /\/[cfai]-[0-9a-f]{8,}\.(?:bin|json)$/
 async function pruneOtherBuilds(indexUrl: string, index: Response): Promise<void> {
   const referenced = new Set(referencedFiles(await index.text()));
   const files = await caches.open(FILES_CACHE);
-  // Sub-indexes of this build that are cached name files that must stay too.
-  for (const name of [...referenced].filter(isSubIndex)) {
+  // Sub-indexes of this build that are cached name files that must stay too, at any depth.
+  const subIndexes = [...referenced].filter(isSubIndex);
+  for (let name = subIndexes.pop(); name !== undefined; name = subIndexes.pop()) {
     const cached = await files.match(new URL(name, indexUrl).href);
-    if (cached) for (const f of referencedFiles(await cached.text())) referenced.add(f);
+    if (!cached) continue;
+    for (const f of referencedFiles(await cached.text())) {
+      if (referenced.has(f)) continue;
+      referenced.add(f);
+      if (isSubIndex(f)) subIndexes.push(f);
+    }
   }
   const keys = await files.keys();
   await Promise.all(unusedCubeFiles(keys.map((k) => k.url), indexUrl, referenced).map((u) => files.delete(u)));
