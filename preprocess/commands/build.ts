@@ -4,7 +4,7 @@ import { parseArgs } from 'node:util';
 import { InputError } from '../io/errors.js';
 import { generalizeFile } from '../pipeline.js';
 import { buildCube } from '../ssc/build-cube.js';
-import { readTgap } from '../tgap/format.js';
+import { readTgap, TGAP_MAGIC } from '../tgap/format.js';
 import type { Tgap } from '../tgap/model.js';
 import { generalizeOptionSpecs, parseNumber, pipelineOptions, UsageError } from './args.js';
 
@@ -23,7 +23,7 @@ async function isTgap(file: string): Promise<boolean> {
     try {
       const b = Buffer.alloc(4);
       await h.read(b, 0, 4, 0);
-      return b.readUInt32LE(0) === 0x50414754;
+      return b.readUInt32LE(0) === TGAP_MAGIC;
     } finally {
       await h.close();
     }

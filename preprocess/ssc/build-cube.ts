@@ -51,12 +51,12 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
     timings[name] = Math.round(now - t0);
     t0 = now;
   };
-  const { surfaces, stats, zTop } = buildSurfaces(t);
+  const { surfaces, stats } = buildSurfaces(t);
   lap('surfaces');
   log(`surfaces: ${surfaces.count} triangles (floor ${stats.floor}, merges ${stats.merge}, splits ${stats.split}, simplification ${stats.simplify}, redrawn ${stats.reemit})`);
   const info = scaleInfoOf(t);
   const plan = planChunks({
-    surfaces, xs: t.xs, ys: t.ys, extent: t.meta.extent, zTop,
+    surfaces, xs: t.xs, ys: t.ys, extent: t.meta.extent,
     scaleAt: (z) => scaleAtZ(info, z),
     viewPerScale: [(1280 * PIXEL_SIZE_MM) / 1000, (720 * PIXEL_SIZE_MM) / 1000],
     targetBytes: opts.chunkBytes ?? 256 * 1024,

@@ -22,7 +22,6 @@ export interface ChunkingInput {
   scaleAt: (z: number) => number;
   /** Ground width and height of a view per unit of scale denominator (1280 x 720 px at 0.28 mm: 0.3584, 0.2016). */
   viewPerScale: [number, number];
-  zTop: number;
   targetBytes: number;
 }
 
@@ -41,19 +40,17 @@ export function planChunks(inp: ChunkingInput): ChunkPlan {
     by0[i] = Math.min(ys[a]!, ys[b]!, ys[c]!);
     by1[i] = Math.max(ys[a]!, ys[b]!, ys[c]!);
     zl[i] = s.z[i]!;
-    zh[i] = Math.min(s.zEnd[i]!, inp.zTop);
+    // Already capped at the top of the cube by buildSurfaces.
+    zh[i] = s.zEnd[i]!;
   }
   const cost = triangleBytes(s);
   let total = 0;
   for (let i = 0; i < n; i++) total += cost[i]!;
   const target = Math.min(inp.targetBytes, total);
 
-  const groupBytes = [total];
-  const group = new Int32Array(n);
-
   // One list of all triangles per axis, sorted by it; splitting keeps each list sorted.
   const keys: ((i: number) => number)[] = [(i) => bx0[i]! + bx1[i]!, (i) => by0[i]! + by1[i]!, (i) => zl[i]!, (i) => zh[i]!];
-  const lists = keys.map((key) => groupStable(sortedBy(n, key), group, groupBytes.length));
+  const lists = keys.map((key) => sortedBy(n, key));
   const tmp = new Uint32Array(n);
   const left = new Uint8Array(n);
   const [vw, vh] = inp.viewPerScale;
@@ -197,33 +194,15 @@ export function planChunks(inp: ChunkingInput): ChunkPlan {
     split(lo, bestAt, kl, bestLeftBytes);
     split(bestAt, hi, k - kl, bytes - bestLeftBytes);
   };
-  let lo = 0;
-  for (let g = 0; g < groupBytes.length; g++) {
-    let hi = lo;
-    while (hi < n && group[lists[0]![hi]!] === g) hi++;
-    split(lo, hi, Math.max(1, Math.round(groupBytes[g]! / target)), groupBytes[g]!);
-    lo = hi;
-  }
+  split(0, n, Math.max(1, Math.round(total / target)), total);
   start.push(n);
   // The chunks' triangles in the order of the first axis list (any list holds the same sets).
-  const order = new Uint32Array(n);
   const chunkOf = new Int32Array(n);
   const x = lists[0]!;
   for (let c = 0; c + 1 < start.length; c++) for (let k = start[c]!; k < start[c + 1]!; k++) chunkOf[x[k]!] = c;
   // Within a chunk, keep a piece's triangles together (shared vertices) in a fixed order.
-  const within = sortedBy(n, (i) => chunkOf[i]! * 4294967296 + s.piece[i]!);
-  order.set(within);
+  const order = sortedBy(n, (i) => chunkOf[i]! * 4294967296 + s.piece[i]!);
   return { order, start };
-}
-
-/** A stable counting sort of `list` by group: each group's part keeps the list's order. */
-function groupStable(list: Uint32Array, group: Int32Array, groups: number): Uint32Array {
-  const start = new Int32Array(groups + 1);
-  for (const i of list) start[group[i]! + 1]!++;
-  for (let g = 0; g < groups; g++) start[g + 1]! += start[g]!;
-  const out = new Uint32Array(list.length);
-  for (const i of list) out[start[group[i]!]!++] = i;
-  return out;
 }
 
 /**

@@ -33,9 +33,8 @@ export interface CubeReport {
 
 export async function inspectCube(dir: string): Promise<CubeReport> {
   const cube = await CubeReader.open(dir);
-  await cube.loadAll();
+  const leaves = await cube.loadAll();
   const meta = cube.index.meta;
-  const leaves = cube.queryLoaded({ ground: [-Infinity, -Infinity, Infinity, Infinity], zMin: -Infinity, zMax: Infinity });
   const sizes = leaves.map((l) => l.bytes).sort((a, b) => a - b);
   const total = sizes.reduce((a, b) => a + b, 0);
   const mean = total / Math.max(1, sizes.length);

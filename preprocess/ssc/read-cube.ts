@@ -39,10 +39,9 @@ export class CubeReader {
     }
   }
 
-  /** Every sub-index file, so that queries run without reading anything. */
-  async loadAll(): Promise<void> {
-    const everything: QueryBox = { ground: [-Infinity, -Infinity, Infinity, Infinity], zMin: -Infinity, zMax: Infinity };
-    await this.query(everything);
+  /** Every sub-index file, so that queries run without reading anything; returns every chunk. */
+  loadAll(): Promise<ChunkLeaf[]> {
+    return this.query({ ground: [-Infinity, -Infinity, Infinity, Infinity], zMin: -Infinity, zMax: Infinity });
   }
 
   /** Synchronous query over what is loaded (after loadAll). */

@@ -71,7 +71,7 @@ export interface SurfaceStats extends TriangulateStats {
   reemit: number;
 }
 
-export function buildSurfaces(t: Tgap): { surfaces: Surfaces; stats: SurfaceStats; zTop: number } {
+export function buildSurfaces(t: Tgap): { surfaces: Surfaces; stats: SurfaceStats } {
   const steps = t.meta.steps;
   const zTop = steps + 1;
   const out = new Surfaces();
@@ -192,5 +192,5 @@ export function buildSurfaces(t: Tgap): { surfaces: Surfaces; stats: SurfaceStat
     const u = out.upper[i]!;
     out.zEnd[i] = u > 0 ? Math.min(zTop, faceEndZ(faces[u]!, steps)) : zTop;
   }
-  return { surfaces: out, stats, zTop };
+  return { surfaces: out, stats };
 }

@@ -10,14 +10,9 @@ import { parseSurface, surfaceZ } from '../../client/src/shared/surfaces.js';
 import { fitView, rasterizeAt } from '../map/rasterize.js';
 import { decodeTgap, encodeTgap, readTgap } from '../tgap/format.js';
 import { resolveFace } from '../tgap/model.js';
-import { dataset, runSsc, styleFile, tempDir } from './helpers.js';
+import { dataset, readIds, runSsc, styleFile, tempDir } from './helpers.js';
 
 const W = 240, H = 180;
-
-function readIds(file: string): Uint32Array {
-  const b = readFileSync(file);
-  return new Uint32Array(b.buffer.slice(b.byteOffset, b.byteOffset + b.byteLength));
-}
 
 /** Pixels where a differs from b, and of those the ones with no change of id around them in b. */
 function diff(a: Uint32Array, b: Uint32Array): { differ: number; offBoundary: number } {

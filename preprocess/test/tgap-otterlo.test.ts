@@ -4,18 +4,13 @@ import test from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { dataset, runSsc, styleFile, tempDir } from './helpers.js';
+import { dataset, readIds, runSsc, styleFile, tempDir } from './helpers.js';
 import { compareIds, rasterizeFeatures } from './reference-raster.js';
 import { readTgap } from '../tgap/format.js';
 import { EventKind, resolveFace, type Tgap } from '../tgap/model.js';
 import { fitView } from '../map/rasterize.js';
 
 const W = 400, H = 300;
-
-function readIds(file: string): Uint32Array {
-  const b = readFileSync(file);
-  return new Uint32Array(b.buffer.slice(b.byteOffset, b.byteOffset + b.byteLength));
-}
 
 /** Oriented boundary segments of every face alive at step s (face on the left). */
 function faceBoundaries(t: Tgap, s: number): Map<number, number[]> {

@@ -5,7 +5,7 @@ import { BinaryReader, BinaryWriter } from '../io/binary.js';
 import { InputError } from '../io/errors.js';
 import type { EventKind, Tgap, TgapEdge, TgapEvent, TgapFace, TgapMeta } from './model.js';
 
-const MAGIC = 0x50414754; // "TGAP" read as a little-endian u32
+export const TGAP_MAGIC = 0x50414754; // "TGAP" read as a little-endian u32
 export const TGAP_VERSION = 1;
 
 /** Offsets of variable-length lists: element i is items[off[i] .. off[i + 1]). */
@@ -29,7 +29,7 @@ function concatI32<T>(items: T[], get: (t: T) => ArrayLike<number> | undefined, 
 
 export function encodeTgap(t: Tgap): Uint8Array {
   const w = new BinaryWriter();
-  w.u32(MAGIC);
+  w.u32(TGAP_MAGIC);
   w.u32(TGAP_VERSION);
   w.json(t.meta);
   const xy = new Float64Array(t.xs.length * 2);
@@ -79,7 +79,7 @@ export function encodeTgap(t: Tgap): Uint8Array {
 
 export function decodeTgap(buf: Uint8Array, file: string): Tgap {
   const r = new BinaryReader(buf, file);
-  if (r.u32() !== MAGIC) throw new InputError('is not a tGAP file (bad magic)', { file });
+  if (r.u32() !== TGAP_MAGIC) throw new InputError('is not a tGAP file (bad magic)', { file });
   const version = r.u32();
   if (version !== TGAP_VERSION) throw new InputError(`has tGAP version ${version}; this program reads version ${TGAP_VERSION}`, { file });
   const meta = r.json<TgapMeta>();

@@ -6,7 +6,7 @@ import FlatQueue from 'flatqueue';
 import type { Style } from '../style.js';
 import type { Topology } from '../topology/build-topology.js';
 import { EventKind, REEMIT_PHASE, type TgapEdge, type TgapEvent, type TgapFace } from './model.js';
-import { EMPTY_U8, PlanarState } from './planar-state.js';
+import { ALIVE, EMPTY_U8, PlanarState } from './planar-state.js';
 import { simplifyEdge, StepTriangles } from './simplify.js';
 import { splitFace } from './split.js';
 
@@ -142,12 +142,11 @@ export function generalize(topo: Topology, classOf: (face: number) => number, st
    */
   const maybeReemit = (faces: Iterable<number>, k: number): void => {
     for (const f of [...new Set(faces)].sort((p, q) => p - q)) {
-      if (f <= 0 || st.faces[f]!.stepHigh !== 0x7fffffff) continue;
+      if (f <= 0 || st.faces[f]!.stepHigh !== ALIVE) continue;
       if (st.faceCost[f]! <= reemitFactor * st.faceVerts[f]! + reemitSlack) continue;
       const face = st.faces[f]!;
       const g = st.addFace(face.classIndex, face.feature, st.faceArea2[f]!);
       st.endFace(f, g, REEMIT_PHASE);
-      st.faceArea2[g] = st.faceArea2[f]!;
       st.faceCost[g] = st.faceVerts[g]!;
       events.push({ kind: EventKind.Reemit, step: k, loser: f, into: g });
       setImportance(g);
@@ -210,7 +209,7 @@ export function generalize(topo: Topology, classOf: (face: number) => number, st
     while (done < group && queue.length > 0 && deferred.length < 4 * group) {
       const pr = queue.peekValue()!;
       const L = queue.pop()!;
-      if (st.faces[L]!.stepHigh !== 0x7fffffff || pr !== importance[L]) continue;
+      if (st.faces[L]!.stepHigh !== ALIVE || pr !== importance[L]) continue;
       const { best, count } = bestNeighbour(L);
       if (best < 0) {
         stats.unmergeable++;
@@ -272,8 +271,8 @@ export function generalize(topo: Topology, classOf: (face: number) => number, st
   }
   const steps = st.step;
   // What is still alive lives on to the end.
-  for (const f of st.faces) if (f.stepHigh === 0x7fffffff) f.stepHigh = steps + 1;
-  for (const e of st.edges) if (e.stepHigh === 0x7fffffff) e.stepHigh = steps + 1;
+  for (const f of st.faces) if (f.stepHigh === ALIVE) f.stepHigh = steps + 1;
+  for (const e of st.edges) if (e.stepHigh === ALIVE) e.stepHigh = steps + 1;
   st.faces[0]!.stepHigh = steps + 1;
   return { xs: st.xs.slice(0, st.size), ys: st.ys.slice(0, st.size), faces: st.faces, edges: st.edges, events, facesAlive, stats };
 }
