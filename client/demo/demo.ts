@@ -86,10 +86,6 @@ function showNewBuild(): void {
   document.body.appendChild(box);
 }
 
-if (params.get('sw') !== '0') {
-  const source = options.source;
-  const indexUrl = new URL(source.endsWith('/') ? `${source}index.json` : source, location.href).href;
-  enableOffline(map, indexUrl, showNewBuild);
-}
+if (params.get('sw') !== '0') enableOffline(map, showNewBuild);
 
 Object.assign(window, { map, settings });

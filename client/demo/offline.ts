@@ -15,7 +15,7 @@ interface BroadcastUpdate {
 const isBroadcastUpdate = (d: unknown): d is BroadcastUpdate =>
   typeof d === 'object' && d !== null && (d as { meta?: unknown }).meta === 'workbox-broadcast-update';
 
-export function enableOffline(map: VarioMap, indexUrl: string, onNewBuild: () => void): void {
+export function enableOffline(map: VarioMap, onNewBuild: () => void): void {
   if (!('serviceWorker' in navigator)) return;
   const wb = new Workbox('sw.js');
   const handOver = async (): Promise<void> => {
@@ -28,7 +28,7 @@ export function enableOffline(map: VarioMap, indexUrl: string, onNewBuild: () =>
     void map.whenIdle().then(handOver);
   });
   navigator.serviceWorker.addEventListener('message', (ev: MessageEvent<unknown>) => {
-    if (isBroadcastUpdate(ev.data) && ev.data.payload.updatedURL === indexUrl) onNewBuild();
+    if (isBroadcastUpdate(ev.data) && ev.data.payload.updatedURL === map.getSourceUrl()) onNewBuild();
   });
   wb.register().catch((err: unknown) => console.warn(`offline use is off: ${(err as Error).message}`));
 }

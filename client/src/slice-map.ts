@@ -2,7 +2,7 @@
 // (WebGL2) and the view together and runs the frame loop; the embedding API (VarioMap) and the
 // UI controls build on its methods and events.
 import type { CubeMeta } from './shared/cube-index.js';
-import { boxMeets } from './shared/index-query.js';
+import { boxMeets, type QueryBox } from './shared/index-query.js';
 import { scaleAtZ } from './shared/scale.js';
 import { parseSurface, type Surface, type SurfaceSpec } from './shared/surfaces.js';
 import { pixelToGround, type Bbox, type ViewGeometry } from './shared/view.js';
@@ -10,8 +10,8 @@ import { Evented } from './events.js';
 import { colourParams, type BlendingOptions, type BoundaryOptions } from './render/colour-options.js';
 import { Renderer, type IdBuffer } from './render/renderer.js';
 import { jitter, weight } from './render/supersampling.js';
-import { ChunkSource, type NeededChunks } from './source/chunk-source.js';
-import type { AheadView, ChunkPayload, ChunkStatus, SourceErrorInfo, SourceOptions } from './source/worker-protocol.js';
+import { ChunkSource } from './source/chunk-source.js';
+import type { AheadView, ChunkPayload, ChunkStatus, NeededChunks, SourceErrorInfo, SourceOptions } from './source/worker-protocol.js';
 import { showWebGl2Missing } from './ui/webgl-missing.js';
 import { ViewState } from './view-state.js';
 
@@ -131,8 +131,8 @@ export class SliceMap extends Evented<SliceMapEvents> {
   private sentSeq = -1;
   private needed: NeededChunks | null = null;
   private visibleSet = new Set<string>();
-  private marginSet = new Set<string>();
-  private aheadSet = new Set<string>();
+  /** Kept on the GPU beyond the budget besides those on screen: margin and ahead. */
+  private keptSet = new Set<string>();
   private ahead: PrefetchView[] = [];
   private aheadChanged = false;
   private readonly frameHooks = new Set<FrameHook>();
@@ -349,7 +349,8 @@ export class SliceMap extends Evented<SliceMapEvents> {
 
   /** The chunks the current view needs: on screen and in the prefetch margin. */
   neededChunks(): { visible: string[]; margin: string[]; ahead: string[] } {
-    return { visible: [...this.visibleSet], margin: [...this.marginSet], ahead: [...this.aheadSet] };
+    const n = this.needed;
+    return { visible: [...this.visibleSet], margin: n ? [...n.margin] : [], ahead: n ? [...n.ahead] : [] };
   }
 
   stats(): RenderStats {
@@ -363,6 +364,11 @@ export class SliceMap extends Evented<SliceMapEvents> {
     if (!this.renderer) return null;
     this.renderNowIfDirty();
     return this.renderer.readIds();
+  }
+
+  /** The absolute URL of the cube's index.json. */
+  getSourceUrl(): string {
+    return this.source.url;
   }
 
   /** Absolute URLs of the cube's files received so far (see VarioMap.getLoadedUrls). */
@@ -498,8 +504,7 @@ export class SliceMap extends Evented<SliceMapEvents> {
     if (this.needed && n.seq < this.needed.seq) return;
     this.needed = n;
     this.visibleSet = new Set(n.visible);
-    this.marginSet = new Set(n.margin);
-    this.aheadSet = new Set(n.ahead);
+    this.keptSet = new Set([...n.margin, ...n.ahead]);
     this.lastStats.queryMs = n.queryMs;
     this.schedule();
   }
@@ -535,13 +540,14 @@ export class SliceMap extends Evented<SliceMapEvents> {
     }
     if (r.lost) return; // contextrestored schedules the next frame
     this.frameNo++;
-    if (this.uploadPending()) this.accumulated = 0;
-    const evicted = r.evict(this.visibleSet, this.keptSet());
+    // Draw the chunks on the GPU that meet the view (whatever the worker says is needed: until
+    // its answer comes, the map keeps drawing what it has). Only a chunk among those changes
+    // the picture; one for the margin or a flight ahead leaves a finished image as it is.
+    const qb = { ground: q.visible, zMin: q.zMin, zMax: q.zMax };
+    if (this.uploadPending(qb)) this.accumulated = 0;
+    const evicted = r.evict(this.visibleSet, this.keptSet);
     this.source.evicted(evicted);
 
-    // Draw the chunks on the GPU that meet the view (whatever the worker says is needed: until
-    // its answer comes, the map keeps drawing what it has).
-    const qb = { ground: q.visible, zMin: q.zMin, zMax: q.zMax };
     const chunks = [];
     for (const c of r.store.values()) {
       if (boxMeets(c.bbox, qb)) {
@@ -602,12 +608,6 @@ export class SliceMap extends Evented<SliceMapEvents> {
     }
   }
 
-  /** The chunks kept on the GPU beyond the budget besides those on screen: margin and ahead. */
-  private keptSet(): Set<string> {
-    if (this.aheadSet.size === 0) return this.marginSet;
-    return new Set([...this.marginSet, ...this.aheadSet]);
-  }
-
   /** What the index is asked for a view to come: its box (with the margin) and z range. */
   private aheadView(v: PrefetchView): AheadView {
     const g = this.deviceSize();
@@ -621,16 +621,16 @@ export class SliceMap extends Evented<SliceMapEvents> {
     return { box: q.margin, zMin: q.zMin, zMax: q.zMax, centerX: v.center[0], centerY: v.center[1], z: q.z };
   }
 
-  /** Uploads chunks that arrived, within the per-frame byte budget; true when any went up. */
-  private uploadPending(): boolean {
+  /** Uploads chunks that arrived, within the per-frame byte budget; true when any that went up meets `drawn`. */
+  private uploadPending(drawn: QueryBox): boolean {
     const r = this.renderer!;
     let bytes = 0;
-    let any = false;
+    let changed = false;
     const dropped: string[] = [];
     while (this.pending.length > 0 && bytes < this.uploadBytesPerFrame) {
       const c = this.pending.shift()!;
       // A chunk the view no longer needs is not kept (it is fetched again if it comes back).
-      if (this.needed && this.needed.seq === this.viewSeq && !this.visibleSet.has(c.file) && !this.marginSet.has(c.file) && !this.aheadSet.has(c.file)) {
+      if (this.needed && this.needed.seq === this.viewSeq && !this.visibleSet.has(c.file) && !this.keptSet.has(c.file)) {
         dropped.push(c.file);
         continue;
       }
@@ -638,10 +638,10 @@ export class SliceMap extends Evented<SliceMapEvents> {
       this.source.uploaded(c.file);
       this.fire('data', { file: c.file });
       bytes += c.vertexByteLength + c.indexSize * 3 * c.triangleCount;
-      any = true;
+      if (boxMeets(c.bbox, drawn)) changed = true;
     }
     this.source.evicted(dropped);
-    return any;
+    return changed;
   }
 
   private contextLost(files: string[]): void {

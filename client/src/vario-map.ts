@@ -407,6 +407,11 @@ export class VarioMap extends Evented<VarioMapEvents> {
     return this.engine.queryFeatures(point);
   }
 
+  /** The absolute URL of the cube's index.json (the `source` option resolved). */
+  getSourceUrl(): string {
+    return this.engine.getSourceUrl();
+  }
+
   /**
    * Absolute URLs of the cube's files this map has received (index, pages, chunks), oldest
    * first: what a service worker that took control after the map started must still cache for

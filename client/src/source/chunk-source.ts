@@ -3,16 +3,7 @@
 import type { CubeMeta } from '../shared/cube-index.js';
 import { Evented } from '../events.js';
 import { createChunkWorker } from './create-worker.js';
-import type { ChunkPayload, ChunkStatus, FeatureInfo, FromWorker, SourceErrorInfo, SourceOptions, ToWorker, ViewRequest } from './worker-protocol.js';
-
-export interface NeededChunks {
-  seq: number;
-  visible: string[];
-  margin: string[];
-  ahead: string[];
-  indexComplete: boolean;
-  queryMs: number;
-}
+import type { ChunkPayload, ChunkStatus, FeatureInfo, FromWorker, NeededChunks, SourceErrorInfo, SourceOptions, ToWorker, ViewRequest } from './worker-protocol.js';
 
 export interface ChunkSourceEvents {
   meta: CubeMeta;

@@ -1,5 +1,6 @@
 // Messages between the map (main thread) and the chunk worker.
 import type { Box3, CubeMeta } from '../shared/cube-index.js';
+import type { FaceRecord } from '../shared/face-page.js';
 
 /** not-requested -> requested -> received -> gpu -> evicted (-> requested ...); failed: corrupt or gave up. */
 export type ChunkStatus = 'not-requested' | 'requested' | 'received' | 'gpu' | 'evicted' | 'failed';
@@ -73,30 +74,26 @@ export interface ChunkPayload {
   verified: boolean;
 }
 
-export interface FeatureInfo {
-  face: number;
-  classIndex: number;
-  feature: number;
-  stepLow: number;
-  stepHigh: number;
-  mergedInto: number;
+/** A face's record from its face page, with its input feature's attributes. */
+export interface FeatureInfo extends FaceRecord {
   properties: Record<string, unknown> | null;
+}
+
+/** The worker's answer to a view: the chunks it needs. */
+export interface NeededChunks {
+  seq: number;
+  visible: string[];
+  margin: string[];
+  /** Chunks of the views ahead that the view itself does not need, in fetch order. */
+  ahead: string[];
+  /** False while sub-index files the view reaches are still loading. */
+  indexComplete: boolean;
+  queryMs: number;
 }
 
 export type FromWorker =
   | { type: 'meta'; meta: CubeMeta }
-  | {
-      type: 'needed';
-      seq: number;
-      visible: string[];
-      margin: string[];
-      /** Chunks of the views ahead that the view itself does not need, in fetch order. */
-      ahead: string[];
-      /** False while sub-index files the view reaches are still loading. */
-      indexComplete: boolean;
-      queryMs: number;
-      visited: number;
-    }
+  | ({ type: 'needed'; visited: number } & NeededChunks)
   | { type: 'status'; file: string; status: ChunkStatus }
   | { type: 'chunk'; chunk: ChunkPayload }
   | { type: 'error'; error: SourceErrorInfo }
