@@ -10,14 +10,13 @@ import { cp, mkdtemp, readFile, rm } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { promisify } from 'node:util';
-import { chromium } from 'playwright-core';
 import { parseIndex, type ChunkLeaf, type IndexNode } from '../client/src/shared/cube-index.js';
 import { createStaticServer } from '../server/static-server.js';
+import { launchChromium } from '../e2e/helpers/browser.js';
 import { datasets, median, root } from './datasets.js';
 
 const run = promisify(execFile);
 const WIDTH = 1280, HEIGHT = 720, FRAMES = 60, WARMUP = 5;
-const ARGS = ['--no-sandbox', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--enable-unsafe-swiftshader', '--host-resolver-rules=MAP * ~NOTFOUND , EXCLUDE 127.0.0.1 , EXCLUDE localhost'];
 
 interface PageMap {
   whenIdle(): Promise<{ complete: boolean }>;
@@ -47,7 +46,7 @@ async function main(): Promise<void> {
   const filter = process.argv[2];
   const sets = datasets(filter).filter((d) => d.name === 'bgt_otterlo_1800m' || d.name === 'nlcd_zion');
   if (sets.length === 0) throw new Error('no dataset (bgt_otterlo_1800m, nlcd_zion) found in ../shared/data');
-  const browser = await chromium.launch({ executablePath: process.env.CHROMIUM_PATH ?? '/usr/lib/chromium/chromium', args: ARGS });
+  const browser = await launchChromium();
   const rows: string[][] = [['dataset', 'view', 'scale', 'first map ms', 'frame ms median', 'frame ms p95', 'triangles/frame', 'at 5 places', 'query ms/frame', 'chunks', 'MB', 'long tasks load', 'long tasks frames']];
   const ratios: string[] = [];
   try {

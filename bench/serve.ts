@@ -9,9 +9,9 @@ import { createHash } from 'node:crypto';
 import { chmodSync, existsSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { brotliCompressSync, gzipSync } from 'node:zlib';
 import { NGINX_BIN, startNginx } from '../server/nginx-process.js';
+import { median, root as repoRoot } from './datasets.js';
 
 const args = process.argv.slice(2);
 const option = (name: string, fallback: number): number => Number(args.find((a) => a.startsWith(`${name}=`))?.slice(name.length + 1) ?? fallback);
@@ -20,7 +20,6 @@ const SECONDS = option('seconds', 2);
 const MAX_REQUESTS = 300_000; // per run: the count bound beside the time bound
 const CONNECTIONS = [1, 16, 64];
 const HEADERS = { 'accept-encoding': 'gzip, deflate, br, zstd' };
-const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 
 interface Target {
   name: string;
@@ -33,11 +32,6 @@ interface Sample {
   p99ms: number;
 }
 
-const median = (xs: number[]): number => {
-  const s = [...xs].sort((a, b) => a - b);
-  const m = s.length >> 1;
-  return s.length % 2 ? s[m]! : (s[m - 1]! + s[m]!) / 2;
-};
 
 /** A map directory like the preprocessing writes: content-hashed names, .br/.gz siblings. */
 function writeFiles(dir: string): { index: string; chunk: string; sizes: string } {

@@ -4,7 +4,7 @@
 // the full-page demo (dist/client/demo.html) and the cube (at /chunks/) from 127.0.0.1 with the
 // project's static server until Ctrl-C. PORT picks the port (default 8080, else a free one).
 import { spawnSync } from 'node:child_process';
-import { existsSync, readdirSync, renameSync, rmSync, statSync } from 'node:fs';
+import { existsSync, readdirSync, statSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 
@@ -34,13 +34,9 @@ if (cubeIsCurrent()) {
   console.log(`The cube in ${path.relative(process.cwd(), out) || '.'}/ is up to date.`);
 } else {
   console.log(`Building the cube of ${path.relative(root, input)} into chunks/ ...`);
-  // Built beside and then moved in, so an interrupted build never leaves a half cube behind.
-  const tmp = `${out}.building`;
-  rmSync(tmp, { recursive: true, force: true });
-  const r = spawnSync(process.execPath, [path.join(root, 'bin/ssc.js'), 'build', input, '--style', style, '--out', tmp], { stdio: 'inherit', cwd: root });
+  // ssc build replaces the directory only once the new cube is complete.
+  const r = spawnSync(process.execPath, [path.join(root, 'bin/ssc.js'), 'build', input, '--style', style, '--out', out], { stdio: 'inherit', cwd: root });
   if (r.status !== 0) process.exit(r.status ?? 1);
-  rmSync(out, { recursive: true, force: true });
-  renameSync(tmp, out);
 }
 
 const { createSiteServer } = await import(path.join(root, 'dist/server/site-server.js'));

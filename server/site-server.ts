@@ -1,10 +1,10 @@
 // One origin for the demo: the built client at / ("/" being demo.html) and a cube directory
-// under a path (default /chunks/), each served by the static server with its own rules. npm
+// under a path (default /chunks/), each with the static server's rules for its own root. npm
 // start serves the map with it; the offline test stops it and starts it again on the same port,
 // which must stay the same origin for the service worker and its caches.
 import { createServer, type Server } from 'node:http';
 import type { AddressInfo } from 'node:net';
-import { createStaticServer, type StaticServer } from './static-server.js';
+import { createStaticHandler } from './static-server.js';
 
 export interface SiteServerOptions {
   /** The built client (dist/client). */
@@ -25,16 +25,16 @@ export interface SiteServer {
 export function createSiteServer(o: SiteServerOptions): SiteServer {
   const cubePath = o.cubePath ?? '/chunks';
   const errors = o.onError ? { onError: o.onError } : {};
-  const client: StaticServer = createStaticServer({ root: o.clientDir, ...errors });
-  const cube: StaticServer = createStaticServer({ root: o.cubeDir, ...errors });
+  const client = createStaticHandler({ root: o.clientDir, ...errors });
+  const cube = createStaticHandler({ root: o.cubeDir, ...errors });
   const server = createServer((req, res) => {
     const url = req.url ?? '/';
     if (url === cubePath || url.startsWith(`${cubePath}/`) || url.startsWith(`${cubePath}?`)) {
       req.url = url.slice(cubePath.length) || '/';
-      cube.server.emit('request', req, res);
+      cube(req, res);
     } else {
       if (url === '/' || url.startsWith('/?')) req.url = `/demo.html${url.slice(1)}`;
-      client.server.emit('request', req, res);
+      client(req, res);
     }
   });
   return {

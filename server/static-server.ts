@@ -1,7 +1,7 @@
 // createStaticServer: the chunk directory over HTTP/1.1 with node:http, hardened against slow
 // and malformed clients, and listening on loopback unless told otherwise.
 import { realpathSync, statSync } from 'node:fs';
-import { createServer, type Server } from 'node:http';
+import { createServer, type IncomingMessage, type Server, type ServerResponse } from 'node:http';
 import type { AddressInfo, Socket } from 'node:net';
 import { CachePolicy } from './cache-control.js';
 import { ContentCache } from './content-cache.js';
@@ -66,8 +66,23 @@ function rootOf(dir: string): string {
   return real;
 }
 
-export function createStaticServer(options: StaticServerOptions): StaticServer {
+/** What a static server's request handler needs: no connection handling. */
+export type StaticHandlerOptions = Pick<StaticServerOptions, 'root' | 'cors' | 'immutablePattern' | 'cacheBytes' | 'maxCachedFileBytes' | 'revalidateAfterMs' | 'onError'>;
+
+/** The request handler alone (the serving rules for one root), for a server that routes. */
+export function createStaticHandler(options: StaticHandlerOptions): (req: IncomingMessage, res: ServerResponse) => void {
   const root = rootOf(options.root);
+  return createRequestHandler({
+    cors: new CorsPolicy(options.cors),
+    cachePolicy: new CachePolicy(options.immutablePattern),
+    contents: new ContentCache(options.cacheBytes ?? 64 << 20, options.maxCachedFileBytes ?? 1 << 20),
+    lookups: new LookupCache(root, { revalidateAfterMs: options.revalidateAfterMs }),
+    onError: options.onError ?? ((err) => console.error('static server:', err)),
+  });
+}
+
+export function createStaticServer(options: StaticServerOptions): StaticServer {
+  const handler = createStaticHandler(options);
   const headersTimeout = options.headersTimeoutMs ?? 10_000;
   const keepAliveTimeout = options.keepAliveTimeoutMs ?? 5_000;
   const checkEvery = options.timeoutCheckIntervalMs ?? 1_000;
@@ -81,13 +96,7 @@ export function createStaticServer(options: StaticServerOptions): StaticServer {
       maxHeaderSize: options.maxHeaderBytes ?? 16 * 1024,
       requireHostHeader: true,
     },
-    createRequestHandler({
-      cors: new CorsPolicy(options.cors),
-      cachePolicy: new CachePolicy(options.immutablePattern),
-      contents: new ContentCache(options.cacheBytes ?? 64 << 20, options.maxCachedFileBytes ?? 1 << 20),
-      lookups: new LookupCache(root, { revalidateAfterMs: options.revalidateAfterMs }),
-      onError: options.onError ?? ((err) => console.error('static server:', err)),
-    }),
+    handler,
   );
   server.maxConnections = options.maxConnections ?? 4096;
   watchConnections(server, { headersMs: headersTimeout, keepAliveMs: keepAliveTimeout, stallMs: options.stallTimeoutMs ?? 30_000, checkEveryMs: checkEvery });
