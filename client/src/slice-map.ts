@@ -555,6 +555,9 @@ export class SliceMap extends Evented<SliceMapEvents> {
         chunks.push(c);
       }
     }
+    // The depth test keeps the first of two equal depths: drawn in a fixed order (not the order
+    // they arrived in), the same chunks give the same picture after a reload or a lost context.
+    chunks.sort((a, b) => (a.file < b.file ? -1 : a.file > b.file ? 1 : 0));
     const moving = now - this.lastSliceMove < MOVING_MS;
     const blendOn = this.blending.mode === 'always' || (this.blending.mode === 'moving' && moving);
     if (blendOn !== this.blendingWasOn) this.accumulated = 0;
