@@ -1,33 +1,51 @@
 #!/usr/bin/env node
-// Runs every compiled test file with node's test runner. Node 20 does not expand globs, so
-// the files are listed here; SSC_TEST_FILTER=<substring> runs a subset.
+// Runs the tests with node's test runner, TypeScript loaded from source by tsx.
+//   node scripts/run-tests.js unit   every *.test.ts outside e2e/: no build needed, seconds
+//   node scripts/run-tests.js e2e    e2e/**/*.test.ts: Chromium and the CLI, after `npm run build`
+//   node scripts/run-tests.js        both
+// Node 20 does not expand globs, so the files are listed here; SSC_TEST_FILTER=<substring>
+// runs a subset.
 import { readdirSync, statSync } from 'node:fs';
-import { join, relative } from 'node:path';
+import { join, relative, sep } from 'node:path';
 import { spawnSync } from 'node:child_process';
 
 const root = new URL('..', import.meta.url).pathname;
 const filter = process.env.SSC_TEST_FILTER ?? '';
+const which = process.argv[2] ?? 'all';
+if (!['unit', 'e2e', 'all'].includes(which)) {
+  console.error(`run-tests: unknown suite "${which}" (unit, e2e or nothing for both)`);
+  process.exit(2);
+}
+const skipDirs = new Set(['node_modules', 'dist', '.git', 'chunks']);
 
 function find(dir, out) {
-  let entries;
-  try {
-    entries = readdirSync(dir);
-  } catch {
-    return out;
-  }
-  for (const name of entries.sort()) {
+  for (const name of readdirSync(dir).sort()) {
+    if (skipDirs.has(name)) continue;
     const p = join(dir, name);
     if (statSync(p).isDirectory()) find(p, out);
-    else if (name.endsWith('.test.js')) out.push(relative(root, p));
+    else if (name.endsWith('.test.ts')) out.push(relative(root, p));
   }
   return out;
 }
 
-const files = find(join(root, 'dist'), []).filter((f) => f.includes(filter));
-if (files.length === 0) {
-  console.error('no test files found under dist/ (did the build run?)');
-  process.exit(1);
-}
+const all = find(root, []).filter((f) => f.includes(filter));
+const isE2e = (f) => f.startsWith(`e2e${sep}`);
+const suites = [];
+if (which !== 'e2e') suites.push({ name: 'unit', files: all.filter((f) => !isE2e(f)), concurrency: 2 });
 // One file at a time: browser tests are heavy and this machine has two cores.
-const r = spawnSync(process.execPath, ['--test', '--test-concurrency=1', '--test-timeout=600000', ...files], { stdio: 'inherit', cwd: root });
-process.exit(r.status ?? 1);
+if (which !== 'unit') suites.push({ name: 'e2e', files: all.filter(isE2e), concurrency: 1 });
+
+let status = 0;
+for (const s of suites) {
+  if (s.files.length === 0) {
+    console.error(`run-tests: no ${s.name} test files found${filter ? ` matching "${filter}"` : ''}`);
+    process.exit(1);
+  }
+  const r = spawnSync(
+    process.execPath,
+    ['--import', 'tsx', '--test', `--test-concurrency=${s.concurrency}`, '--test-timeout=600000', ...s.files],
+    { stdio: 'inherit', cwd: root },
+  );
+  if (r.status !== 0) status = r.status ?? 1;
+}
+process.exit(status);

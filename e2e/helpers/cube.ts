@@ -8,7 +8,7 @@ import { promisify } from 'node:util';
 import { decodeChunk } from '../../client/src/shared/chunk-format.js';
 import { parseIndex, parseSubIndex, type ChunkLeaf, type CubeMeta, type InnerNode } from '../../client/src/shared/cube-index.js';
 import { queryIndex } from '../../client/src/shared/index-query.js';
-import { dataset, repoRoot, styleFile } from '../../preprocess/test/helpers.js';
+import { dataset, repoRoot, styleFile } from '../../testing/paths.js';
 
 const run = promisify(execFile);
 export { repoRoot };

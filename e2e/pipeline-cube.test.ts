@@ -5,12 +5,15 @@ import test from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, mkdirSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
-import { decodeChunk, encodeChunk } from '../../client/src/shared/chunk-format.js';
-import { parseSurface, surfaceZ } from '../../client/src/shared/surfaces.js';
-import { fitView, rasterizeAt } from '../map/rasterize.js';
-import { decodeTgap, encodeTgap, readTgap } from '../tgap/format.js';
-import { resolveFace } from '../tgap/model.js';
-import { dataset, readIds, runSsc, styleFile, tempDir } from './helpers.js';
+import { decodeChunk, encodeChunk } from '../client/src/shared/chunk-format.js';
+import { parseSurface, surfaceZ } from '../client/src/shared/surfaces.js';
+import { fitView, rasterizeAt } from '../preprocess/map/rasterize.js';
+import { decodeTgap, encodeTgap, readTgap } from '../preprocess/tgap/format.js';
+import { resolveFace } from '../preprocess/tgap/model.js';
+import { dataset, styleFile } from '../testing/paths.js';
+import { readIds } from '../testing/ids-file.js';
+import { runSsc } from '../testing/run-ssc.js';
+import { tempDir } from '../testing/temp-dir.js';
 
 const W = 240, H = 180;
 

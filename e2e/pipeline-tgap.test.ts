@@ -4,11 +4,14 @@ import test from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { dataset, readIds, runSsc, styleFile, tempDir } from './helpers.js';
-import { compareIds, rasterizeFeatures } from './reference-raster.js';
-import { readTgap } from '../tgap/format.js';
-import { EventKind, resolveFace, type Tgap } from '../tgap/model.js';
-import { fitView } from '../map/rasterize.js';
+import { dataset, styleFile } from '../testing/paths.js';
+import { readIds } from '../testing/ids-file.js';
+import { runSsc } from '../testing/run-ssc.js';
+import { tempDir } from '../testing/temp-dir.js';
+import { compareIds, rasterizeFeatures } from './helpers/reference-raster.js';
+import { readTgap } from '../preprocess/tgap/format.js';
+import { EventKind, resolveFace, type Tgap } from '../preprocess/tgap/model.js';
+import { fitView } from '../preprocess/map/rasterize.js';
 
 const W = 400, H = 300;
 
