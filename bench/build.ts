@@ -5,7 +5,7 @@ import { spawnSync } from 'node:child_process';
 import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { zAtScale } from '../client/src/shared/scale.js';
+import { zAtScale } from '../format/scale.js';
 import { inspectCube } from '../preprocess/ssc/inspect-cube.js';
 import { CubeReader } from '../preprocess/ssc/read-cube.js';
 import { datasets, median, root } from './datasets.js';

@@ -2,7 +2,7 @@
 // generalize and build. Prints a JSON line with the wall time and the peak resident memory.
 import { generalizeFile } from '../preprocess/pipeline.js';
 import { buildCube } from '../preprocess/ssc/build-cube.js';
-import { encodeTgap } from '../preprocess/tgap/format.js';
+import { encodeTgap } from '../format/tgap.js';
 import { writeFileAtomic } from '../preprocess/io/atomic-write.js';
 
 const [mode, input, style, out, chunkBytes] = process.argv.slice(2);

@@ -10,7 +10,7 @@ import { cp, mkdtemp, readFile, rm } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { promisify } from 'node:util';
-import { parseIndex, type ChunkLeaf, type IndexNode } from '../client/src/shared/cube-index.js';
+import { parseIndex, type ChunkLeaf, type IndexNode } from '../format/cube-index.js';
 import { createStaticServer } from '../server/static-server.js';
 import { launchChromium } from '../e2e/helpers/browser.js';
 import { datasets, median, root } from './datasets.js';

@@ -4,7 +4,7 @@
 // comes near them.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { boxMeets } from '../client/src/shared/index-query.js';
+import { boxMeets } from '../format/index-query.js';
 import { growBbox } from '../client/src/shared/view.js';
 import { useTestBed } from './helpers/test-bed.js';
 import { camera, openDemo, record, recorded, settle, type VarioWindow } from './helpers/vario-page.js';

@@ -5,7 +5,7 @@
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import type { Page } from 'playwright-core';
-import { scaleAtZ } from '../client/src/shared/scale.js';
+import { scaleAtZ } from '../format/scale.js';
 import { useTestBed } from './helpers/test-bed.js';
 import { apart, camera, groundAt, openDemo, record, recorded, resolution, settle, type Camera, type PageWindow, type VarioWindow } from './helpers/vario-page.js';
 

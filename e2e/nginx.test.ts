@@ -20,7 +20,7 @@ import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { after, afterEach, before, describe, test } from 'node:test';
 import type { Browser, Page, Response } from 'playwright-core';
-import { queryIndex } from '../client/src/shared/index-query.js';
+import { queryIndex } from '../format/index-query.js';
 import { NGINX_BIN, startNginx, type RunningNginx } from '../server/nginx-process.js';
 import { launchChromium, type MapPage } from './helpers/browser.js';
 import { buildCube, clientDir, otterlo400, readCube, type BuiltCube, type CubeContents } from './helpers/cube.js';

@@ -9,8 +9,8 @@ import { readIds } from '../testing/ids-file.js';
 import { runSsc } from '../testing/run-ssc.js';
 import { tempDir } from '../testing/temp-dir.js';
 import { compareIds, rasterizeFeatures } from './helpers/reference-raster.js';
-import { readTgap } from '../preprocess/tgap/format.js';
-import { EventKind, resolveFace, type Tgap } from '../preprocess/tgap/model.js';
+import { readTgap } from '../format/tgap.js';
+import { EventKind, resolveFace, type Tgap } from '../format/tgap-model.js';
 import { fitView } from '../preprocess/map/rasterize.js';
 
 const W = 400, H = 300;

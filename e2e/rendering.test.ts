@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
 import { after, afterEach, before, describe, test } from 'node:test';
 import type { Browser } from 'playwright-core';
-import { scaleAtZ, zAtScale } from '../client/src/shared/scale.js';
+import { scaleAtZ, zAtScale } from '../format/scale.js';
 import { fitBbox, pixelToGround, viewBbox, type Bbox } from '../client/src/shared/view.js';
 import { openMap, type MapPage, type OpenOptions } from './helpers/browser.js';
 import { compareIds, cpuSlice, otterlo400, type BuiltCube, type CubeContents } from './helpers/cube.js';

@@ -7,7 +7,7 @@
 import assert from 'node:assert/strict';
 import { after, before, describe, test } from 'node:test';
 import type { Browser } from 'playwright-core';
-import { zAtScale } from '../client/src/shared/scale.js';
+import { zAtScale } from '../format/scale.js';
 import { fitBbox, viewBbox } from '../client/src/shared/view.js';
 import { launchChromium, openMap, type MapPage } from './helpers/browser.js';
 import { buildCube, clientDir, compareIds, cpuSlice, cubeTriangles, nearTriangleEdge, otterlo400, type BuiltCube, type Comparison } from './helpers/cube.js';

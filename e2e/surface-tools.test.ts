@@ -5,9 +5,9 @@
 import assert from 'node:assert/strict';
 import { after, afterEach, before, describe, test } from 'node:test';
 import type { Browser } from 'playwright-core';
-import { scaleAtZ, zAtScale } from '../client/src/shared/scale.js';
-import { formatSurface } from '../client/src/shared/surface-text.js';
-import type { SurfaceSpec } from '../client/src/shared/surfaces.js';
+import { scaleAtZ, zAtScale } from '../format/scale.js';
+import { formatSurface } from '../format/slicing-surface.js';
+import type { SurfaceSpec } from '../format/slicing-surface.js';
 import { fitBbox, pixelToGround, viewBbox } from '../client/src/shared/view.js';
 import { openMap, type MapPage } from './helpers/browser.js';
 import { compareIds, cpuSlice, type BuiltCube, type CubeContents } from './helpers/cube.js';

@@ -1,4 +1,5 @@
 // ssc: the command line of the vario-scale map's preprocessing.
+import { FormatError } from '../format/format-error.js';
 import { InputError } from './io/errors.js';
 import { UsageError } from './commands/args.js';
 
@@ -44,7 +45,8 @@ export async function main(argv: string[]): Promise<number> {
       process.stderr.write(`ssc ${name}: ${(err as Error).message}\n${cmd.usage}\n`);
       return 2;
     }
-    if (err instanceof InputError) {
+    // A bad input or a file that breaks its format (a corrupt tGAP or cube): the user can act.
+    if (err instanceof InputError || err instanceof FormatError) {
       process.stderr.write(`ssc ${name}: ${err.message}\n`);
       return 1;
     }

@@ -5,9 +5,10 @@ import { InputError } from './io/errors.js';
 import { readInput } from './io/read-input.js';
 import { defaultStyle, loadStyle, styleToJson, type Style } from './style.js';
 import { generalize, type GeneralizeResult } from './tgap/generalize.js';
-import type { Tgap } from './tgap/model.js';
-import { TGAP_VERSION } from './tgap/format.js';
+import type { Tgap } from '../format/tgap-model.js';
+import { TGAP_VERSION } from '../format/tgap.js';
 import { buildTopology, type Topology } from './topology/build-topology.js';
+import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
 
 export interface PipelineOptions {
   style?: string;
@@ -133,7 +134,7 @@ function autoBaseScale(topo: Topology): number {
   let area2 = 0;
   for (let f = 1; f < topo.faceCount; f++) area2 += Math.abs(topo.faceArea2[f]!);
   const side = Math.sqrt(area2 / 2 / Math.max(1, topo.faceCount - 1));
-  const raw = side / (20 * 0.00028);
+  const raw = side / ((20 * PIXEL_SIZE_MM) / 1000);
   const e = Math.pow(10, Math.floor(Math.log10(raw)));
   const m = raw / e;
   return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * e;

@@ -1,29 +1,22 @@
-// A dataset's style: which property holds the class, and per class its colour, importance
-// weight, compatibility with other classes and whether it is linear (split, not merged).
+// A dataset's style as the generalization uses it: the file is read with the schema of
+// format/style.ts, then classes are numbered and compatibilities become a matrix.
 import { promises as fs } from 'node:fs';
+import * as v from 'valibot';
+import { describeIssues } from '../format/schema-issues.js';
+import { styleClasses, StyleSchema, type StyleClass } from '../format/style.js';
+import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
 import { InputError } from './io/errors.js';
 
-export interface ClassStyle {
-  /** The class value as it appears in the data (numbers are written as strings). */
-  key: string;
-  label: string;
-  /** CSS hex colour "#rrggbb". */
-  color: string;
-  /** Importance per unit area: the least important face (area x weight) goes first. */
-  weight: number;
-  /** Long thin faces (roads, watercourses): split among their neighbours instead of merged whole. */
-  linear: boolean;
-  /** Optional pattern drawn over the fill within a scale range (client side). */
-  pattern?: { kind: 'hatch' | 'dots' | 'cross'; color: string; minScale?: number; maxScale?: number };
-}
+/** A class as the generalization uses it (format/style.ts has the file's form). */
+export type ClassStyle = StyleClass;
 
 export interface Style {
   name: string;
   classProperty: string | null;
   idProperty: string | null;
-  /** Scale denominator of the input data (step 0). */
+  /** Scale denominator of the input data (step 0); 0 until chosen from the data. */
   baseScale: number;
-  /** Simplification tolerance on the map, in mm (a screen pixel is 0.28 mm). */
+  /** Simplification tolerance on the map, in mm. */
   resolutionMm: number;
   /** Holes in the union of the faces are outside the domain (enclaves), not gaps. */
   allowHoles: boolean;
@@ -33,22 +26,6 @@ export interface Style {
   compat: Float64Array[];
   attribution: string;
 }
-
-interface StyleJson {
-  name?: unknown;
-  classProperty?: unknown;
-  idProperty?: unknown;
-  baseScale?: unknown;
-  resolutionMm?: unknown;
-  allowHoles?: unknown;
-  background?: unknown;
-  attribution?: unknown;
-  defaultCompatibility?: unknown;
-  classes?: unknown;
-  compatibility?: unknown;
-}
-
-const HEX = /^#[0-9a-fA-F]{6}$/;
 
 export async function loadStyle(file: string): Promise<Style> {
   let text: string;
@@ -66,112 +43,50 @@ export async function loadStyle(file: string): Promise<Style> {
   return parseStyle(json, file);
 }
 
+/** The style of a style file; every problem of the file is named in one error. */
 export function parseStyle(json: unknown, file = 'style'): Style {
-  const bad = (msg: string): never => {
-    throw new InputError(`style: ${msg}`, { file });
+  const bad = (problems: string[]): never => {
+    throw new InputError(`style: ${problems.length === 1 ? problems[0] : `${problems.length} problems:\n  ${problems.join('\n  ')}`}`, { file });
   };
-  if (typeof json !== 'object' || json === null || Array.isArray(json)) bad('expected a JSON object');
-  const s = json as StyleJson;
-  const str = (v: unknown, what: string, dflt: string | null): string | null => {
-    if (v === undefined) return dflt;
-    if (typeof v !== 'string') bad(`"${what}" must be a string`);
-    return v as string;
-  };
-  const num = (v: unknown, what: string, dflt: number, min: number): number => {
-    if (v === undefined) return dflt;
-    if (typeof v !== 'number' || !Number.isFinite(v) || v < min) bad(`"${what}" must be a number >= ${min}`);
-    return v as number;
-  };
-  // Classes as an object (class -> settings) or, where the order must be kept exactly (numeric
-  // keys sort first in a JSON object), as an array of settings with a "key" each.
-  let entries: [string, unknown][];
-  if (Array.isArray(s.classes)) {
-    entries = s.classes.map((c, i) => {
-      const key = typeof c === 'object' && c !== null ? (c as { key?: unknown }).key : undefined;
-      if (typeof key !== 'string' && typeof key !== 'number') bad(`classes[${i}] needs a "key"`);
-      return [String(key), c] as [string, unknown];
-    });
-  } else if (typeof s.classes === 'object' && s.classes !== null) {
-    entries = Object.entries(s.classes as Record<string, unknown>);
-  } else {
-    bad('"classes" must be an object of class -> {color, weight, linear}');
+  const r = v.safeParse(StyleSchema, json);
+  if (!r.success) return bad(describeIssues(r.issues));
+  const s = r.output;
+  const classes = styleClasses(s);
+  const problems: string[] = [];
+  const seen = new Set<string>();
+  for (const c of classes) {
+    if (seen.has(c.key)) problems.push(`classes: ${JSON.stringify(c.key)} is defined twice`);
+    seen.add(c.key);
   }
-  entries = entries!;
-  if (new Set(entries.map((e) => e[0])).size !== entries.length) bad('a class is defined twice');
-  if (entries.length === 0) bad('"classes" is empty');
-  if (entries.length > 65535) bad('more than 65535 classes');
-  const classes: ClassStyle[] = entries.map(([key, v]) => {
-    if (typeof v !== 'object' || v === null) bad(`class ${JSON.stringify(key)} must be an object`);
-    const c = v as Record<string, unknown>;
-    const color = c.color;
-    if (typeof color !== 'string' || !HEX.test(color)) bad(`class ${JSON.stringify(key)}: "color" must be "#rrggbb"`);
-    const weight = c.weight === undefined ? 1 : c.weight;
-    if (typeof weight !== 'number' || !(weight > 0) || !Number.isFinite(weight)) bad(`class ${JSON.stringify(key)}: "weight" must be a positive number`);
-    if (c.linear !== undefined && typeof c.linear !== 'boolean') bad(`class ${JSON.stringify(key)}: "linear" must be true or false`);
-    const out: ClassStyle = {
-      key,
-      label: typeof c.label === 'string' ? c.label : key,
-      color: (color as string).toLowerCase(),
-      weight: weight as number,
-      linear: c.linear === true,
-    };
-    if (c.pattern !== undefined) out.pattern = parsePattern(c.pattern, key, bad);
-    return out;
-  });
+  if (classes.length > 65535) problems.push('classes: more than 65535 classes');
   const index = new Map(classes.map((c, i) => [c.key, i]));
-  const dflt = num(s.defaultCompatibility, 'defaultCompatibility', 0.5, 0);
-  if (dflt > 1) bad('"defaultCompatibility" must be in [0, 1]');
   const compat = classes.map((_, i) => {
-    const row = new Float64Array(classes.length).fill(dflt);
+    const row = new Float64Array(classes.length).fill(s.defaultCompatibility);
     row[i] = 1;
     return row;
   });
-  if (s.compatibility !== undefined) {
-    if (typeof s.compatibility !== 'object' || s.compatibility === null) bad('"compatibility" must be an object of loser -> {neighbour: value}');
-    for (const [a, row] of Object.entries(s.compatibility as Record<string, unknown>)) {
-      const ia = index.get(a);
-      if (ia === undefined) bad(`compatibility names unknown class ${JSON.stringify(a)}`);
-      if (typeof row !== 'object' || row === null) bad(`compatibility of ${JSON.stringify(a)} must be an object`);
-      for (const [b, v] of Object.entries(row as Record<string, unknown>)) {
-        const ib = index.get(b);
-        if (ib === undefined) bad(`compatibility ${JSON.stringify(a)} names unknown class ${JSON.stringify(b)}`);
-        if (typeof v !== 'number' || v < 0 || v > 1) bad(`compatibility ${JSON.stringify(a)} -> ${JSON.stringify(b)} must be in [0, 1]`);
-        compat[ia!]![ib!] = v as number;
-      }
+  for (const [a, row] of Object.entries(s.compatibility)) {
+    const ia = index.get(a);
+    if (ia === undefined) problems.push(`compatibility: names unknown class ${JSON.stringify(a)}`);
+    for (const [b, value] of Object.entries(row)) {
+      const ib = index.get(b);
+      if (ib === undefined) problems.push(`compatibility.${a}: names unknown class ${JSON.stringify(b)}`);
+      else if (ia !== undefined) compat[ia]![ib] = value;
     }
   }
-  const background = str(s.background, 'background', '#ffffff')!;
-  if (!HEX.test(background)) bad('"background" must be "#rrggbb"');
-  if (s.allowHoles !== undefined && typeof s.allowHoles !== 'boolean') bad('"allowHoles" must be true or false');
+  if (problems.length > 0) bad(problems);
   return {
-    name: str(s.name, 'name', 'unnamed')!,
-    classProperty: str(s.classProperty, 'classProperty', null),
-    idProperty: str(s.idProperty, 'idProperty', null),
-    baseScale: num(s.baseScale, 'baseScale', 0, 1),
-    resolutionMm: num(s.resolutionMm, 'resolutionMm', 0.28, 0),
-    allowHoles: s.allowHoles === true,
-    background: background.toLowerCase(),
+    name: s.name,
+    classProperty: s.classProperty,
+    idProperty: s.idProperty,
+    baseScale: s.baseScale,
+    resolutionMm: s.resolutionMm,
+    allowHoles: s.allowHoles,
+    background: s.background.toLowerCase(),
     classes,
     compat,
-    attribution: str(s.attribution, 'attribution', '')!,
+    attribution: s.attribution,
   };
-}
-
-function parsePattern(v: unknown, key: string, bad: (m: string) => never): NonNullable<ClassStyle['pattern']> {
-  if (typeof v !== 'object' || v === null) bad(`class ${JSON.stringify(key)}: "pattern" must be an object`);
-  const p = v as Record<string, unknown>;
-  if (p.kind !== 'hatch' && p.kind !== 'dots' && p.kind !== 'cross') bad(`class ${JSON.stringify(key)}: pattern "kind" must be hatch, dots or cross`);
-  if (typeof p.color !== 'string' || !HEX.test(p.color)) bad(`class ${JSON.stringify(key)}: pattern "color" must be "#rrggbb"`);
-  const out: NonNullable<ClassStyle['pattern']> = { kind: p.kind as 'hatch' | 'dots' | 'cross', color: (p.color as string).toLowerCase() };
-  if (p.minScale !== undefined) {
-    if (typeof p.minScale !== 'number') bad(`class ${JSON.stringify(key)}: pattern "minScale" must be a number`);
-    out.minScale = p.minScale as number;
-  }
-  if (p.maxScale !== undefined) {
-    if (typeof p.maxScale !== 'number') bad(`class ${JSON.stringify(key)}: pattern "maxScale" must be a number`);
-    out.maxScale = p.maxScale as number;
-  }
-  return out;
 }
 
 /** A style for data without one: every distinct class value gets a colour of a fixed palette. */
@@ -184,7 +99,7 @@ export function defaultStyle(classValues: string[], classProperty: string | null
     row[i] = 1;
     return row;
   });
-  return { name: 'default', classProperty, idProperty: null, baseScale: 0, resolutionMm: 0.28, allowHoles: false, background: '#ffffff', classes, compat, attribution: '' };
+  return { name: 'default', classProperty, idProperty: null, baseScale: 0, resolutionMm: PIXEL_SIZE_MM, allowHoles: false, background: '#ffffff', classes, compat, attribution: '' };
 }
 
 /** The style as JSON again (stored in the tGAP and the cube's metadata). */

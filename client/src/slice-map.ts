@@ -1,10 +1,10 @@
 // SliceMap: a vario-scale map in a container. It ties the chunk source (worker), the renderer
 // (WebGL2) and the view together and runs the frame loop; the embedding API (VarioMap) and the
 // UI controls build on its methods and events.
-import type { CubeMeta } from './shared/cube-index.js';
-import { boxMeets, type QueryBox } from './shared/index-query.js';
-import { scaleAtZ } from './shared/scale.js';
-import { parseSurface, type Surface, type SurfaceSpec } from './shared/surfaces.js';
+import type { CubeMeta } from '../../format/cube-index.js';
+import { boxMeets, type QueryBox } from '../../format/index-query.js';
+import { scaleAtZ } from '../../format/scale.js';
+import { parseSurface, type Surface, type SurfaceSpec } from '../../format/slicing-surface.js';
 import { pixelToGround, type Bbox, type ViewGeometry } from './shared/view.js';
 import { Evented } from './events.js';
 import { colourParams, type BlendingOptions, type BoundaryOptions } from './render/colour-options.js';

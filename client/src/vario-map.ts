@@ -8,18 +8,19 @@ import { Handlers, type HandlerFlags, type HandlerName } from './interaction/han
 import type { InteractionContext, InteractionSettings } from './interaction/interaction-context.js';
 import { Pointers } from './interaction/pointers.js';
 import { lerpCamera, type Camera } from './shared/camera.js';
-import type { CubeMeta } from './shared/cube-index.js';
+import type { CubeMeta } from '../../format/cube-index.js';
 import { discreteLevels, levelFor } from './shared/discrete-scales.js';
 import { easeInOut, type Easing } from './shared/easing.js';
 import { flyPath, DEFAULT_RHO } from './shared/fly-path.js';
-import { zAtScale, type ScaleInfo } from './shared/scale.js';
-import type { SurfaceSpec } from './shared/surfaces.js';
+import { zAtScale, type ScaleInfo } from '../../format/scale.js';
+import type { SurfaceSpec } from '../../format/slicing-surface.js';
 import { groundToPixel, resolutionAtScale, scaleAtResolution, viewBbox, type Bbox } from './shared/view.js';
 import { scaleAtZoom, zoomAtScale } from './shared/zoom-levels.js';
 import { SliceMap, type BlendingOptions, type BlendMode, type BoundaryOptions, type Feature, type PrefetchView, type SliceMapEvents, type SliceMapOptions } from './slice-map.js';
 import type { SourceErrorInfo } from './source/worker-protocol.js';
 import { AttributionControl } from './ui/attribution-control.js';
 import { UrlHash } from './ui/url-hash.js';
+import { PIXEL_SIZE_MM } from '../../format/pixel-size.js';
 
 export type { Bbox, Feature, BlendingOptions, BlendMode, BoundaryOptions, SurfaceSpec, SourceErrorInfo, Camera, HandlerName, InteractionSettings };
 
@@ -498,7 +499,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
   }
 
   private pixelSizeMm(): number {
-    return this.meta?.pixelSizeMm ?? 0.28;
+    return this.meta?.pixelSizeMm ?? PIXEL_SIZE_MM;
   }
 
   private cssSize(): [number, number] {

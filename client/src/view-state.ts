@@ -1,10 +1,11 @@
 // Where the map looks: the centre (ground coordinates), the scale denominator, the base z of the
 // slice (following the scale, or pinned), and the slicing surface around it. From these: the
 // view in device pixels and the box and z range to ask the index for.
-import type { CubeMeta } from './shared/cube-index.js';
-import { zAtScale, type ScaleInfo } from './shared/scale.js';
-import { surfaceRange, type Surface, type SurfaceSpec } from './shared/surfaces.js';
+import type { CubeMeta } from '../../format/cube-index.js';
+import { zAtScale, type ScaleInfo } from '../../format/scale.js';
+import { surfaceRange, type Surface, type SurfaceSpec } from '../../format/slicing-surface.js';
 import { growBbox, resolutionAtScale, viewBbox, type Bbox, type ViewGeometry } from './shared/view.js';
+import { PIXEL_SIZE_MM } from '../../format/pixel-size.js';
 
 export interface ViewQuery {
   view: ViewGeometry;
@@ -33,7 +34,7 @@ export class ViewState {
   }
 
   get pixelSizeMm(): number {
-    return this.meta?.pixelSizeMm ?? 0.28;
+    return this.meta?.pixelSizeMm ?? PIXEL_SIZE_MM;
   }
 
   /** The base z of the slice (steps). */

@@ -2,13 +2,13 @@
 import assert from 'node:assert/strict';
 import { gzipSync } from 'node:zlib';
 import { describe, test } from 'node:test';
-import type { InnerNode } from '../src/shared/cube-index.js';
-import { decodeFacePage, faceRecord, FacePageError } from '../src/shared/face-page.js';
+import type { InnerNode } from '../../format/cube-index.js';
+import { decodeFacePage, faceRecord, FacePageError } from '../../format/face-page.js';
 import { gunzipIfNeeded, gunzipWithPako, isGzip } from '../src/shared/gunzip.js';
-import { chunkPriority, queryIndex } from '../src/shared/index-query.js';
+import { chunkPriority, queryIndex } from '../../format/index-query.js';
 import { relativeZ, surfaceParams } from '../src/shared/surface-params.js';
-import { formatSurface } from '../src/shared/surface-text.js';
-import { parseSurface, surfaceZ, type SurfaceSpec } from '../src/shared/surfaces.js';
+import { formatSurface } from '../../format/slicing-surface.js';
+import { parseSurface, surfaceZ, type SurfaceSpec } from '../../format/slicing-surface.js';
 import { keepUpwardTriangles } from '../src/shared/upward-triangles.js';
 import { fitBbox, groundToPixel, pixelToGround, viewBbox } from '../src/shared/view.js';
 

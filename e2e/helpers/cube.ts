@@ -5,9 +5,9 @@ import { mkdtemp, readFile, rm } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { promisify } from 'node:util';
-import { decodeChunk } from '../../client/src/shared/chunk-format.js';
-import { parseIndex, parseSubIndex, type ChunkLeaf, type CubeMeta, type InnerNode } from '../../client/src/shared/cube-index.js';
-import { queryIndex } from '../../client/src/shared/index-query.js';
+import { decodeChunk } from '../../format/chunk.js';
+import { parseIndex, parseSubIndex, type ChunkLeaf, type CubeMeta, type InnerNode } from '../../format/cube-index.js';
+import { queryIndex } from '../../format/index-query.js';
 import { dataset, repoRoot, styleFile } from '../../testing/paths.js';
 
 const run = promisify(execFile);

@@ -4,8 +4,8 @@ import { parseArgs } from 'node:util';
 import { InputError } from '../io/errors.js';
 import { generalizeFile } from '../pipeline.js';
 import { buildCube } from '../ssc/build-cube.js';
-import { readTgap, TGAP_MAGIC } from '../tgap/format.js';
-import type { Tgap } from '../tgap/model.js';
+import { readTgap, TGAP_MAGIC } from '../../format/tgap.js';
+import type { Tgap } from '../../format/tgap-model.js';
 import { generalizeOptionSpecs, parseNumber, pipelineOptions, UsageError } from './args.js';
 
 export const usage = `ssc build <input.geojson|file.tgap> --out <dir> [options]

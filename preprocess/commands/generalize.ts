@@ -2,7 +2,7 @@
 import { parseArgs } from 'node:util';
 import { writeFileAtomic } from '../io/atomic-write.js';
 import { generalizeFile } from '../pipeline.js';
-import { encodeTgap } from '../tgap/format.js';
+import { encodeTgap } from '../../format/tgap.js';
 import { generalizeOptionSpecs, pipelineOptions, UsageError } from './args.js';
 
 export const usage = `ssc generalize <input.geojson|.geojson.gz|.topojson> --out <file.tgap> [options]

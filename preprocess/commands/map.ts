@@ -3,9 +3,9 @@ import { parseArgs } from 'node:util';
 import { writeFileAtomic } from '../io/atomic-write.js';
 import { fitView, rasterizeAt } from '../map/rasterize.js';
 import { idsToPng } from '../map/render-png.js';
-import { readTgap } from '../tgap/format.js';
-import { scaleInfoOf } from '../tgap/model.js';
-import { zAtScale } from '../../client/src/shared/scale.js';
+import { readTgap } from '../../format/tgap.js';
+import { scaleInfoOf } from '../../format/tgap-model.js';
+import { zAtScale } from '../../format/scale.js';
 import { UsageError, viewArgs, viewOptionSpecs } from './args.js';
 import { classColours } from './style-colours.js';
 

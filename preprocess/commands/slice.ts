@@ -1,7 +1,7 @@
 // ssc slice <dir> (--step s | --scale n) --size WxH [--bbox] [--surface spec] --out slice.png [--ids ids.bin]
 import { parseArgs } from 'node:util';
-import { zAtScale } from '../../client/src/shared/scale.js';
-import { parseSurface, surfaceRange, surfaceZ, type Surface } from '../../client/src/shared/surfaces.js';
+import { zAtScale } from '../../format/scale.js';
+import { parseSurface, surfaceRange, surfaceZ, type Surface } from '../../format/slicing-surface.js';
 import { writeFileAtomic } from '../io/atomic-write.js';
 import { fitView } from '../map/rasterize.js';
 import { idsToPng } from '../map/render-png.js';

@@ -2,7 +2,7 @@
 // centre meets the boundary segments; between two crossings lies the face east of the first.
 // Every pixel gets exactly one face (or none, outside the domain), and a crossing whose west
 // face is not the face we are in is counted: a partition never has one.
-import { resolveFace, type Tgap } from '../tgap/model.js';
+import { resolveFace, type Tgap } from '../../format/tgap-model.js';
 
 export interface View {
   width: number;

@@ -1,7 +1,7 @@
 // One chunk's triangles as the chunk file's columns: vertices shared within a surface piece,
 // positions relative to an origin near the chunk so float32 keeps millimetres.
-import { encodeChunk, NO_CLASS } from '../../client/src/shared/chunk-format.js';
-import type { Box3 } from '../../client/src/shared/cube-index.js';
+import { encodeChunk, NO_CLASS } from '../../format/chunk.js';
+import type { Box3 } from '../../format/cube-index.js';
 import type { Surfaces } from './surfaces.js';
 
 export interface AssembledChunk {

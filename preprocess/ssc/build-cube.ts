@@ -5,17 +5,17 @@ import { createHash } from 'node:crypto';
 import { promises as fs } from 'node:fs';
 import path from 'node:path';
 import { brotliCompressSync, constants as zc, gzipSync } from 'node:zlib';
-import type { ChunkLeaf } from '../../client/src/shared/cube-index.js';
-import { scaleAtZ } from '../../client/src/shared/scale.js';
+import { encodeIndex, INDEX_FORMAT, INDEX_VERSION, type ChunkLeaf, type CubeIndexJson } from '../../format/cube-index.js';
+import { PIXEL_SIZE_MM } from '../../format/pixel-size.js';
+import { scaleAtZ } from '../../format/scale.js';
 import { writeDirAtomic } from '../io/atomic-write.js';
-import { PHASES, scaleInfoOf, type Tgap } from '../tgap/model.js';
+import { PHASES, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
 import { assembleChunk } from './assemble-chunk.js';
 import { planChunks } from './chunking.js';
-import { encodeFacePage, PAGE_SIZE } from './face-pages.js';
+import { encodeAttributePage, ATTRIBUTE_PAGE_SIZE } from '../../format/attribute-page.js';
+import { encodeFacePage, FACE_PAGE_SIZE } from '../../format/face-page.js';
 import { packTree, splitTree } from './rtree-index.js';
 import { buildSurfaces, type SurfaceStats } from './surfaces.js';
-
-export const PIXEL_SIZE_MM = 0.28;
 
 export interface BuildOptions {
   chunkBytes?: number;
@@ -77,17 +77,16 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   }
   lap('chunks');
   const facePages: { first: number; file: string }[] = [];
-  for (let first = 0; first < t.faces.length; first += PAGE_SIZE) {
-    const bytes = encodeFacePage(t.faces, first, Math.min(PAGE_SIZE, t.faces.length - first));
+  for (let first = 0; first < t.faces.length; first += FACE_PAGE_SIZE) {
+    const bytes = encodeFacePage(t.faces, first, Math.min(FACE_PAGE_SIZE, t.faces.length - first));
     const { name } = hashName('f', bytes, 'bin');
     files.set(name, bytes);
     facePages.push({ first, file: name });
   }
   const attributePages: { first: number; file: string }[] = [];
   const attrs = t.meta.attributes;
-  for (let first = 0; first < attrs.length; first += PAGE_SIZE) {
-    const json = JSON.stringify({ first, attributes: attrs.slice(first, first + PAGE_SIZE) });
-    const bytes = new TextEncoder().encode(json);
+  for (let first = 0; first < attrs.length; first += ATTRIBUTE_PAGE_SIZE) {
+    const bytes = encodeAttributePage(attrs, first);
     const { name } = hashName('a', bytes, 'json');
     files.set(name, bytes);
     attributePages.push({ first, file: name });
@@ -95,9 +94,9 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const tree = splitTree(packTree(leaves), opts.subIndexBytes ?? 128 * 1024, (json) => hashName('i', json, 'json').name);
   for (const f of tree.files) files.set(f.name, new TextEncoder().encode(f.json));
   const style = t.meta.style as { name?: string; attribution?: string };
-  const index = {
-    format: 'ssc-index',
-    version: 1,
+  const index: CubeIndexJson = {
+    format: INDEX_FORMAT,
+    version: INDEX_VERSION,
     meta: {
       name: style.name ?? t.meta.source,
       crs: t.meta.crs,
@@ -110,15 +109,15 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
       baseFaces: t.meta.baseFaces,
       pixelSizeMm: PIXEL_SIZE_MM,
       scaleTable: info.scaleTable,
-      style: t.meta.style,
+      style: t.meta.style as CubeIndexJson['meta']['style'],
       attribution: style.attribution ?? '',
       source: t.meta.source,
-      faces: { count: t.faces.length, pageSize: PAGE_SIZE, pages: facePages },
-      attributes: { count: attrs.length, pageSize: PAGE_SIZE, pages: attributePages },
+      faces: { count: t.faces.length, pageSize: FACE_PAGE_SIZE, pages: facePages },
+      attributes: { count: attrs.length, pageSize: ATTRIBUTE_PAGE_SIZE, pages: attributePages },
     },
     root: tree.root,
   };
-  files.set('index.json', new TextEncoder().encode(JSON.stringify(index)));
+  files.set('index.json', encodeIndex(index));
   lap('index');
   let bytesWritten = 0;
   await writeDirAtomic(outDir, async (dir) => {

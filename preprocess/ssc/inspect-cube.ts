@@ -3,9 +3,9 @@
 // extent (detail must follow scale).
 import { promises as fs } from 'node:fs';
 import path from 'node:path';
-import { isExternal, isLeaf, type IndexNode } from '../../client/src/shared/cube-index.js';
-import { scaleAtZ, zAtScale } from '../../client/src/shared/scale.js';
-import { PIXEL_SIZE_MM } from './build-cube.js';
+import { isExternal, isLeaf, type IndexNode } from '../../format/cube-index.js';
+import { scaleAtZ, zAtScale } from '../../format/scale.js';
+import { PIXEL_SIZE_MM } from '../../format/pixel-size.js';
 import { CubeReader } from './read-cube.js';
 
 export interface ViewRow {

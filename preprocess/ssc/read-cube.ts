@@ -3,9 +3,9 @@
 import { createHash } from 'node:crypto';
 import { promises as fs } from 'node:fs';
 import path from 'node:path';
-import { decodeChunk, type DecodedChunk } from '../../client/src/shared/chunk-format.js';
-import { parseIndex, parseSubIndex, type ChunkLeaf, type CubeIndex, type InnerNode } from '../../client/src/shared/cube-index.js';
-import { queryIndex, type QueryBox } from '../../client/src/shared/index-query.js';
+import { decodeChunk, type DecodedChunk } from '../../format/chunk.js';
+import { parseIndex, parseSubIndex, type ChunkLeaf, type CubeIndex, type InnerNode } from '../../format/cube-index.js';
+import { queryIndex, type QueryBox } from '../../format/index-query.js';
 import { InputError } from '../io/errors.js';
 
 export class CubeReader {

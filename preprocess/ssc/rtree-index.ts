@@ -1,6 +1,6 @@
 // The chunk index: an R-tree packed bottom-up from the chunks in their (Hilbert) order, 16
 // children a node; subtrees that would make a file too large go to sub-index files of their own.
-import type { Box3, ChunkLeaf, IndexNode, InnerNode } from '../../client/src/shared/cube-index.js';
+import { encodeSubIndex, type Box3, type ChunkLeaf, type IndexNode, type InnerNode } from '../../format/cube-index.js';
 
 export const FANOUT = 16;
 
@@ -57,7 +57,7 @@ export function splitTree(root: InnerNode, maxBytes: number, name: (json: string
       });
       if (biggest < 0) return inner;
       const child = inner.children[biggest] as InnerNode;
-      const json = JSON.stringify({ format: 'ssc-subindex', version: 1, node: child });
+      const json = encodeSubIndex(child);
       const file = name(json);
       files.push({ name: file, json });
       inner.children[biggest] = { bbox: child.bbox, ref: file, chunks: countChunks(child) };

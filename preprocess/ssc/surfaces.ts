@@ -6,7 +6,7 @@
 // - a split: the triangles the split gave each receiving face;
 // - simplification: each removed vertex's triangle, between the faces on either side.
 import { orient } from '../geom/predicates.js';
-import { EventKind, faceEndZ, LAST_REMOVAL_PHASE, phaseZ, REEMIT_PHASE, resolveFace, resolveFaceAt, type Tgap } from '../tgap/model.js';
+import { EventKind, faceEndZ, LAST_REMOVAL_PHASE, phaseZ, REEMIT_PHASE, resolveFace, resolveFaceAt, type Tgap } from '../../format/tgap-model.js';
 import { triangulateFace, type FaceEdge, type TriangulateStats } from './triangulate-face.js';
 
 export class Surfaces {

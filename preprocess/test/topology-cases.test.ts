@@ -11,8 +11,8 @@ import { tempDir } from '../../testing/temp-dir.js';
 import { resolveCrs } from '../io/crs.js';
 import { InputError } from '../io/errors.js';
 import { readInput } from '../io/read-input.js';
-import { readTgap } from '../tgap/format.js';
-import type { Tgap } from '../tgap/model.js';
+import { readTgap } from '../../format/tgap.js';
+import type { Tgap } from '../../format/tgap-model.js';
 import { buildTopology, type Topology, type TopologyRepairs } from '../topology/build-topology.js';
 
 type Json = null | boolean | number | string | Json[] | { [key: string]: Json };

@@ -5,10 +5,11 @@
 import FlatQueue from 'flatqueue';
 import type { Style } from '../style.js';
 import type { Topology } from '../topology/build-topology.js';
-import { EventKind, REEMIT_PHASE, type TgapEdge, type TgapEvent, type TgapFace } from './model.js';
+import { EventKind, REEMIT_PHASE, type TgapEdge, type TgapEvent, type TgapFace } from '../../format/tgap-model.js';
 import { ALIVE, EMPTY_U8, PlanarState } from './planar-state.js';
 import { simplifyEdge, StepTriangles } from './simplify.js';
 import { splitFace } from './split.js';
+import { scaleOfFaces } from '../../format/scale.js';
 
 export interface GeneralizeOptions {
   /** Scale denominator of the input. */
@@ -227,7 +228,7 @@ export function generalize(topo: Topology, classOf: (face: number) => number, st
       if (k < 0) {
         k = ++st.step;
         tris.clear();
-        const scale = opts.baseScale * Math.sqrt(nb / Math.max(1, st.aliveFaces - Math.min(group, st.aliveFaces - 1)));
+        const scale = scaleOfFaces(opts.baseScale, nb, st.aliveFaces - Math.min(group, st.aliveFaces - 1));
         tol = scale * metresPerMm;
       }
       const res = splitting ? splitFace(st, L) : null;

@@ -2,7 +2,7 @@
 // nodes with their edges, and every version made so far (which becomes the tGAP).
 import { chainArea2, chainLength } from '../geom/ring.js';
 import type { Topology } from '../topology/build-topology.js';
-import type { TgapEdge, TgapFace } from './model.js';
+import type { TgapEdge, TgapFace } from '../../format/tgap-model.js';
 import { VertexIndex } from './vertex-index.js';
 
 const NONE = 0x7fffffff; // stepHigh of what is still alive

@@ -6,7 +6,7 @@
 import FlatQueue from 'flatqueue';
 import RBush from 'rbush';
 import { blocksRemoval, orient } from '../geom/predicates.js';
-import { LAST_REMOVAL_PHASE } from './model.js';
+import { LAST_REMOVAL_PHASE } from '../../format/tgap-model.js';
 import type { PlanarState } from './planar-state.js';
 
 interface Tri {

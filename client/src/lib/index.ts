@@ -26,7 +26,7 @@ export type {
   VarioMapSettings,
 } from '../vario-map.js';
 export type { Handler } from '../interaction/interaction-context.js';
-export type { CubeMeta } from '../shared/cube-index.js';
+export type { CubeMeta } from '../../../format/cube-index.js';
 export { AttributionControl } from '../ui/attribution-control.js';
 export { ScaleBar } from '../ui/scale-bar.js';
 export { SettingsPanel, type SurfaceMode } from '../ui/settings-panel.js';

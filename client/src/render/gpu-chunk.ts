@@ -1,6 +1,7 @@
 // A chunk on the GPU: its vertex section as one buffer (attributes at offsets into it, exactly
 // as the file lays them out) and its triangle indices, bound in a vertex array object.
-import type { Box3 } from '../shared/cube-index.js';
+import { VERTEX_COLUMNS, vertexColumnOffset } from '../../../format/chunk.js';
+import type { Box3 } from '../../../format/cube-index.js';
 import type { ChunkPayload } from '../source/worker-protocol.js';
 
 export class GpuChunk {
@@ -31,18 +32,13 @@ export class GpuChunk {
     const vbo = gl.createBuffer();
     gl.bindBuffer(gl.ARRAY_BUFFER, vbo);
     gl.bufferData(gl.ARRAY_BUFFER, new Uint8Array(c.buffer, c.vertexByteOffset, c.vertexByteLength), gl.STATIC_DRAW);
-    // Layout of the file's vertex section: positions (3 f32), upper and lower face (u32),
-    // upper and lower class (u16).
-    gl.enableVertexAttribArray(0);
-    gl.vertexAttribPointer(0, 3, gl.FLOAT, false, 12, 0);
-    gl.enableVertexAttribArray(1);
-    gl.vertexAttribIPointer(1, 1, gl.UNSIGNED_INT, 4, 12 * V);
-    gl.enableVertexAttribArray(2);
-    gl.vertexAttribIPointer(2, 1, gl.UNSIGNED_INT, 4, 16 * V);
-    gl.enableVertexAttribArray(3);
-    gl.vertexAttribIPointer(3, 1, gl.UNSIGNED_SHORT, 2, 20 * V);
-    gl.enableVertexAttribArray(4);
-    gl.vertexAttribIPointer(4, 1, gl.UNSIGNED_SHORT, 2, 22 * V);
+    // Attribute i is the file's vertex column i, read in place (format/chunk.ts).
+    VERTEX_COLUMNS.forEach((col, i) => {
+      gl.enableVertexAttribArray(i);
+      const offset = vertexColumnOffset(i, V);
+      if (col.type === 'f32') gl.vertexAttribPointer(i, col.components, gl.FLOAT, false, col.bytes, offset);
+      else gl.vertexAttribIPointer(i, col.components, col.type === 'u32' ? gl.UNSIGNED_INT : gl.UNSIGNED_SHORT, col.bytes, offset);
+    });
     const ibo = gl.createBuffer();
     gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, ibo);
     gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, new Uint8Array(c.buffer, c.indexByteOffset, indexBytes), gl.STATIC_DRAW);

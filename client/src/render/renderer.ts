@@ -1,8 +1,8 @@
 // The GPU side of the map: the WebGL2 context and everything made in it (passes, targets, the
 // style texture, the chunks), one frame at a time, and reading the ID buffer back. A lost
 // context is given up quietly and rebuilt on restore; the chunks then have to be uploaded again.
-import type { CubeMeta } from '../shared/cube-index.js';
-import type { Surface } from '../shared/surfaces.js';
+import type { CubeMeta } from '../../../format/cube-index.js';
+import type { Surface } from '../../../format/slicing-surface.js';
 import type { ViewGeometry } from '../shared/view.js';
 import type { ChunkPayload } from '../source/worker-protocol.js';
 import { ChunkStore } from './chunk-store.js';

@@ -1,8 +1,8 @@
 // The style as a texture the colour pass looks classes up in (one column per class):
 // row 0 the fill colour, row 1 the pattern colour and kind, row 2 the z range in which the
 // pattern shows (its scale range turned into steps, so the pass compares with the slice's z).
-import type { CubeMeta } from '../shared/cube-index.js';
-import { zAtScale } from '../shared/scale.js';
+import type { CubeMeta } from '../../../format/cube-index.js';
+import { zAtScale } from '../../../format/scale.js';
 import { texture2d } from './targets.js';
 
 export type Rgba = [number, number, number, number];

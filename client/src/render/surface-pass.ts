@@ -3,7 +3,7 @@
 import fullscreenVert from '../../shaders/fullscreen.vert?raw';
 import surfaceFrag from '../../shaders/surface.frag?raw';
 import { surfaceParams, MAX_IDW_POINTS } from '../shared/surface-params.js';
-import { surfaceZ, type Surface } from '../shared/surfaces.js';
+import { surfaceZ, type Surface } from '../../../format/slicing-surface.js';
 import type { ViewGeometry } from '../shared/view.js';
 import { Program } from './program.js';
 import type { Targets } from './targets.js';

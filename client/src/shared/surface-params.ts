@@ -2,7 +2,7 @@
 // involves absolute (national grid) coordinates is done here in float64, so the shader works
 // with offsets of at most a screen's ground size and float32 is precise enough.
 // `relativeZ` is the shader's formula in JavaScript (client/shaders/surface.frag), for tests.
-import type { Surface } from './surfaces.js';
+import type { Surface } from '../../../format/slicing-surface.js';
 
 export const MAX_IDW_POINTS = 64;
 

@@ -1,7 +1,7 @@
 // One chunk from the network to GPU-ready arrays: fetch (with retries), gunzip when the body
 // is still gzip, decode and check it, and compare its SHA-256 with the index.
-import type { ChunkLeaf } from '../shared/cube-index.js';
-import { ChunkFormatError, decodeChunk } from '../shared/chunk-format.js';
+import type { ChunkLeaf } from '../../../format/cube-index.js';
+import { ChunkFormatError, decodeChunk } from '../../../format/chunk.js';
 import { gunzipIfNeeded } from '../shared/gunzip.js';
 import { sha256Hex } from '../shared/sha256.js';
 import { keepUpwardTriangles } from '../shared/upward-triangles.js';

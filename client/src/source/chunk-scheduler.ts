@@ -4,8 +4,8 @@
 // - a request for a chunk that left the view (and its margin) is aborted;
 // - the nearest to the view centre and base z go first, the on-screen ones before the margin,
 //   then those of the views ahead (a flight's path), in the order they will be shown.
-import type { ChunkLeaf } from '../shared/cube-index.js';
-import { boxMeets, chunkPriority } from '../shared/index-query.js';
+import type { ChunkLeaf } from '../../../format/cube-index.js';
+import { boxMeets, chunkPriority } from '../../../format/index-query.js';
 import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
 import { FetchFailure } from './fetch-retry.js';
 import type { IndexTree } from './index-tree.js';

@@ -1,6 +1,6 @@
 // The map's side of the chunk worker: starts it, forwards views and GPU notices, mirrors every
 // chunk's status, and turns the worker's messages into events.
-import type { CubeMeta } from '../shared/cube-index.js';
+import type { CubeMeta } from '../../../format/cube-index.js';
 import { Evented } from '../events.js';
 import { createChunkWorker } from './create-worker.js';
 import type { ChunkPayload, ChunkStatus, FeatureInfo, FromWorker, NeededChunks, SourceErrorInfo, SourceOptions, ToWorker, ViewRequest } from './worker-protocol.js';

@@ -1,15 +1,11 @@
 // What picking shows about a face: its face table record (class, feature, steps) and the input
 // attributes of its feature, from pages fetched once each on first use. Runs in the worker.
-import type { PageList } from '../shared/cube-index.js';
-import { decodeFacePage, faceRecord, type FacePage } from '../shared/face-page.js';
+import { decodeAttributePage, featureAttributes, type AttributePage } from '../../../format/attribute-page.js';
+import type { PageList } from '../../../format/cube-index.js';
+import { decodeFacePage, faceRecord, type FacePage } from '../../../format/face-page.js';
 import { gunzipIfNeeded } from '../shared/gunzip.js';
 import { fetchBytes, fetchJson, type RetryOptions } from './fetch-retry.js';
 import type { FeatureInfo } from './worker-protocol.js';
-
-interface AttributePage {
-  first: number;
-  attributes: (Record<string, unknown> | null)[];
-}
 
 /** The page holding item `i` (pages sorted by `first`), or undefined. */
 function pageOf(list: PageList, i: number): { first: number; file: string } | undefined {
@@ -45,7 +41,7 @@ export class FeaturePages {
     const ap = rec.feature >= 0 ? pageOf(this.attributes, rec.feature) : undefined;
     if (ap) {
       const page = await this.attrPage(ap.file);
-      properties = page.attributes[rec.feature - page.first] ?? null;
+      properties = featureAttributes(page, rec.feature);
     }
     return { ...rec, properties };
   }
@@ -63,11 +59,7 @@ export class FeaturePages {
   private attrPage(file: string): Promise<AttributePage> {
     let p = this.attrPages.get(file);
     if (!p) {
-      p = fetchJson(this.url(file), this.retry).then((json) => {
-        const j = json as { first?: unknown; attributes?: unknown };
-        if (typeof j.first !== 'number' || !Array.isArray(j.attributes)) throw new Error(`${file}: expected {first, attributes}`);
-        return { first: j.first, attributes: j.attributes as (Record<string, unknown> | null)[] };
-      });
+      p = fetchJson(this.url(file), this.retry).then((json) => decodeAttributePage(json, file));
       p.catch(() => this.attrPages.delete(file));
       this.attrPages.set(file, p);
     }

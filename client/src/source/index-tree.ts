@@ -1,7 +1,7 @@
 // The cube's R-tree in the worker: the root from index.json, sub-index files fetched the first
 // time a query reaches them (once each, however many queries ask meanwhile).
-import { parseIndex, parseSubIndex, type CubeIndex, type InnerNode } from '../shared/cube-index.js';
-import { queryIndex, type QueryBox, type QueryResult } from '../shared/index-query.js';
+import { parseIndex, parseSubIndex, type CubeIndex, type InnerNode } from '../../../format/cube-index.js';
+import { queryIndex, type QueryBox, type QueryResult } from '../../../format/index-query.js';
 import { fetchJson, type RetryOptions } from './fetch-retry.js';
 
 export class IndexTree {

@@ -1,6 +1,6 @@
 // Messages between the map (main thread) and the chunk worker.
-import type { Box3, CubeMeta } from '../shared/cube-index.js';
-import type { FaceRecord } from '../shared/face-page.js';
+import type { Box3, CubeMeta } from '../../../format/cube-index.js';
+import type { FaceRecord } from '../../../format/face-page.js';
 
 /** not-requested -> requested -> received -> gpu -> evicted (-> requested ...); failed: corrupt or gave up. */
 export type ChunkStatus = 'not-requested' | 'requested' | 'received' | 'gpu' | 'evicted' | 'failed';

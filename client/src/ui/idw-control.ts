@@ -2,7 +2,7 @@
 // user: a click on the map places a point (with more detail than the view: a quarter of its
 // scale), dragging moves it, the wheel over it changes its z, a double click removes it.
 import type { SliceMap } from '../slice-map.js';
-import { scaleAtZ, zAtScale } from '../shared/scale.js';
+import { scaleAtZ, zAtScale } from '../../../format/scale.js';
 import { groundToPixel } from '../shared/view.js';
 
 export interface IdwPoint {

@@ -2,6 +2,7 @@
 // the cube) around the ground point under the pointer.
 import type { SliceMap } from '../slice-map.js';
 import { resolutionAtScale } from '../shared/view.js';
+import { PIXEL_SIZE_MM } from '../../../format/pixel-size.js';
 
 export interface LensOptions {
   /** Radius in CSS pixels (turned into ground units at the scale of the moment). */
@@ -34,7 +35,7 @@ export class LensControl {
   /** Puts the lens under a CSS pixel position of the container. */
   moveTo(point: [number, number]): void {
     const [cx, cy] = this.map.unproject(point);
-    const pixelSizeMm = this.map.cubeMeta?.pixelSizeMm ?? 0.28;
+    const pixelSizeMm = this.map.cubeMeta?.pixelSizeMm ?? PIXEL_SIZE_MM;
     const radius = this.options.radiusPx * resolutionAtScale(this.map.getScale(), pixelSizeMm);
     this.map.setSurface({ kind: 'lens', cx, cy, radius, depth: this.options.depth });
   }

@@ -3,7 +3,7 @@
 // slicing surface, the comparison mode (discrete scales), and the interaction log's export.
 // Native, labelled form controls, so the panel works from the keyboard and with screen readers.
 import { InteractionLog } from '../research/interaction-log.js';
-import type { SurfaceSpec } from '../shared/surfaces.js';
+import type { SurfaceSpec } from '../../../format/slicing-surface.js';
 import { resolutionAtScale } from '../shared/view.js';
 import type { BlendMode, Control, VarioMap } from '../vario-map.js';
 import { controlButton, controlGroup, field, numberInput, select } from './control-dom.js';

@@ -3,6 +3,7 @@
 // the map there.
 import { formatHash, parseHash } from '../shared/hash-text.js';
 import type { VarioMap } from '../vario-map.js';
+import { PIXEL_SIZE_MM } from '../../../format/pixel-size.js';
 
 export class UrlHash {
   constructor(private readonly map: VarioMap) {
@@ -24,7 +25,7 @@ export class UrlHash {
 
   private readonly write = (): void => {
     const meta = this.map.getMetadata();
-    const hash = formatHash(this.map.getCenter(), this.map.getScaleDenominator(), meta?.pixelSizeMm ?? 0.28);
+    const hash = formatHash(this.map.getCenter(), this.map.getScaleDenominator(), meta?.pixelSizeMm ?? PIXEL_SIZE_MM);
     if (hash !== location.hash) history.replaceState(history.state, '', hash);
   };
 

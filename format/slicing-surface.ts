@@ -1,6 +1,8 @@
 // Slicing surfaces: z (the step, i.e. the level of detail) as a function of the ground
-// position. The CPU reference slicer and the map use these same definitions; the GPU version
-// of each must agree with them (tests compare the two).
+// position, and their text form ("kind:key=value,...", what `ssc slice --surface` and the map's
+// URL take; parseSurface reads it, formatSurface writes it so that numbers read back exactly).
+// The CPU reference slicer and the map use these same definitions; the GPU version of each
+// must agree with them (tests compare the two).
 
 export type SurfaceSpec =
   | { kind: 'flat' }
@@ -141,4 +143,20 @@ export function parseSurface(text: string): SurfaceSpec {
     if (!(k in spec) && !(kind === 'idw' && k === 'points')) throw new Error(`surface ${kind}: unknown key ${JSON.stringify(k)}`);
   }
   return spec;
+}
+
+export function formatSurface(spec: SurfaceSpec): string {
+  const n = (v: number): string => String(v);
+  switch (spec.kind) {
+    case 'flat':
+      return 'flat';
+    case 'tilted':
+      return `tilted:cx=${n(spec.cx)},cy=${n(spec.cy)},dzdx=${n(spec.dzdx)},dzdy=${n(spec.dzdy)}`;
+    case 'sine':
+      return `sine:amplitude=${n(spec.amplitude)},wavelength=${n(spec.wavelength)},angle=${n(spec.angle)}`;
+    case 'lens':
+      return `lens:cx=${n(spec.cx)},cy=${n(spec.cy)},radius=${n(spec.radius)},depth=${n(spec.depth)}`;
+    case 'idw':
+      return `idw:power=${n(spec.power)},points=${spec.points.map((p) => `${n(p.x)} ${n(p.y)} ${n(p.z)}`).join(';')}`;
+  }
 }

@@ -22,8 +22,16 @@ export function facesAliveAt(info: ScaleInfo, z: number): number {
   return t[t.length - 1]![1];
 }
 
+/**
+ * The scale denominator at which `facesAlive` faces are shown, when `baseFaces` are shown at
+ * `baseScale`: a constant number of faces per map area, St = Sb sqrt(Nb / Nt).
+ */
+export function scaleOfFaces(baseScale: number, baseFaces: number, facesAlive: number): number {
+  return baseScale * Math.sqrt(baseFaces / Math.max(1, facesAlive));
+}
+
 export function scaleAtZ(info: ScaleInfo, z: number): number {
-  return info.baseScale * Math.sqrt(info.baseFaces / Math.max(1, facesAliveAt(info, z)));
+  return scaleOfFaces(info.baseScale, info.baseFaces, facesAliveAt(info, z));
 }
 
 /** The z showing the given scale denominator (clamped to the cube). */

@@ -1,9 +1,10 @@
 // The tGAP file: magic, version, metadata JSON, then vertices, faces, edges and events as
-// columns of little-endian numbers, then a SHA-256 of all of it (docs/FORMAT.md).
+// columns of little-endian numbers, then a SHA-256 of all of it (docs/FORMAT.md, "tGAP file").
+// Node only (node:crypto, node:fs): the map never reads a tGAP.
 import { promises as fs } from 'node:fs';
-import { BinaryReader, BinaryWriter } from '../io/binary.js';
-import { InputError } from '../io/errors.js';
-import type { EventKind, Tgap, TgapEdge, TgapEvent, TgapFace, TgapMeta } from './model.js';
+import { BinaryReader, BinaryWriter } from './binary-sections.js';
+import { FormatError } from './format-error.js';
+import type { EventKind, Tgap, TgapEdge, TgapEvent, TgapFace, TgapMeta } from './tgap-model.js';
 
 export const TGAP_MAGIC = 0x50414754; // "TGAP" read as a little-endian u32
 export const TGAP_VERSION = 1;
@@ -79,9 +80,9 @@ export function encodeTgap(t: Tgap): Uint8Array {
 
 export function decodeTgap(buf: Uint8Array, file: string): Tgap {
   const r = new BinaryReader(buf, file);
-  if (r.u32() !== TGAP_MAGIC) throw new InputError('is not a tGAP file (bad magic)', { file });
+  if (r.u32() !== TGAP_MAGIC) throw new FormatError('is not a tGAP file (bad magic)', file);
   const version = r.u32();
-  if (version !== TGAP_VERSION) throw new InputError(`has tGAP version ${version}; this program reads version ${TGAP_VERSION}`, { file });
+  if (version !== TGAP_VERSION) throw new FormatError(`has tGAP version ${version}; this program reads version ${TGAP_VERSION}`, file);
   const meta = r.json<TgapMeta>();
   const xy = r.f64();
   const nv = xy.length / 2;
@@ -101,7 +102,7 @@ export function decodeTgap(buf: Uint8Array, file: string): Tgap {
   const rOff = r.u32a(), removed = r.i32(), phases = r.u8();
   const ne = eStart.length;
   const check = (ok: boolean, what: string): void => {
-    if (!ok) throw new InputError(`is inconsistent: ${what}`, { file });
+    if (!ok) throw new FormatError(`is inconsistent: ${what}`, file);
   };
   check(vOff.length === ne + 1 && pOff.length === ne + 1 && rOff.length === ne + 1, 'edge offset tables');
   check(vOff[ne] === verts.length && pOff[ne] === parents.length && rOff[ne] === removed.length && phases.length === removed.length, 'edge lists');
@@ -145,7 +146,7 @@ export async function readTgap(file: string): Promise<Tgap> {
   try {
     buf = await fs.readFile(file);
   } catch (err) {
-    throw new InputError(`cannot read tGAP: ${(err as Error).message}`, { file });
+    throw new FormatError(`cannot read tGAP: ${(err as Error).message}`, file);
   }
   return decodeTgap(buf, file);
 }

@@ -1,7 +1,7 @@
-// Little-endian binary sections: 8-byte aligned typed arrays behind a u32 length, and a
-// SHA-256 trailer so truncation and corruption are found before anything is used.
+// Little-endian binary sections of the tGAP file: 8-byte aligned typed arrays behind a u32
+// length, and a SHA-256 trailer so truncation and corruption are found before anything is used.
 import { createHash } from 'node:crypto';
-import { InputError } from './errors.js';
+import { FormatError } from './format-error.js';
 
 type Typed = Int32Array | Uint32Array | Float64Array | Float32Array | Uint8Array | Uint16Array;
 
@@ -57,11 +57,11 @@ export class BinaryReader {
   private readonly end: number;
 
   constructor(private readonly buf: Uint8Array, private readonly file: string) {
-    if (buf.length < 40) throw new InputError('is truncated (shorter than a header)', { file });
+    if (buf.length < 40) throw new FormatError('is truncated (shorter than a header)', file);
     this.end = buf.length - 32;
     const digest = createHash('sha256').update(buf.subarray(0, this.end)).digest();
     for (let i = 0; i < 32; i++) {
-      if (digest[i] !== buf[this.end + i]) throw new InputError('is corrupt or truncated (checksum mismatch)', { file });
+      if (digest[i] !== buf[this.end + i]) throw new FormatError('is corrupt or truncated (checksum mismatch)', file);
     }
     this.view = new DataView(buf.buffer, buf.byteOffset, buf.byteLength);
   }
@@ -85,7 +85,7 @@ export class BinaryReader {
   }
 
   private need(n: number): void {
-    if (this.o + n > this.end) throw new InputError(`is truncated (needs ${n} bytes at offset ${this.o})`, { file: this.file });
+    if (this.o + n > this.end) throw new FormatError(`is truncated (needs ${n} bytes at offset ${this.o})`, this.file);
   }
 
   private raw(bytesPer: number): ArrayBuffer {
@@ -112,11 +112,11 @@ export class BinaryReader {
     try {
       return JSON.parse(new TextDecoder().decode(b)) as T;
     } catch (err) {
-      throw new InputError(`has an unreadable JSON section: ${(err as Error).message}`, { file: this.file });
+      throw new FormatError(`has an unreadable JSON section: ${(err as Error).message}`, this.file);
     }
   }
 
   done(): void {
-    if (this.o !== this.end) throw new InputError(`has ${this.end - this.o} unexpected bytes before its checksum`, { file: this.file });
+    if (this.o !== this.end) throw new FormatError(`has ${this.end - this.o} unexpected bytes before its checksum`, this.file);
   }
 }

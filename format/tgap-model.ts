@@ -1,12 +1,11 @@
-import { scaleKnots, type ScaleInfo } from '../../client/src/shared/scale.js';
-
-// The tGAP as it is built and stored: vertices, edge versions and face versions with step
-// ranges, and the events that link them (the DAG). A state s (0 = input, s = after s steps)
-// holds the edges and faces with stepLow <= s < stepHigh.
+// The tGAP as it is built and stored (docs/FORMAT.md, "tGAP file"): vertices, edge versions
+// and face versions with step ranges, and the events that link them (the DAG). A state s
+// (0 = input, s = after s steps) holds the edges and faces with stepLow <= s < stepHigh.
+import { scaleKnots, type ScaleInfo } from './scale.js';
 
 /**
  * Sub-steps of one step: phase 0 is the merge or split, phases 1..6 hold line simplification,
- * phase 7 re-draws faces whose surfaces have grown costly (see generalize.ts).
+ * phase 7 re-draws faces whose surfaces have grown costly (see preprocess/tgap/generalize.ts).
  */
 export const PHASES = 8;
 export const LAST_REMOVAL_PHASE = PHASES - 2;

@@ -1,0 +1,3 @@
+// The standard screen pixel (OGC WMS 1.3 / WMTS): a scale denominator and a ground size per
+// pixel are the same thing through it. Written into index.json as meta.pixelSizeMm.
+export const PIXEL_SIZE_MM = 0.28;

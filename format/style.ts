@@ -1,0 +1,87 @@
+// The style (docs/FORMAT.md, "Style"): which property holds the class, and per class its
+// colour, label, importance weight, pattern and whether it is linear. One schema for the file
+// a cartographer writes (`ssc generalize --style`) and for the copy stored in the tGAP and in
+// index.json (meta.style), which the map reads.
+import * as v from 'valibot';
+import { PIXEL_SIZE_MM } from './pixel-size.js';
+
+const HEX = /^#[0-9a-fA-F]{6}$/;
+// Messages do not name the field: describeIssues puts its path in front.
+const hex = () => v.pipe(v.string('must be a colour "#rrggbb"'), v.regex(HEX, 'must be a colour "#rrggbb"'));
+const finite = () => v.pipe(v.number('must be a number'), v.finite('must be a finite number'));
+const unit = () => v.pipe(finite(), v.minValue(0, 'must be in [0, 1]'), v.maxValue(1, 'must be in [0, 1]'));
+const bool = () => v.boolean('must be true or false');
+const str = () => v.string('must be a string');
+
+export const PATTERN_KINDS = ['hatch', 'dots', 'cross'] as const;
+
+export const PatternSchema = v.object({
+  kind: v.picklist(PATTERN_KINDS, 'must be hatch, dots or cross'),
+  color: hex(),
+  minScale: v.optional(finite()),
+  maxScale: v.optional(finite()),
+});
+
+const classEntries = {
+  label: v.optional(str()),
+  color: hex(),
+  /** Importance per unit area: the least important face (area x weight) goes first. */
+  weight: v.optional(v.pipe(finite(), v.gtValue(0, 'must be a positive number')), 1),
+  /** Long thin faces (roads, watercourses): split among their neighbours instead of merged whole. */
+  linear: v.optional(bool(), false),
+  /** Drawn over the fill within a scale range (client side). */
+  pattern: v.optional(PatternSchema),
+};
+
+const ClassSchema = v.object(classEntries);
+/** In an array the key is given in the class: JSON objects put numeric keys first, arrays keep order. */
+const KeyedClassSchema = v.object({ key: v.union([v.string(), v.number()], 'must be a string or a number'), ...classEntries });
+
+export const StyleSchema = v.object({
+  name: v.optional(str(), 'unnamed'),
+  classProperty: v.optional(v.nullable(str()), null),
+  idProperty: v.optional(v.nullable(str()), null),
+  /** Scale denominator of the input data (step 0); 0: chosen from the data. */
+  baseScale: v.optional(v.pipe(finite(), v.check((n) => n === 0 || n >= 1, 'must be a number >= 1 (or 0: chosen from the data)')), 0),
+  /** Simplification tolerance on the map, in mm: one standard pixel unless said otherwise. */
+  resolutionMm: v.optional(v.pipe(finite(), v.minValue(0, 'must be a number >= 0')), PIXEL_SIZE_MM),
+  /** Holes in the union of the faces are outside the domain (enclaves), not gaps. */
+  allowHoles: v.optional(bool(), false),
+  background: v.optional(hex(), '#ffffff'),
+  attribution: v.optional(str(), ''),
+  defaultCompatibility: v.optional(unit(), 0.5),
+  classes: v.union(
+    [v.pipe(v.record(v.string(), ClassSchema), v.check((r) => Object.keys(r).length > 0, 'is empty')),
+      v.pipe(v.array(KeyedClassSchema), v.minLength(1, 'is empty'))],
+    'must be an object of class -> {color, weight, linear} or an array of {key, color, ...}',
+  ),
+  /** compatibility[loser][neighbour] in [0, 1]: how well the neighbour takes the loser's area. */
+  compatibility: v.optional(v.record(v.string(), v.record(v.string(), unit())), {}),
+});
+
+export type StyleJson = v.InferInput<typeof StyleSchema>;
+export type ParsedStyleJson = v.InferOutput<typeof StyleSchema>;
+export type PatternJson = v.InferOutput<typeof PatternSchema>;
+
+/** One class with its key, in the style's order. */
+export interface StyleClass {
+  key: string;
+  label: string;
+  /** Lower-case "#rrggbb". */
+  color: string;
+  weight: number;
+  linear: boolean;
+  pattern?: PatternJson;
+}
+
+/** The classes of a parsed style in order, labels defaulting to the key and colours lower case. */
+export function styleClasses(style: ParsedStyleJson): StyleClass[] {
+  const entries: [string, v.InferOutput<typeof ClassSchema>][] = Array.isArray(style.classes)
+    ? style.classes.map((c) => [String(c.key), c])
+    : Object.entries(style.classes);
+  return entries.map(([key, c]) => {
+    const out: StyleClass = { key, label: c.label ?? key, color: c.color.toLowerCase(), weight: c.weight, linear: c.linear };
+    if (c.pattern) out.pattern = { ...c.pattern, color: c.pattern.color.toLowerCase() };
+    return out;
+  });
+}
