@@ -19,17 +19,17 @@ const FILES_CACHE = 'vario-cube-files';
 
 /** The cube file URLs (index excluded) in the service worker's cache. */
 function cachedFiles(page: Page): Promise<string[]> {
-  return page.evaluate(`caches.open(${JSON.stringify(FILES_CACHE)}).then((c) => c.keys()).then((ks) => ks.map((k) => k.url))`) as Promise<string[]>;
+  return page.evaluate<string[]>(`caches.open(${JSON.stringify(FILES_CACHE)}).then((c) => c.keys()).then((ks) => ks.map((k) => k.url))`);
 }
 
 /** The map's loaded file URLs that are not in the cache yet. */
 function uncached(page: Page): Promise<string[]> {
-  return page.evaluate(`(async () => {
+  return page.evaluate<string[]>(`(async () => {
     const urls = await window.map.getLoadedUrls();
     const out = [];
     for (const u of urls) if (!(await caches.match(u))) out.push(u);
     return out;
-  })()`) as Promise<string[]>;
+  })()`);
 }
 
 const names = (urls: string[]): string[] => urls.map((u) => decodeURIComponent(new URL(u).pathname.split('/').pop()!)).sort();
@@ -159,7 +159,7 @@ describe('offline use (bgt_otterlo_400m, service worker)', () => {
       left = names(await cachedFiles(page)).filter((f) => onlyA.includes(f));
     }
     assert.deepEqual(left, [], 'no file only the old build used is left in the cache');
-    const loaded = names(((await page.evaluate('window.map.getLoadedUrls()')) as string[]).filter((u) => !u.endsWith('/index.json')));
+    const loaded = names((await page.evaluate<string[]>('window.map.getLoadedUrls()')).filter((u) => !u.endsWith('/index.json')));
     assert.ok(loaded.length > 0);
     assert.deepEqual(loaded.filter((f) => !bFiles.has(f)), [], 'the reloaded map uses the new build only');
     await checkAndClose(mp);

@@ -84,7 +84,8 @@ test('bgt_otterlo_400m cube', async (t) => {
       const a = readIds(path.join(dir, 's.ids'));
       const surface = { base, spec: parseSurface(spec) };
       const px = (view.bbox[2] - view.bbox[0]) / W, py = (view.bbox[3] - view.bbox[1]) / H;
-      let bad = 0, zs = new Set<number>();
+      let bad = 0;
+      const zs = new Set<number>();
       for (let j = 0; j < H; j++) {
         for (let i = 0; i < W; i++) {
           const z = surfaceZ(surface, view.bbox[0] + (i + 0.5) * px, view.bbox[3] - (j + 0.5) * py, steps);

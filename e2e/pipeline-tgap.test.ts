@@ -125,7 +125,7 @@ test('bgt_otterlo_400m: generalize, map at step 0 and at sampled steps', async (
     assert.equal(m.code, 0, m.stderr);
     const ids = readIds(path.join(dir, 'm0.ids'));
     const polys = geo.features.map((f) => (f.geometry.type === 'Polygon' ? [f.geometry.coordinates as number[][][]] : (f.geometry.coordinates as number[][][][])));
-    const ref = rasterizeFeatures(polys as unknown as number[][][][][], view);
+    const ref = rasterizeFeatures(polys, view);
     // Face f at step 0 is input feature f - 1.
     const c = compareIds(ids, ref, W, H);
     assert.ok(c.equal / (W * H) >= 0.995, `only ${(100 * c.equal / (W * H)).toFixed(2)}% of pixels equal`);

@@ -101,10 +101,10 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
     };
     await open({ center: `${(ext()[0] + ext()[2]) / 2},${(ext()[1] + ext()[3]) / 2}`, scale: 1500 });
     assert.equal(await waitIdle(mpOrThrow().page), true);
-    const inside = await count(pat.maxScale! * 0.8);
-    assert.ok(inside.of > 1000 && inside.pattern > inside.of * 0.02, `at 1:${pat.maxScale! * 0.8} ${inside.pattern} of ${inside.of} vegetated pixels show the pattern`);
-    const beyond = await count(pat.maxScale! * 1.25);
-    assert.ok(beyond.of > 1000 && beyond.pattern === 0, `at 1:${pat.maxScale! * 1.25} ${beyond.pattern} of ${beyond.of} show it`);
+    const inside = await count(pat.maxScale * 0.8);
+    assert.ok(inside.of > 1000 && inside.pattern > inside.of * 0.02, `at 1:${pat.maxScale * 0.8} ${inside.pattern} of ${inside.of} vegetated pixels show the pattern`);
+    const beyond = await count(pat.maxScale * 1.25);
+    assert.ok(beyond.of > 1000 && beyond.pattern === 0, `at 1:${pat.maxScale * 1.25} ${beyond.pattern} of ${beyond.of} show it`);
   });
 
   function mpOrThrow(): MapPage {

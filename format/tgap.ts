@@ -64,7 +64,7 @@ export function encodeTgap(t: Tgap): Uint8Array {
   w.array(rOff);
   w.array(concatI32(E, (e) => e.removed, rOff[E.length]!));
   const phases = new Uint8Array(rOff[E.length]!);
-  E.forEach((e, i) => phases.set(e.removedPhase, rOff[i]!));
+  E.forEach((e, i) => phases.set(e.removedPhase, rOff[i]));
   w.array(phases);
   const V = t.events;
   w.array(Uint8Array.from(V, (e) => e.kind));
@@ -110,10 +110,10 @@ export function decodeTgap(buf: Uint8Array, file: string): Tgap {
   for (let i = 0; i < ne; i++) {
     edges.push({
       start: eStart[i]!, end: eEnd[i]!, left: eLeft[i]!, right: eRight[i]!, stepLow: eLow[i]!, stepHigh: eHigh[i]!,
-      verts: verts.subarray(vOff[i]!, vOff[i + 1]!),
-      parents: parents.subarray(pOff[i]!, pOff[i + 1]!),
-      removed: removed.subarray(rOff[i]!, rOff[i + 1]!),
-      removedPhase: phases.subarray(rOff[i]!, rOff[i + 1]!),
+      verts: verts.subarray(vOff[i], vOff[i + 1]),
+      parents: parents.subarray(pOff[i], pOff[i + 1]),
+      removed: removed.subarray(rOff[i], rOff[i + 1]),
+      removedPhase: phases.subarray(rOff[i], rOff[i + 1]),
     });
   }
   const vKind = r.u8(), vStep = r.u32a(), vLoser = r.i32(), vInto = r.i32();
@@ -126,7 +126,7 @@ export function decodeTgap(buf: Uint8Array, file: string): Tgap {
     const ev: TgapEvent = { kind: vKind[i] as EventKind, step: vStep[i]!, loser: vLoser[i]!, into: vInto[i]! };
     if (tOff[i + 1]! > tOff[i]!) {
       ev.tris = tris.subarray(tOff[i]! * 3, tOff[i + 1]! * 3);
-      ev.triFaces = triFaces.subarray(tOff[i]!, tOff[i + 1]!);
+      ev.triFaces = triFaces.subarray(tOff[i], tOff[i + 1]);
     }
     events.push(ev);
   }

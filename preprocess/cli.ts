@@ -42,7 +42,7 @@ export async function main(argv: string[]): Promise<number> {
     return 0;
   } catch (err) {
     if (err instanceof UsageError || (err instanceof TypeError && (err as { code?: string }).code?.startsWith('ERR_PARSE_ARGS'))) {
-      process.stderr.write(`ssc ${name}: ${(err as Error).message}\n${cmd.usage}\n`);
+      process.stderr.write(`ssc ${name}: ${(err).message}\n${cmd.usage}\n`);
       return 2;
     }
     // A bad input or a file that breaks its format (a corrupt tGAP or cube): the user can act.

@@ -6,12 +6,12 @@ export class Evented<Events extends object> {
   on<K extends keyof Events>(type: K, fn: (ev: Events[K]) => void): this {
     let set = this.listeners.get(type);
     if (!set) this.listeners.set(type, (set = new Set()));
-    set.add(fn as (ev: never) => void);
+    set.add(fn);
     return this;
   }
 
   off<K extends keyof Events>(type: K, fn: (ev: Events[K]) => void): this {
-    this.listeners.get(type)?.delete(fn as (ev: never) => void);
+    this.listeners.get(type)?.delete(fn);
     return this;
   }
 

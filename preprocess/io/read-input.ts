@@ -133,7 +133,7 @@ function topologyFeatures(doc: Record<string, unknown>, file: string, layer: str
 }
 
 function readFeature(f: unknown, index: number, file: string, idProperty: string | undefined, repairs: InputRepairs): InputFeature {
-  const props = isObject(f) && isObject(f.properties) ? (f.properties as Record<string, unknown>) : {};
+  const props = isObject(f) && isObject(f.properties) ? (f.properties) : {};
   const ref: FeatureRef = { index, id: featureId(f, props, idProperty) };
   if (!isObject(f) || f.type !== 'Feature') throw new InputError('is not a GeoJSON Feature', { file, feature: ref });
   const g = f.geometry;

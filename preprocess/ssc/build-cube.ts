@@ -67,7 +67,7 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const leaves: ChunkLeaf[] = [];
   const chunkBytes: number[] = [];
   for (let c = 0; c + 1 < plan.start.length; c++) {
-    const tris = plan.order.subarray(plan.start[c]!, plan.start[c + 1]!);
+    const tris = plan.order.subarray(plan.start[c], plan.start[c + 1]);
     if (tris.length === 0) continue;
     const ch = assembleChunk(surfaces, tris, t.xs, t.ys, classOf);
     const { name, sha256 } = hashName('c', ch.bytes, 'bin');

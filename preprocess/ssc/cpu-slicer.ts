@@ -96,7 +96,7 @@ export function sliceChunk(
       ox + p[3 * a]!, oy + p[3 * a + 1]!, p[3 * a + 2]!,
       ox + p[3 * b]!, oy + p[3 * b + 1]!, p[3 * b + 2]!,
       ox + p[3 * d]!, oy + p[3 * d + 1]!, p[3 * d + 2]!,
-      c.upper[a]!, c.lower[a]!, c.upperClass[a]!,
+      c.upper[a]!, c.lower[a]!, c.upperClass[a],
     );
   }
 }

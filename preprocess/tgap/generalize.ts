@@ -216,7 +216,7 @@ export function generalize(topo: Topology, classOf: (face: number) => number, st
         stats.unmergeable++;
         continue; // nothing to merge with (a part of the domain on its own)
       }
-      const splitting = linear[st.faces[L]!.classIndex] && count >= 2;
+      const splitting = linear[st.faces[L]!.classIndex] === true && count >= 2;
       if (group > 1) {
         const hood = neighbourhood(L, best, splitting);
         if ([...hood].some((f) => locked.has(f))) {

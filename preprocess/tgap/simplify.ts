@@ -145,7 +145,7 @@ export function simplifyEdge(st: PlanarState, e: number, tol: number, tris: Step
     for (const j of [pi, ni]) {
       if (j === 0 || j === n - 1) continue;
       area[j] = triArea(j);
-      if (area[j]! < threshold) queue.push(j, area[j]!);
+      if (area[j] < threshold) queue.push(j, area[j]);
     }
   }
   if (removed.length === 0) return e;

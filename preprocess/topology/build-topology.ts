@@ -566,7 +566,7 @@ function checkOutside(
       const [x0, y0, x1, y1] = c.bbox;
       fail(
         `borders a gap inside the domain (an area no feature covers, ${(c.area2 / 2).toPrecision(4)} square units, bounding box ${[x0, y0, x1, y1].map((v) => Math.round(v * 1000) / 1000).join(', ')}); if it is outside the domain on purpose (an enclave), allow holes (--allow-holes, or "allowHoles": true in the style)`,
-        inner, xs[from[h]!]!, ys[from[h]!]!,
+        inner, xs[from[h]!], ys[from[h]!],
       );
     }
   }

@@ -36,7 +36,7 @@ test('listens on 127.0.0.1 by default and reports the bound address', async () =
     assert.ok(address.port > 0);
     assert.deepEqual(server.address, address);
     assert.equal(server.url, `http://127.0.0.1:${address.port}/`);
-    assert.equal((await request(server.url!, '/index.json')).status, 200);
+    assert.equal((await request(server.url, '/index.json')).status, 200);
   } finally {
     await server.close();
   }

@@ -52,8 +52,8 @@ export class IdPass {
     let triangles = 0;
     for (const c of chunks) {
       mat4.translate(this.matrix, this.projection, [c.originX - view.centerX, c.originY - view.centerY, 0]);
-      this.matrix[12] += jx;
-      this.matrix[13] += jy;
+      this.matrix[12]! += jx;
+      this.matrix[13]! += jy;
       this.matrix32.set(this.matrix);
       gl.uniformMatrix4fv(uMatrix, false, this.matrix32);
       c.draw(gl);

@@ -22,5 +22,5 @@ export async function gunzipWithPako(bytes: ArrayBuffer): Promise<ArrayBuffer> {
   const { ungzip } = await import('pako');
   const out = ungzip(new Uint8Array(bytes));
   // A view of exactly the output, so typed arrays over it start at offset 0.
-  return out.byteOffset === 0 && out.byteLength === out.buffer.byteLength ? (out.buffer as ArrayBuffer) : (out.slice().buffer as ArrayBuffer);
+  return out.byteOffset === 0 && out.byteLength === out.buffer.byteLength ? (out.buffer) : (out.slice().buffer);
 }

@@ -38,7 +38,7 @@ export class SettingsPanel implements Control {
     const toggle = controlButton('vario-map-settings-toggle', 'Settings', '\u2699', () => {
       panel.hidden = !panel.hidden;
       toggle.setAttribute('aria-expanded', String(!panel.hidden));
-      if (!panel.hidden) (panel.querySelector('input, select') as HTMLElement | null)?.focus();
+      if (!panel.hidden) panel.querySelector<HTMLElement>('input, select')?.focus();
     });
     toggle.setAttribute('aria-expanded', 'false');
     toggle.setAttribute('aria-controls', panel.id);
