@@ -2,13 +2,9 @@
 import assert from 'node:assert/strict';
 import { gzipSync } from 'node:zlib';
 import { describe, test } from 'node:test';
-import type { InnerNode } from '../../format/cube-index.js';
-import { decodeFacePage, faceRecord, FacePageError } from '../../format/face-page.js';
 import { gunzipIfNeeded, gunzipWithPako, isGzip } from '../src/shared/gunzip.js';
-import { chunkPriority, queryIndex } from '../../format/index-query.js';
 import { relativeZ, surfaceParams } from '../src/shared/surface-params.js';
-import { formatSurface } from '../../format/slicing-surface.js';
-import { parseSurface, surfaceZ, type SurfaceSpec } from '../../format/slicing-surface.js';
+import { surfaceZ, type SurfaceSpec } from '../../format/slicing-surface.js';
 import { keepUpwardTriangles } from '../src/shared/upward-triangles.js';
 import { fitBbox, groundToPixel, pixelToGround, viewBbox } from '../src/shared/view.js';
 
@@ -37,10 +33,6 @@ describe('surfaces around the view centre (the GPU formulas)', () => {
       assert.ok(worst < 1e-4, `largest difference ${worst}`);
     });
   }
-
-  test('a surface written as text reads back the same', () => {
-    for (const spec of specs.slice(1)) assert.deepEqual(parseSurface(formatSurface(spec)), spec);
-  });
 });
 
 describe('gzip bodies', () => {
@@ -66,83 +58,6 @@ describe('gzip bodies', () => {
     assert.deepEqual(new Uint8Array(await gunzipWithPako(gzBuf)), data);
     const plain = data.buffer.slice(0);
     assert.equal(await gunzipIfNeeded(plain), plain, 'a body that is not gzip is passed through');
-  });
-});
-
-describe('face table pages', () => {
-  /** A page written by hand after docs/FORMAT.md. */
-  function page(first: number, rows: [number, number, number, number, number][]): ArrayBuffer {
-    const n = rows.length;
-    const classBytes = (2 * n + 3) & ~3;
-    const buf = new ArrayBuffer(16 + classBytes + 16 * n);
-    const dv = new DataView(buf);
-    dv.setUint32(0, 0x46435353, true);
-    dv.setUint32(4, 1, true);
-    dv.setUint32(8, first, true);
-    dv.setUint32(12, n, true);
-    rows.forEach(([cls, feat, lo, hi, into], i) => {
-      dv.setUint16(16 + 2 * i, cls, true);
-      dv.setInt32(16 + classBytes + 4 * i, feat, true);
-      dv.setUint32(16 + classBytes + 4 * n + 4 * i, lo, true);
-      dv.setUint32(16 + classBytes + 8 * n + 4 * i, hi, true);
-      dv.setInt32(16 + classBytes + 12 * n + 4 * i, into, true);
-    });
-    return buf;
-  }
-
-  test('give each face its class, feature and steps', () => {
-    const p = decodeFacePage(page(100, [[3, 7, 0, 12, 101], [1, -1, 12, 475, -1], [65535, 9, 5, 6, 100]]));
-    assert.deepEqual(faceRecord(p, 101), { face: 101, classIndex: 1, feature: -1, stepLow: 12, stepHigh: 475, mergedInto: -1 });
-    assert.deepEqual(faceRecord(p, 102), { face: 102, classIndex: 65535, feature: 9, stepLow: 5, stepHigh: 6, mergedInto: 100 });
-    assert.equal(faceRecord(p, 99), undefined);
-    assert.equal(faceRecord(p, 103), undefined);
-  });
-
-  test('refuse a bad magic or length', () => {
-    const good = page(0, [[1, 2, 3, 4, 5]]);
-    const bad = good.slice(0);
-    new DataView(bad).setUint32(0, 0x12345678, true);
-    assert.throws(() => decodeFacePage(bad), FacePageError);
-    assert.throws(() => decodeFacePage(good.slice(0, good.byteLength - 4)), FacePageError);
-  });
-});
-
-describe('the index query', () => {
-  const leaf = (file: string, bbox: [number, number, number, number, number, number]) => ({ bbox, file, bytes: 1, triangles: 1, sha256: '0'.repeat(64) });
-  const sub: InnerNode = { bbox: [10, 0, 0, 20, 10, 50], children: [leaf('c-c', [10, 0, 0, 20, 10, 50])] };
-  const root: InnerNode = {
-    bbox: [0, 0, 0, 20, 10, 100],
-    children: [
-      leaf('c-a', [0, 0, 0, 10, 10, 30]),
-      leaf('c-b', [0, 0, 30, 10, 10, 100]),
-      { bbox: [10, 0, 0, 20, 10, 50], ref: 'i-x.json', chunks: 1 },
-    ],
-  };
-
-  test('keeps chunks with z0 <= zMax and z1 > zMin over the ground box', () => {
-    const files = (zMin: number, zMax: number, g: [number, number, number, number] = [0, 0, 9, 9]) =>
-      queryIndex(root, { ground: g, zMin, zMax }, () => undefined).leaves.map((l) => l.file).sort();
-    assert.deepEqual(files(10, 10), ['c-a']);
-    assert.deepEqual(files(30, 30), ['c-b'], 'a chunk relevant up to z1 = 30 is not needed at 30');
-    assert.deepEqual(files(29.9, 30), ['c-a', 'c-b'], 'z0 = 30 <= zMax = 30');
-    assert.deepEqual(files(100, 100), []);
-  });
-
-  test('reports sub-index files it reaches and reads them once loaded', () => {
-    const q = { ground: [12, 2, 13, 3] as [number, number, number, number], zMin: 5, zMax: 5 };
-    const first = queryIndex(root, q, () => undefined);
-    assert.deepEqual(first.missing, ['i-x.json']);
-    assert.deepEqual(first.leaves, []);
-    const second = queryIndex(root, q, (r) => (r === 'i-x.json' ? sub : undefined));
-    assert.deepEqual(second.leaves.map((l) => l.file), ['c-c']);
-  });
-
-  test('puts the chunk under the view centre first', () => {
-    const near = chunkPriority([0, 0, 0, 10, 10, 30], 5, 5, 10, 10, 10);
-    const far = chunkPriority([100, 0, 0, 110, 10, 30], 5, 5, 10, 10, 10);
-    const above = chunkPriority([0, 0, 40, 10, 10, 60], 5, 5, 10, 10, 10);
-    assert.equal(near, 0);
-    assert.ok(far > above && above > near);
   });
 });
 
