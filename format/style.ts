@@ -50,10 +50,14 @@ export const StyleSchema = v.object({
   background: v.optional(hex(), '#ffffff'),
   attribution: v.optional(str(), ''),
   defaultCompatibility: v.optional(unit(), 0.5),
-  classes: v.union(
-    [v.pipe(v.record(v.string(), ClassSchema), v.check((r) => Object.keys(r).length > 0, 'is empty')),
-      v.pipe(v.array(KeyedClassSchema), v.minLength(1, 'is empty'))],
-    'must be an object of class -> {color, weight, linear} or an array of {key, color, ...}',
+  // Chosen by the input's shape, so that an error names the field inside the class at fault.
+  classes: v.lazy((input) =>
+    Array.isArray(input)
+      ? v.pipe(v.array(KeyedClassSchema), v.minLength(1, 'is empty'))
+      : v.pipe(
+        v.record(v.string(), ClassSchema, 'must be an object of class -> {color, weight, linear} or an array of {key, color, ...}'),
+        v.check((r) => Object.keys(r).length > 0, 'is empty'),
+      ),
   ),
   /** compatibility[loser][neighbour] in [0, 1]: how well the neighbour takes the loser's area. */
   compatibility: v.optional(v.record(v.string(), v.record(v.string(), unit())), {}),

@@ -1,0 +1,97 @@
+// index.json and sub-index files: what the writer accepts the reader reads back, in the
+// documented shape; a bad index is refused with every problem named by its place.
+import assert from 'node:assert/strict';
+import { describe, test } from 'node:test';
+import { encodeIndex, encodeSubIndex, IndexFormatError, isExternal, isLeaf, parseIndex, parseSubIndex, type CubeIndexJson, type InnerNode } from './cube-index.js';
+
+const sha = (c: string): string => c.repeat(64);
+
+function index(): CubeIndexJson {
+  return {
+    format: 'ssc-index',
+    version: 1,
+    meta: {
+      name: 'Two', crs: 'EPSG:28992', extent: [0, 0, 2, 1], zMax: 2, steps: 2, phases: 8, baseScale: 1000, baseFaces: 2,
+      pixelSizeMm: 0.28, scaleTable: [[0, 2], [2, 1]],
+      style: { name: 'Two', background: '#F4F1E8', classes: [{ key: 'b', label: 'B', color: '#AABBCC', weight: 2, linear: true }, { key: 'a', color: '#112233', pattern: { kind: 'hatch', color: '#000000', maxScale: 2500 } }] },
+      attribution: '© us', source: 'two.geojson',
+      faces: { count: 4, pageSize: 4096, pages: [{ first: 0, file: 'f-0123456789abcdef.bin' }] },
+      attributes: { count: 2, pageSize: 4096, pages: [{ first: 0, file: 'a-0123456789abcdef.json' }] },
+    },
+    root: {
+      bbox: [0, 0, 0, 2, 1, 3],
+      children: [
+        { bbox: [0, 0, 0, 1, 1, 1], file: 'c-aaaaaaaaaaaaaaaa.bin', bytes: 172, triangles: 2, sha256: sha('a') },
+        { bbox: [1, 0, 0, 2, 1, 3], ref: 'i-bbbbbbbbbbbbbbbb.json', chunks: 1 },
+      ],
+    },
+  };
+}
+
+describe('index.json', () => {
+  test('reads back what was written, with the style ready to draw', () => {
+    const written = index();
+    const bytes = encodeIndex(written);
+    const text = new TextDecoder().decode(bytes);
+    assert.equal(text, JSON.stringify(written), 'written as given: key order kept, nothing added');
+    const back = parseIndex(JSON.parse(text));
+    assert.equal(back.meta.name, 'Two');
+    assert.deepEqual(back.meta.scaleTable, [[0, 2], [2, 1]]);
+    assert.deepEqual(back.meta.faces.pages, [{ first: 0, file: 'f-0123456789abcdef.bin' }]);
+    assert.deepEqual(back.meta.style, {
+      name: 'Two', background: '#f4f1e8',
+      classes: [
+        { key: 'b', label: 'B', color: '#aabbcc', weight: 2, linear: true },
+        { key: 'a', label: 'a', color: '#112233', weight: 1, linear: false, pattern: { kind: 'hatch', color: '#000000', maxScale: 2500 } },
+      ],
+    });
+    const [leaf, ext] = back.root.children;
+    assert.ok(leaf && isLeaf(leaf) && leaf.sha256 === sha('a') && leaf.triangles === 2);
+    assert.ok(ext && isExternal(ext) && ext.ref === 'i-bbbbbbbbbbbbbbbb.json');
+  });
+
+  test('fields left out take their documented defaults', () => {
+    const j = JSON.parse(JSON.stringify(index())) as { meta: Record<string, unknown> };
+    delete j.meta.pixelSizeMm;
+    delete j.meta.phases;
+    delete j.meta.attribution;
+    const back = parseIndex(j);
+    assert.equal(back.meta.pixelSizeMm, 0.28);
+    assert.equal(back.meta.phases, 8);
+    assert.equal(back.meta.attribution, '');
+  });
+
+  test('a bad index is refused with every problem named by its place', () => {
+    const j = JSON.parse(JSON.stringify(index())) as { meta: { baseScale: unknown; style: { classes: { color: string }[] } }; root: { children: Record<string, unknown>[] } };
+    j.meta.baseScale = 'big';
+    j.meta.style.classes[1]!.color = 'red';
+    j.root.children[0]!.sha256 = 'xyz';
+    j.root.children[0]!.file = '../../etc/passwd';
+    assert.throws(() => parseIndex(j), (e: unknown) => {
+      assert.ok(e instanceof IndexFormatError);
+      for (const where of ['meta.baseScale', 'meta.style.classes.1.color', 'root.children.0.sha256', 'root.children.0.file']) {
+        assert.ok(e.message.includes(where), `${where} named in: ${e.message}`);
+      }
+      assert.ok(e.message.startsWith('index.json: 4 problems'));
+      return true;
+    });
+    assert.throws(() => parseIndex({ ...index(), version: 2 }), /version: must be 1/);
+    assert.throws(() => parseIndex({ ...index(), format: 'geojson' }), /format: must be "ssc-index"/);
+  });
+
+  test('the writer refuses what the reader would refuse', () => {
+    const j = index();
+    j.meta.extent = [0, 0, 1] as unknown as [number, number, number, number];
+    assert.throws(() => encodeIndex(j), /^IndexFormatError: index.json: meta.extent/);
+  });
+});
+
+describe('sub-index file', () => {
+  test('reads back what was written', () => {
+    const node: InnerNode = { bbox: [1, 0, 0, 2, 1, 3], children: [{ bbox: [1, 0, 0, 2, 1, 3], file: 'c-cccccccccccccccc.bin', bytes: 9, triangles: 1, sha256: sha('c') }] };
+    const json = encodeSubIndex(node);
+    assert.deepEqual(JSON.parse(json), { format: 'ssc-subindex', version: 1, node });
+    assert.deepEqual(parseSubIndex(JSON.parse(json), 'i-b.json'), node);
+    assert.throws(() => parseSubIndex({ format: 'ssc-index', node }, 'i-b.json'), /^IndexFormatError: i-b.json: format: must be "ssc-subindex"/);
+  });
+});
