@@ -21,6 +21,20 @@ export default tseslint.config(
       '@typescript-eslint/no-unused-vars': ['error', { argsIgnorePattern: '^_', varsIgnorePattern: '^_' }],
     },
   },
+  // The imports go one way: format <- preprocess, format <- client. Neither side reaches into
+  // the other, and format/ depends on neither.
+  {
+    files: ['format/**/*.ts'],
+    rules: { 'no-restricted-imports': ['error', { patterns: [{ group: ['**/preprocess/**', '**/client/**', '**/server/**'], message: 'format/ stands alone: preprocess and client import it, not the other way.' }] }] },
+  },
+  {
+    files: ['preprocess/**/*.ts'],
+    rules: { 'no-restricted-imports': ['error', { patterns: [{ group: ['**/client/**'], message: 'Shared code belongs in format/.' }] }] },
+  },
+  {
+    files: ['client/**/*.ts'],
+    rules: { 'no-restricted-imports': ['error', { patterns: [{ group: ['**/preprocess/**', '**/server/**'], message: 'Shared code belongs in format/.' }] }] },
+  },
   {
     // node:test's test() and describe() return promises the runner itself waits for.
     files: ['**/*.test.ts', 'e2e/**/*.ts', 'server/test/**/*.ts'],
