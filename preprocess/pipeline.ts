@@ -9,6 +9,7 @@ import type { Tgap } from '../format/tgap-model.js';
 import { TGAP_VERSION } from '../format/tgap.js';
 import { buildTopology, type Topology } from './topology/build-topology.js';
 import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
+import { lapTimer } from './lap-timer.js';
 
 export interface PipelineOptions {
   style?: string;
@@ -32,13 +33,7 @@ export interface PipelineReport {
 
 export async function generalizeFile(input: string, opts: PipelineOptions = {}): Promise<{ tgap: Tgap; report: PipelineReport }> {
   const log = opts.log ?? (() => {});
-  const timings: Record<string, number> = {};
-  let t0 = performance.now();
-  const lap = (name: string): void => {
-    const t = performance.now();
-    timings[name] = Math.round(t - t0);
-    t0 = t;
-  };
+  const { timings, lap } = lapTimer();
   const styleGiven = opts.style ? await loadStyle(opts.style) : null;
   const raw = await readInput(input, {
     ...(opts.layer ? { layer: opts.layer } : {}),

@@ -16,6 +16,7 @@ import { encodeAttributePage, ATTRIBUTE_PAGE_SIZE } from '../../format/attribute
 import { encodeFacePage, FACE_PAGE_SIZE } from '../../format/face-page.js';
 import { packTree, splitTree } from './rtree-index.js';
 import { buildSurfaces, type SurfaceStats } from './surfaces.js';
+import { lapTimer } from '../lap-timer.js';
 
 export interface BuildOptions {
   chunkBytes?: number;
@@ -44,13 +45,7 @@ export function hashName(prefix: string, bytes: Uint8Array | string, ext: string
 
 export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}): Promise<BuildReport> {
   const log = opts.log ?? (() => {});
-  const timings: Record<string, number> = {};
-  let t0 = performance.now();
-  const lap = (name: string): void => {
-    const now = performance.now();
-    timings[name] = Math.round(now - t0);
-    t0 = now;
-  };
+  const { timings, lap } = lapTimer();
   const { surfaces, stats } = buildSurfaces(t);
   lap('surfaces');
   log(`surfaces: ${surfaces.count} triangles (floor ${stats.floor}, merges ${stats.merge}, splits ${stats.split}, simplification ${stats.simplify}, redrawn ${stats.reemit})`);
