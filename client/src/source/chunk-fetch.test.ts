@@ -1,0 +1,99 @@
+// One chunk from a (fake) server: real chunk files from format/chunk.ts, the index leaf holding
+// their SHA-256. What arrives is the decoded chunk with only its upward triangles; bytes that
+// differ from the index, or that are not a chunk, are refused as corrupt.
+import assert from 'node:assert/strict';
+import { gzipSync } from 'node:zlib';
+import { describe, test } from 'node:test';
+import { installFakeFetch, body, status } from '../../../testing/fake-fetch.js';
+import { leafFor, squareChunk } from '../../../testing/hand-made-cube.js';
+import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
+import { FetchFailure } from './fetch-retry.js';
+import type { ChunkPayload } from './worker-protocol.js';
+
+const URL_C = 'https://maps.test/cube/c-1.bin';
+const retry = { retries: 0, backoffMs: 0, maxBackoffMs: 0 };
+const leaf = leafFor('c-1.bin', [0, 0, 0, 1, 1, 10], squareChunk(1));
+
+/** The triangles the payload says to draw, as vertex index triples. */
+function drawn(p: ChunkPayload): number[] {
+  assert.equal(p.indexSize, 2);
+  return [...new Uint16Array(p.buffer, p.indexByteOffset, 3 * p.triangleCount)];
+}
+
+/** The ChunkCorrupt the fetch of c-1.bin rejects with. */
+async function corruption(): Promise<ChunkCorrupt> {
+  const err = await fetchChunk(leaf, URL_C, retry, new AbortController().signal).then(
+    () => assert.fail('the chunk was accepted'),
+    (e: unknown) => e,
+  );
+  assert.ok(err instanceof ChunkCorrupt, `ChunkCorrupt, not ${String(err)}`);
+  return err;
+}
+
+describe('fetching a chunk', () => {
+  test('a chunk whose bytes match the index arrives decoded and verified, with its upward triangle only', async (t) => {
+    installFakeFetch(t, () => body(squareChunk(1)));
+    const p = await fetchChunk(leaf, URL_C, retry, new AbortController().signal);
+    assert.equal(p.file, 'c-1.bin');
+    assert.equal(p.verified, true);
+    assert.equal(p.vertexCount, 4);
+    assert.equal(p.originX, 1001);
+    assert.equal(p.originY, 2000);
+    assert.deepEqual(p.bbox, leaf.bbox);
+    // [0, 2, 1] is clockwise seen from above: the inside of the cube never shows it.
+    assert.deepEqual(drawn(p), [0, 2, 3]);
+    // The vertex columns are where the renderer binds them: z of vertex 2 is 10.
+    assert.equal(new Float32Array(p.buffer, p.vertexByteOffset, 12)[8], 10);
+  });
+
+  test('a chunk the host sends still gzip-compressed arrives the same', async (t) => {
+    installFakeFetch(t, () => body(new Uint8Array(gzipSync(squareChunk(1)))));
+    const p = await fetchChunk(leaf, URL_C, retry, new AbortController().signal);
+    assert.equal(p.verified, true);
+    assert.deepEqual(drawn(p), [0, 2, 3]);
+  });
+
+  test('a valid chunk whose bytes are not the ones the index names is refused as corrupt', async (t) => {
+    // Another build's chunk under the same name: a good chunk, the wrong hash.
+    installFakeFetch(t, () => body(squareChunk(2)));
+    const err = await corruption();
+    assert.match(err.message, /^c-1\.bin: SHA-256 [0-9a-f]{64} does not match the index/);
+    assert.ok(err.message.includes(leaf.sha256));
+  });
+
+  test('one flipped byte is enough to refuse it', async (t) => {
+    const bytes = squareChunk(1);
+    bytes[70]! ^= 1; // inside the positions: still decodes
+    installFakeFetch(t, () => body(bytes));
+    assert.match((await corruption()).message, /does not match the index/);
+  });
+
+  test('a truncated chunk is corrupt, and the message says why', async (t) => {
+    const bytes = squareChunk(1).subarray(0, 100);
+    installFakeFetch(t, () => body(bytes));
+    assert.match((await corruption()).message, /^c-1\.bin: 100 bytes, 4 vertices and 2 triangles need 172/);
+  });
+
+  test('a body that starts like gzip but is not is corrupt', async (t) => {
+    const bytes = new Uint8Array([0x1f, 0x8b, 1, 2, 3, 4, 5, 6]);
+    installFakeFetch(t, () => body(bytes));
+    assert.match((await corruption()).message, /^c-1\.bin: bad gzip body/);
+  });
+
+  test('an HTTP error is a fetch failure, not a corrupt chunk', async (t) => {
+    installFakeFetch(t, () => status(404));
+    await assert.rejects(fetchChunk(leaf, URL_C, retry, new AbortController().signal), (e: unknown) => e instanceof FetchFailure && e.status === 404);
+  });
+
+  test('without crypto.subtle (a page not served securely) the chunk arrives, marked unverified', async (t) => {
+    const had = Object.getOwnPropertyDescriptor(globalThis, 'crypto');
+    assert.ok(had);
+    Object.defineProperty(globalThis, 'crypto', { value: undefined, configurable: true });
+    t.after(() => Object.defineProperty(globalThis, 'crypto', had));
+    // Even bytes the index would refuse: there is nothing to check them with.
+    installFakeFetch(t, () => body(squareChunk(2)));
+    const p = await fetchChunk(leaf, URL_C, retry, new AbortController().signal);
+    assert.equal(p.verified, false);
+    assert.equal(p.originX, 1002);
+  });
+});

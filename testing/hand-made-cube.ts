@@ -1,0 +1,102 @@
+// Small cubes made by hand for the map's source tests: real chunk files (format/chunk.ts),
+// index leaves carrying their true SHA-256, a valid index.json, and a fake-fetch answer that
+// serves the files under a base URL.
+import { createHash } from 'node:crypto';
+import { encodeChunk } from '../format/chunk.js';
+import { encodeIndex, encodeSubIndex, type Box3, type ChunkLeaf, type CubeIndexJson, type IndexNode, type InnerNode } from '../format/cube-index.js';
+import { body, status, type Answer } from './fake-fetch.js';
+
+export const sha256 = (bytes: Uint8Array): string => createHash('sha256').update(bytes).digest('hex');
+
+/**
+ * A unit square of two triangles: [0, 2, 1] faces down (clockwise seen from above), [0, 2, 3]
+ * faces up. `n` shifts the origin so that every chunk's bytes (and hash) differ.
+ */
+export function squareChunk(n = 0): Uint8Array {
+  return encodeChunk({
+    originX: 1000 + n,
+    originY: 2000,
+    box: new Float32Array([0, 0, 0, 1, 1, 10]),
+    positions: new Float32Array([0, 0, 0, 1, 0, 0, 1, 1, 10, 0, 1, 10]),
+    upper: new Uint32Array([5, 5, 5, 5]),
+    lower: new Uint32Array([0, 0, 0, 0]),
+    upperClass: new Uint16Array([1, 1, 1, 1]),
+    lowerClass: new Uint16Array([0xffff, 0xffff, 0xffff, 0xffff]),
+    indices: new Uint16Array([0, 2, 1, 0, 2, 3]),
+  });
+}
+
+/** The index leaf for a chunk file with these bytes. */
+export function leafFor(file: string, bbox: Box3, bytes: Uint8Array): ChunkLeaf {
+  return { bbox, file, bytes: bytes.byteLength, triangles: 2, sha256: sha256(bytes) };
+}
+
+/** The box around some nodes' boxes. */
+export function boxAround(nodes: IndexNode[]): Box3 {
+  const b: Box3 = [Infinity, Infinity, Infinity, -Infinity, -Infinity, -Infinity];
+  for (const n of nodes) {
+    for (let i = 0; i < 3; i++) {
+      b[i] = Math.min(b[i]!, n.bbox[i]!);
+      b[i + 3] = Math.max(b[i + 3]!, n.bbox[i + 3]!);
+    }
+  }
+  return b;
+}
+
+/** The bytes of an index.json over this tree, with the least metadata the schema allows. */
+export function indexFile(root: InnerNode): Uint8Array {
+  const index: CubeIndexJson = {
+    format: 'ssc-index',
+    version: 1,
+    meta: {
+      name: 'hand-made',
+      extent: [root.bbox[0], root.bbox[1], root.bbox[3], root.bbox[4]],
+      zMax: root.bbox[5],
+      steps: root.bbox[5],
+      baseScale: 1000,
+      baseFaces: 10,
+      scaleTable: [[0, 10], [root.bbox[5], 1]],
+      style: { classes: { land: { color: '#88aa66' } } },
+      faces: { count: 0, pageSize: 1, pages: [] },
+      attributes: { count: 0, pageSize: 1, pages: [] },
+    },
+    root,
+  };
+  return encodeIndex(index);
+}
+
+export const subIndexFile = (node: InnerNode): Uint8Array => new TextEncoder().encode(encodeSubIndex(node));
+
+/** One chunk of the cube: its file name and box; its bytes are squareChunk(i) for the i-th. */
+export interface ChunkSpec {
+  file: string;
+  bbox: Box3;
+}
+
+export interface HandMadeCube {
+  leaves: Map<string, ChunkLeaf>;
+  /** File name to bytes: index.json and every chunk. */
+  files: Map<string, Uint8Array>;
+}
+
+/** A cube whose index.json lists these chunks directly under its root. */
+export function handMadeCube(chunks: ChunkSpec[]): HandMadeCube {
+  const files = new Map<string, Uint8Array>();
+  const leaves = new Map<string, ChunkLeaf>();
+  chunks.forEach((c, i) => {
+    const bytes = squareChunk(i);
+    files.set(c.file, bytes);
+    leaves.set(c.file, leafFor(c.file, c.bbox, bytes));
+  });
+  const children = [...leaves.values()];
+  files.set('index.json', indexFile({ bbox: boxAround(children), children }));
+  return { leaves, files };
+}
+
+/** Answers requests under `base` with the files (404 for any other). */
+export function serveFiles(base: string, files: Map<string, Uint8Array>): (url: string) => Answer {
+  return (url) => {
+    const bytes = url.startsWith(base) ? files.get(url.slice(base.length)) : undefined;
+    return bytes ? body(bytes) : status(404);
+  };
+}
