@@ -93,10 +93,10 @@ export function handMadeCube(chunks: ChunkSpec[]): HandMadeCube {
   return { leaves, files };
 }
 
-/** Answers requests under `base` with the files (404 for any other). */
+/** Answers requests under `base` with the files, whatever the query string (404 for any other). */
 export function serveFiles(base: string, files: Map<string, Uint8Array>): (url: string) => Answer {
   return (url) => {
-    const bytes = url.startsWith(base) ? files.get(url.slice(base.length)) : undefined;
+    const bytes = url.startsWith(base) ? files.get(url.slice(base.length).split('?')[0]!) : undefined;
     return bytes ? body(bytes) : status(404);
   };
 }
