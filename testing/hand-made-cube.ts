@@ -93,6 +93,20 @@ export function handMadeCube(chunks: ChunkSpec[]): HandMadeCube {
   return { leaves, files };
 }
 
+/**
+ * A cube with a sub-index: its root holds c-a.bin (x 0..10) and refers to i-b.json (x 10..20),
+ * which holds c-b.bin.
+ */
+export function twoLevelCube(): HandMadeCube {
+  const aBytes = squareChunk(0), bBytes = squareChunk(1);
+  const a = leafFor('c-a.bin', [0, 0, 0, 10, 10, 100], aBytes);
+  const b = leafFor('c-b.bin', [10, 0, 0, 20, 10, 100], bBytes);
+  const sub: InnerNode = { bbox: b.bbox, children: [b] };
+  const root: InnerNode = { bbox: boxAround([a, b]), children: [a, { bbox: sub.bbox, ref: 'i-b.json', chunks: 1 }] };
+  const files = new Map([['index.json', indexFile(root)], ['i-b.json', subIndexFile(sub)], [a.file, aBytes], [b.file, bBytes]]);
+  return { leaves: new Map([[a.file, a], [b.file, b]]), files };
+}
+
 /** Answers requests under `base` with the files, whatever the query string (404 for any other). */
 export function serveFiles(base: string, files: Map<string, Uint8Array>): (url: string) => Answer {
   return (url) => {

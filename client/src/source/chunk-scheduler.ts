@@ -19,7 +19,9 @@ interface Entry {
   priority: number;
 }
 
-export type Post = (msg: FromWorker, transfer?: Transferable[]) => void;
+// A chunk's buffer is moved to the map, not copied. ArrayBuffer rather than the DOM's
+// Transferable: the unit tests compile this module for Node.
+export type Post = (msg: FromWorker, transfer?: ArrayBuffer[]) => void;
 
 const MARGIN_TIER = 1e6;
 /** Chunks of the i-th view ahead rank from AHEAD_TIER + i * MARGIN_TIER. */

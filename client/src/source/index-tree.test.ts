@@ -1,29 +1,18 @@
-// The worker's index tree over a fake server: files are looked for beside index.json, a
-// sub-index file is fetched once however many queries wait for it, and one that failed to load
-// is fetched again by a later query.
+// The worker's index tree over a fake server (twoLevelCube: c-a.bin in index.json, c-b.bin in
+// the sub-index i-b.json): files are looked for beside index.json, a sub-index file is fetched
+// once however many queries wait for it, and one that failed to load is fetched again later.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import type { InnerNode } from '../../../format/cube-index.js';
 import { eventually } from '../../../testing/event-loop.js';
 import { body, installFakeFetch, status } from '../../../testing/fake-fetch.js';
-import { indexFile, leafFor, serveFiles, squareChunk, subIndexFile } from '../../../testing/hand-made-cube.js';
+import { serveFiles, twoLevelCube } from '../../../testing/hand-made-cube.js';
 import { FetchFailure } from './fetch-retry.js';
 import { IndexTree } from './index-tree.js';
 
 const BASE = 'https://maps.test/cubes/otterlo/';
 const retry = { retries: 0, backoffMs: 0, maxBackoffMs: 0 };
 
-/** A root with one chunk (c-a.bin, x 0..10) and a sub-index (i-b.json, x 10..20, one chunk c-b.bin). */
-function files(): Map<string, Uint8Array> {
-  const a = leafFor('c-a.bin', [0, 0, 0, 10, 10, 100], squareChunk(0));
-  const b = leafFor('c-b.bin', [10, 0, 0, 20, 10, 100], squareChunk(1));
-  const sub: InnerNode = { bbox: b.bbox, children: [b] };
-  const root: InnerNode = { bbox: [0, 0, 0, 20, 10, 100], children: [a, { bbox: sub.bbox, ref: 'i-b.json', chunks: 1 }] };
-  return new Map([
-    ['index.json', indexFile(root)],
-    ['i-b.json', subIndexFile(sub)],
-  ]);
-}
+const files = (): Map<string, Uint8Array> => twoLevelCube().files;
 
 const everything = { ground: [0, 0, 20, 10] as [number, number, number, number], zMin: 0, zMax: 100 };
 const chunkFiles = (tree: IndexTree): string[] => tree.query(everything).leaves.map((l) => l.file).sort();

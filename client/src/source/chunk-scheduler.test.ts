@@ -1,0 +1,225 @@
+// The chunk scheduler over a fake server and hand-made cubes of real chunks: how many requests
+// are in flight, which chunk goes first (nearest the view centre, on-screen before margin, the
+// views ahead last and in their order), what happens to chunks the view no longer needs
+// (queued ones never fetched, a request in flight aborted), and the status and error messages
+// the map gets for each chunk (received, on the GPU, evicted and fetched again, failed).
+import assert from 'node:assert/strict';
+import { describe, test, type TestContext } from 'node:test';
+import type { Box3 } from '../../../format/cube-index.js';
+import { eventually, settle } from '../../../testing/event-loop.js';
+import { installFakeFetch, status, type Answer, type FakeFetch } from '../../../testing/fake-fetch.js';
+import { handMadeCube, serveFiles, squareChunk, twoLevelCube, type ChunkSpec } from '../../../testing/hand-made-cube.js';
+import { ChunkScheduler } from './chunk-scheduler.js';
+import { IndexTree } from './index-tree.js';
+import type { AheadView, ChunkStatus, FromWorker, NeededChunks, SourceErrorInfo, SourceOptions, ViewRequest } from './worker-protocol.js';
+
+const BASE = 'https://maps.test/cube/';
+
+/** `n` chunks in a row along x, 10 wide each: c-0.bin over x 0..10, c-1.bin over 10..20, ... */
+const row = (n: number): ChunkSpec[] => Array.from({ length: n }, (_, i) => ({ file: `c-${i}.bin`, bbox: [10 * i, 0, 0, 10 * i + 10, 10, 100] as Box3 }));
+
+const ground = (x0: number, x1: number): [number, number, number, number] => [x0, 0, x1, 10];
+
+/** A view over x0..x1 (y 0..10), the margin as wide unless given, base z 10 in a z range 0..100. */
+function view(seq: number, x0: number, x1: number, o: { centerX: number; margin?: [number, number]; ahead?: AheadView[] }): ViewRequest {
+  const v: ViewRequest = { seq, visible: ground(x0, x1), margin: ground(...(o.margin ?? [x0, x1])), zMin: 0, zMax: 100, centerX: o.centerX, centerY: 5, z: 10 };
+  if (o.ahead) v.ahead = o.ahead;
+  return v;
+}
+
+const ahead = (x0: number, x1: number): AheadView => ({ box: ground(x0, x1), zMin: 0, zMax: 100, centerX: (x0 + x1) / 2, centerY: 5, z: 10 });
+
+interface Harness {
+  scheduler: ChunkScheduler;
+  fetch: FakeFetch;
+  /** Chunk and sub-index files requested, in order (index.json left out). */
+  fetched(): string[];
+  /** How many times a file was requested. */
+  times(file: string): number;
+  /** The statuses posted for a chunk, in order. */
+  statuses(file: string): ChunkStatus[];
+  /** Chunks posted to the map, in order. */
+  received(): string[];
+  errors(): SourceErrorInfo[];
+  needed(): NeededChunks[];
+  /** Answers the oldest open request with the file it asks for. */
+  answerOldest(): void;
+}
+
+/**
+ * A scheduler over a cube served from `files`. Chunk requests get `answer` (the file itself
+ * when not given); index.json is always served at once.
+ */
+async function harness(t: TestContext, files: Map<string, Uint8Array>, options: Partial<SourceOptions>, answer?: (url: string, n: number) => Answer): Promise<Harness> {
+  const serve = serveFiles(BASE, files);
+  const fetch = installFakeFetch(t, (url, n) => (url.endsWith('index.json') ? serve(url) : (answer ?? serve)(url, n)));
+  const opts: SourceOptions = { concurrency: 4, retries: 0, backoffMs: 0, maxBackoffMs: 0, ...options };
+  const tree = await IndexTree.load(`${BASE}index.json`, opts);
+  const posted: FromWorker[] = [];
+  const scheduler = new ChunkScheduler(tree, opts, (msg) => posted.push(msg));
+  const name = (url: string): string => url.slice(BASE.length);
+  const fetched = (): string[] => fetch.urls().map(name).filter((f) => f !== 'index.json');
+  return {
+    scheduler,
+    fetch,
+    fetched,
+    times: (file) => fetched().filter((f) => f === file).length,
+    statuses: (file) => posted.flatMap((m) => (m.type === 'status' && m.file === file ? [m.status] : [])),
+    received: () => posted.flatMap((m) => (m.type === 'chunk' ? [m.chunk.file] : [])),
+    errors: () => posted.flatMap((m) => (m.type === 'error' ? [m.error] : [])),
+    needed: () => posted.flatMap((m) => (m.type === 'needed' ? [m] : [])),
+    answerOldest: () => {
+      const r = fetch.open()[0];
+      assert.ok(r, 'a request is open');
+      const a = serve(r.url);
+      assert.ok(a !== 'hold');
+      r.answer(a);
+    },
+  };
+}
+
+const sorted = (xs: string[]): string[] => [...xs].sort();
+
+describe('the chunk scheduler', () => {
+  test('ten chunks, four at a time, nearest the centre first; when the view moves, chunks it left are never fetched and the one in flight is aborted', async (t) => {
+    const h = await harness(t, handMadeCube(row(10)).files, { concurrency: 4 }, () => 'hold');
+    // Centre x = 44: c-4 under it, then c-3 (4 away), c-5 (6), c-2 (14), c-6 (16), c-1, c-7, c-0, c-8, c-9.
+    const first = view(1, 0, 100, { centerX: 44 });
+    h.scheduler.setView(first);
+    h.scheduler.setView(first); // asked again: no chunk is requested twice
+    await eventually(() => h.fetched().length === 4, 'four requests');
+    await settle();
+    assert.deepEqual(h.fetched(), ['c-4.bin', 'c-3.bin', 'c-5.bin', 'c-2.bin']);
+    assert.deepEqual(h.statuses('c-6.bin'), [], 'queued: nothing posted yet');
+
+    // The view moves right: c-0, c-1 and c-9 (queued) and c-2 (in flight) leave it.
+    const c2 = h.fetch.requests.find((r) => r.url === `${BASE}c-2.bin`);
+    h.scheduler.setView(view(2, 30.5, 89.5, { centerX: 60 }));
+    assert.equal(c2?.signal?.aborted, true, 'the request for c-2 is aborted');
+    assert.deepEqual(h.statuses('c-2.bin'), ['requested', 'not-requested']);
+    assert.deepEqual(sorted(h.needed().at(-1)!.visible), ['c-3.bin', 'c-4.bin', 'c-5.bin', 'c-6.bin', 'c-7.bin', 'c-8.bin']);
+
+    while (h.received().length < 6) {
+      await eventually(() => h.fetch.open().length > 0, 'a request to answer');
+      h.answerOldest();
+      await eventually(() => h.fetch.open().length > 0 || h.received().length === 6, 'the chunk handled');
+    }
+    await settle();
+    // The aborted slot went to c-6, under the new centre, then c-7 and c-8.
+    assert.deepEqual(h.fetched(), ['c-4.bin', 'c-3.bin', 'c-5.bin', 'c-2.bin', 'c-6.bin', 'c-7.bin', 'c-8.bin']);
+    assert.deepEqual(sorted(h.received()), ['c-3.bin', 'c-4.bin', 'c-5.bin', 'c-6.bin', 'c-7.bin', 'c-8.bin']);
+    for (const gone of ['c-0.bin', 'c-1.bin', 'c-9.bin']) assert.deepEqual(h.statuses(gone), [], `${gone} never requested`);
+    assert.equal(h.fetch.maxOpen, 4);
+    assert.deepEqual(h.errors(), []);
+  });
+
+  test('what is on screen comes before the margin, even when farther; the views ahead come last, in their order', async (t) => {
+    const chunks: ChunkSpec[] = [
+      { file: 'c-margin.bin', bbox: [10.5, 0, 0, 20, 10, 100] }, // just off screen, at the view's z
+      { file: 'c-high.bin', bbox: [0, 0, 60, 10, 10, 100] }, // on screen, 50 steps above the view's z
+      { file: 'c-low.bin', bbox: [0, 0, 0, 10, 10, 60] }, // on screen, at the view's z
+      { file: 'c-ahead-near.bin', bbox: [30, 0, 0, 40, 10, 100] },
+      { file: 'c-ahead-far.bin', bbox: [100, 0, 0, 110, 10, 100] },
+    ];
+    const h = await harness(t, handMadeCube(chunks).files, { concurrency: 1 });
+    // A flight to x 100..110 and then back to 0..40 (which also covers the view's own chunks).
+    h.scheduler.setView(view(1, 0, 10, { centerX: 9.9, margin: [-10, 20], ahead: [ahead(100, 110), ahead(0, 40)] }));
+    await eventually(() => h.received().length === 5, 'all five chunks');
+    assert.deepEqual(h.fetched(), ['c-low.bin', 'c-high.bin', 'c-margin.bin', 'c-ahead-far.bin', 'c-ahead-near.bin']);
+    const n = h.needed()[0]!;
+    assert.deepEqual(sorted(n.visible), ['c-high.bin', 'c-low.bin']);
+    assert.deepEqual(n.margin, ['c-margin.bin']);
+    assert.deepEqual(n.ahead, ['c-ahead-far.bin', 'c-ahead-near.bin']);
+    assert.equal(n.indexComplete, true);
+  });
+
+  test('a chunk goes requested, received, on the GPU; evicted while in view it is fetched again, evicted out of view it waits until the view comes back', async (t) => {
+    const h = await harness(t, handMadeCube(row(2)).files, { concurrency: 2 });
+    const both = view(1, 0, 20, { centerX: 5 });
+    h.scheduler.setView(both);
+    await eventually(() => h.received().length === 2, 'both chunks');
+    assert.deepEqual(h.statuses('c-0.bin'), ['requested', 'received']);
+    h.scheduler.uploaded('c-0.bin');
+    h.scheduler.uploaded('c-1.bin');
+    assert.deepEqual(h.statuses('c-0.bin'), ['requested', 'received', 'gpu']);
+
+    h.scheduler.evicted(['c-0.bin']);
+    await eventually(() => h.received().length === 3, 'c-0 again');
+    assert.deepEqual(h.statuses('c-0.bin'), ['requested', 'received', 'gpu', 'evicted', 'requested', 'received']);
+    assert.equal(h.times('c-0.bin'), 2);
+
+    h.scheduler.setView(view(2, 0, 9, { centerX: 5 }));
+    h.scheduler.evicted(['c-1.bin']);
+    await settle();
+    assert.deepEqual(h.statuses('c-1.bin'), ['requested', 'received', 'gpu', 'evicted']);
+    assert.equal(h.times('c-1.bin'), 1, 'not needed: not fetched again');
+    h.scheduler.setView(view(3, 0, 20, { centerX: 5 }));
+    await eventually(() => h.received().length === 4, 'c-1 again');
+    assert.equal(h.times('c-1.bin'), 2);
+    assert.deepEqual(h.received(), ['c-0.bin', 'c-1.bin', 'c-0.bin', 'c-1.bin']);
+  });
+
+  test('failures: a 404 and a corrupt chunk fail at once, a 503 after its retries; each is reported, and tried again only when the view comes back', async (t) => {
+    const { files } = handMadeCube(row(3));
+    files.set('c-1.bin', squareChunk(7)); // a chunk, but not the one the index names
+    const serve = serveFiles(BASE, files);
+    const h = await harness(t, files, { concurrency: 3, retries: 2 }, (url, n) => {
+      if (url.endsWith('c-0.bin') && n === 1) return status(404);
+      if (url.endsWith('c-2.bin')) return status(503);
+      return serve(url);
+    });
+    const all = view(1, 0, 30, { centerX: 15 });
+    h.scheduler.setView(all);
+    await eventually(() => h.errors().length === 3, 'three errors');
+    const byFile = new Map(h.errors().map((e) => [e.file, e]));
+    assert.deepEqual(byFile.get('c-0.bin'), { kind: 'http', status: 404, file: 'c-0.bin', url: `${BASE}c-0.bin`, message: `HTTP 404 for ${BASE}c-0.bin (after 1 attempt)` });
+    assert.equal(byFile.get('c-1.bin')?.kind, 'corrupt');
+    assert.match(byFile.get('c-1.bin')?.message ?? '', /^c-1\.bin: SHA-256 .* does not match the index/);
+    assert.equal(byFile.get('c-2.bin')?.status, 503);
+    assert.match(byFile.get('c-2.bin')?.message ?? '', /\(after 3 attempts\)$/);
+    for (const f of ['c-0.bin', 'c-1.bin', 'c-2.bin']) assert.deepEqual(h.statuses(f), ['requested', 'failed'], f);
+    assert.deepEqual([h.times('c-0.bin'), h.times('c-1.bin'), h.times('c-2.bin')], [1, 1, 3]);
+
+    h.scheduler.setView({ ...all, seq: 2 });
+    await settle();
+    assert.equal(h.fetched().length, 5, 'the same view again: nothing is tried again');
+
+    h.scheduler.setView(view(3, 100, 110, { centerX: 105 }));
+    h.scheduler.setView({ ...all, seq: 4 });
+    await eventually(() => h.received().length === 1, 'c-0 on its second try');
+    await eventually(() => h.errors().length === 5, 'c-1 and c-2 failing again');
+    assert.deepEqual(h.received(), ['c-0.bin']);
+    assert.deepEqual(h.statuses('c-0.bin'), ['requested', 'failed', 'not-requested', 'requested', 'received']);
+  });
+
+  test('a chunk left and taken back before its aborted request ends is fetched anew and arrives once', async (t) => {
+    const h = await harness(t, handMadeCube(row(2)).files, { concurrency: 3 }, () => 'hold');
+    const left = view(1, 0, 9, { centerX: 5 });
+    h.scheduler.setView(left);
+    await eventually(() => h.fetched().length === 1, 'c-0 requested');
+    h.scheduler.setView(view(2, 11, 20, { centerX: 15 }));
+    h.scheduler.setView({ ...left, seq: 3 });
+    await eventually(() => h.times('c-0.bin') === 2, 'c-0 requested again');
+    await settle();
+    assert.deepEqual(h.fetch.open().map((r) => r.url), [`${BASE}c-0.bin`], 'the first request for c-0 and the one for c-1 were aborted');
+    h.answerOldest();
+    await eventually(() => h.received().length === 1, 'c-0 arrives');
+    await settle();
+    assert.deepEqual(h.received(), ['c-0.bin']);
+    assert.deepEqual(h.statuses('c-0.bin'), ['requested', 'not-requested', 'requested', 'received']);
+    assert.equal(h.times('c-0.bin'), 2);
+  });
+
+  test('chunks under a sub-index not loaded yet are fetched once it arrives', async (t) => {
+    const { files } = twoLevelCube();
+    const serve = serveFiles(BASE, files);
+    const h = await harness(t, files, {}, (url) => (url.endsWith('i-b.json') ? 'hold' : serve(url)));
+    h.scheduler.setView(view(1, 0, 20, { centerX: 10 }));
+    await eventually(() => h.received().length === 1, 'c-a');
+    assert.deepEqual(h.needed().map((n) => [n.seq, n.indexComplete, n.visible]), [[1, false, ['c-a.bin']]]);
+    h.answerOldest(); // i-b.json
+    await eventually(() => h.received().length === 2, 'c-b');
+    assert.deepEqual(h.needed().map((n) => [n.seq, n.indexComplete, sorted(n.visible)]), [[1, false, ['c-a.bin']], [1, true, ['c-a.bin', 'c-b.bin']]]);
+    assert.deepEqual(sorted(h.fetched()), ['c-a.bin', 'c-b.bin', 'i-b.json'], 'each once');
+  });
+});
