@@ -8,11 +8,11 @@ import path from 'node:path';
 import { zAtScale } from '../format/scale.js';
 import { inspectCube } from '../preprocess/ssc/inspect-cube.js';
 import { CubeReader } from '../preprocess/ssc/read-cube.js';
-import { datasets, median, root } from './datasets.js';
+import { benchArgs, datasets, median, root } from './datasets.js';
 
-const args = process.argv.slice(2);
-const runs = Number(args.find((a) => a.startsWith('runs='))?.slice(5) ?? 3);
-const filter = args.find((a) => !a.startsWith('runs='));
+const { runs, filter } = benchArgs(3);
+// Before any work: a missing dataset or a filter matching none is an error at once.
+const sets = datasets(filter);
 const dir = mkdtempSync(path.join(tmpdir(), 'ssc-bench-'));
 const kb = (b: number): string => `${(b / 1024).toFixed(1)} KiB`;
 
@@ -48,7 +48,7 @@ async function queryTime(cubeDir: string): Promise<{ chunks: number; medianUs: n
 }
 
 console.log(`bench:build, ${runs} runs each (median), node ${process.version}`);
-for (const d of datasets(filter)) {
+for (const d of sets) {
   const out = path.join(dir, d.name);
   const rs = [];
   for (let i = 0; i < runs; i++) rs.push(buildRun(d.file, d.style, out));
@@ -64,7 +64,7 @@ for (const d of datasets(filter)) {
   rmSync(out, { recursive: true, force: true });
 }
 // The index for a large cube: the largest dataset cut into about 10,000 chunks.
-const big = datasets(filter).pop();
+const big = sets[sets.length - 1];
 if (big) {
   const out = path.join(dir, 'many');
   const probe = buildRun(big.file, big.style, out);

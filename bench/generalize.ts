@@ -4,15 +4,15 @@ import { spawnSync } from 'node:child_process';
 import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { datasets, median, root } from './datasets.js';
+import { benchArgs, datasets, median, root } from './datasets.js';
 
-const args = process.argv.slice(2);
-const runs = Number(args.find((a) => a.startsWith('runs='))?.slice(5) ?? 3);
-const filter = args.find((a) => !a.startsWith('runs='));
+const { runs, filter } = benchArgs(3);
+// Before any work: a missing dataset or a filter matching none is an error at once.
+const sets = datasets(filter);
 const dir = mkdtempSync(path.join(tmpdir(), 'ssc-bench-'));
 console.log(`bench:generalize, ${runs} runs each (median), node ${process.version}`);
 console.log('dataset             faces    steps    wall s   topology s  tGAP s   peak MB  faces/s');
-for (const d of datasets(filter)) {
+for (const d of sets) {
   const rs: { ms: number; maxRssMB: number; faces: number; steps: number; timings: Record<string, number> }[] = [];
   for (let i = 0; i < runs; i++) {
     const r = spawnSync(process.execPath, [path.join(root, 'dist/bench/child-run.js'), 'generalize', d.file, d.style, path.join(dir, 'x.tgap')], { encoding: 'utf8' });

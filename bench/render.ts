@@ -44,8 +44,7 @@ function leaves(n: IndexNode, out: ChunkLeaf[]): ChunkLeaf[] {
 
 async function main(): Promise<void> {
   const filter = process.argv[2];
-  const sets = datasets(filter).filter((d) => d.name === 'bgt_otterlo_1800m' || d.name === 'nlcd_zion');
-  if (sets.length === 0) throw new Error('no dataset (bgt_otterlo_1800m, nlcd_zion) found in ../shared/data');
+  const sets = datasets(filter, ['bgt_otterlo_1800m', 'nlcd_zion']);
   const browser = await launchChromium();
   const rows: string[][] = [['dataset', 'view', 'scale', 'first map ms', 'frame ms median', 'frame ms p95', 'triangles/frame', 'at 5 places', 'query ms/frame', 'chunks', 'MB', 'long tasks load', 'long tasks frames']];
   const ratios: string[] = [];

@@ -1,0 +1,62 @@
+// npm run bench:chunks [-- <dataset filter>] [runs=N]: decodeChunk (format/chunk.ts, what the
+// map's worker runs on every chunk it receives) over every chunk of a freshly built cube of
+// bgt_otterlo_1800m and nlcd_zion, from bytes already in memory. Each run decodes all chunks
+// over and over for a quarter second; the table gives the median over the runs (and the
+// slowest and fastest run's MB/s).
+import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { decodeChunk } from '../format/chunk.js';
+import { buildBenchCube } from './bench-cube.js';
+import { benchArgs, datasets } from './datasets.js';
+import { median } from './stats.js';
+import { printTable } from './table.js';
+
+const RUN_MS = 250;
+const { runs, filter } = benchArgs(7);
+const sets = datasets(filter, ['bgt_otterlo_1800m', 'nlcd_zion']);
+const dir = mkdtempSync(path.join(tmpdir(), 'ssc-bench-'));
+const rows: string[][] = [['dataset', 'chunks', 'MB', 'triangles', 'passes/run', 'ms/pass', 'MB/s', 'chunks/s', 'MB/s range']];
+try {
+  for (const d of sets) {
+    const cube = buildBenchCube(d, path.join(dir, d.name));
+    // Each chunk in its own ArrayBuffer, as a fetch hands it over.
+    const bodies = cube.leaves.map((l) => {
+      const b = readFileSync(path.join(cube.dir, l.file));
+      return b.buffer.slice(b.byteOffset, b.byteOffset + b.byteLength);
+    });
+    const bytes = bodies.reduce((s, b) => s + b.byteLength, 0);
+    // A run decodes every chunk, pass after pass, for at least RUN_MS (a pass alone can take
+    // 2 ms, too short to time well); its rate is passes x bytes over its time.
+    let triangles = 0;
+    const msPerPass: number[] = [];
+    const passes: number[] = [];
+    for (let run = -1; run < runs; run++) {
+      // Run -1 warms the JIT up and is not counted.
+      const t0 = performance.now();
+      let n = 0, t = 0;
+      do {
+        t = 0;
+        for (const b of bodies) t += decodeChunk(b).triangleCount;
+        n++;
+      } while (performance.now() - t0 < RUN_MS);
+      if (run >= 0) {
+        msPerPass.push((performance.now() - t0) / n);
+        passes.push(n);
+      }
+      triangles = t;
+    }
+    const mbs = msPerPass.map((m) => bytes / 1e6 / (m / 1000));
+    const m = median(msPerPass);
+    rows.push([
+      d.name, String(bodies.length), (bytes / 1e6).toFixed(1), String(triangles), String(median(passes)), m.toFixed(2),
+      median(mbs).toFixed(0), Math.round(bodies.length / (m / 1000)).toString(),
+      `${Math.min(...mbs).toFixed(0)}..${Math.max(...mbs).toFixed(0)}`,
+    ]);
+    rmSync(cube.dir, { recursive: true, force: true });
+  }
+} finally {
+  rmSync(dir, { recursive: true, force: true });
+}
+console.log(`bench:chunks, decodeChunk over every chunk of the cube, ${runs} runs (median), node ${process.version}`);
+printTable(rows);
