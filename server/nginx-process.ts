@@ -9,7 +9,9 @@ import { fileURLToPath } from 'node:url';
 
 export const NGINX_BIN = '/usr/sbin/nginx';
 // Compiled to dist/server/, the template stays in server/.
-export const TEMPLATE_PATH = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../../server/nginx.conf.template');
+// Beside this file when run from source; from dist/server, the source copy two levels up.
+const here = path.dirname(fileURLToPath(import.meta.url));
+export const TEMPLATE_PATH = [path.join(here, 'nginx.conf.template'), path.resolve(here, '../../server/nginx.conf.template')].find((p) => existsSync(p)) ?? path.join(here, 'nginx.conf.template');
 
 export interface TemplateValues {
   listen: string;

@@ -7,6 +7,7 @@ export type TargetPath =
   | { ok: false; status: 400 | 404 };
 
 // Separators and control characters (NUL above all) have no place in a file name we serve.
+// eslint-disable-next-line no-control-regex -- matching control characters is the point
 const FORBIDDEN_IN_SEGMENT = /[/\\\x00-\x1f\x7f]/;
 
 export function parseTargetPath(requestTarget: string): TargetPath {

@@ -7,6 +7,11 @@ import { repoRoot } from './paths.js';
 const cli = path.join(repoRoot, 'testing/ssc-from-source.ts');
 const nodeArgs = ['--import', 'tsx', cli];
 
+/** Node's arguments that run `ssc ...args` from source, for a test that spawns it itself. */
+export function sscNodeArgs(args: string[]): string[] {
+  return [...nodeArgs, ...args];
+}
+
 export interface SscResult {
   code: number;
   stdout: string;

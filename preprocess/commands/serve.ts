@@ -41,7 +41,7 @@ export async function run(argv: string[]): Promise<void> {
     if (cors !== '*' && cors.length === 0) throw new UsageError('--cors needs * or at least one origin');
   }
 
-  let isDir = false;
+  let isDir: boolean;
   try {
     isDir = statSync(dir).isDirectory();
   } catch {

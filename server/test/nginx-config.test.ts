@@ -4,13 +4,12 @@ import assert from 'node:assert/strict';
 import { existsSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { after, before, describe, test } from 'node:test';
-import { fileURLToPath } from 'node:url';
+import { repoRoot } from '../../testing/paths.js';
 import { contentTypeTable } from '../content-types.js';
 import { NGINX_BIN, startNginx, TEMPLATE_PATH, type RunningNginx } from '../nginx-process.js';
 import { makeFixture, type Fixture } from './fixture.js';
 import { describeHeaderRules } from './header-rules.js';
 
-const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../../..');
 const template = readFileSync(TEMPLATE_PATH, 'utf8');
 
 test('docs/deploy.md shows the nginx config exactly as tested', () => {

@@ -1,15 +1,13 @@
 // `ssc serve` from the command line: it prints where it listens, serves the directory with
 // the CORS origins given, stops cleanly on SIGTERM, and explains bad arguments.
 import assert from 'node:assert/strict';
-import { spawn, spawnSync } from 'node:child_process';
+import { spawn } from 'node:child_process';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { fileURLToPath } from 'node:url';
+import { runSsc, sscNodeArgs } from '../../testing/run-ssc.js';
 import { makeFixture, type Fixture } from './fixture.js';
 import { request } from './http-client.js';
 
-const repoRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../../..');
-const ssc = path.join(repoRoot, 'bin/ssc.js');
 
 let fx: Fixture;
 before(() => {
@@ -17,13 +15,8 @@ before(() => {
 });
 after(() => fx.remove());
 
-function runSsc(args: string[]): { code: number | null; stdout: string; stderr: string } {
-  const r = spawnSync(process.execPath, [ssc, ...args], { encoding: 'utf8' });
-  return { code: r.status, stdout: r.stdout, stderr: r.stderr };
-}
-
 test('serves a directory until SIGTERM', async () => {
-  const child = spawn(process.execPath, [ssc, 'serve', fx.root, '--port', '0', '--cors', 'https://a.example,https://b.example'], { stdio: ['ignore', 'pipe', 'pipe'] });
+  const child = spawn(process.execPath, sscNodeArgs(['serve', fx.root, '--port', '0', '--cors', 'https://a.example,https://b.example']), { stdio: ['ignore', 'pipe', 'pipe'] });
   let stdout = '';
   let stderr = '';
   child.stderr.setEncoding('utf8').on('data', (s: string) => (stderr += s));
