@@ -1,14 +1,16 @@
-// npm run bench:serve [-- runs=N seconds=S]: requests per second and p99 latency of `ssc serve`
-// and of nginx (docs/deploy.md's config, one worker like our one process) serving the same
-// files on loopback: index.json and a ~256 KiB chunk, at 1, 16 and 64 connections, asking
-// with a browser's Accept-Encoding. Every run is bounded in time and in requests; medians of
-// the runs are printed with our/nginx throughput ratios. Without nginx, ours is measured alone.
+// npm run bench:serve [-- runs=N seconds=S]: requests per second and p99 latency of `ssc serve`,
+// of sirv (the library issue 10 weighs against it, bench/sirv-server.ts) and of nginx
+// (docs/deploy.md's config, one worker like our one process) serving the same files on
+// loopback: index.json and a ~256 KiB chunk, at 1, 16 and 64 connections, asking with a
+// browser's Accept-Encoding. Every run is bounded in time and in requests; medians of the runs
+// are printed with throughput ratios to nginx. Without nginx, the node servers are measured alone.
 import autocannon from 'autocannon';
 import { spawn } from 'node:child_process';
 import { createHash } from 'node:crypto';
 import { chmodSync, existsSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
+import { fileURLToPath } from 'node:url';
 import { brotliCompressSync, gzipSync } from 'node:zlib';
 import { NGINX_BIN, startNginx } from '../server/nginx-process.js';
 import { median, root as repoRoot } from './datasets.js';
@@ -64,9 +66,12 @@ function writeFiles(dir: string): { index: string; chunk: string; sizes: string 
   return { index: 'index.json', chunk, sizes };
 }
 
-/** `ssc serve` in its own process, as it runs in use (and off the benchmark's event loop). */
-function startOurs(dir: string): Promise<Target> {
-  const child = spawn(process.execPath, [path.join(repoRoot, 'bin/ssc.js'), 'serve', dir, '--port', '0'], { stdio: ['ignore', 'pipe', 'inherit'] });
+/**
+ * A node server in its own process, as `ssc serve` runs in use (and off the benchmark's event
+ * loop); it prints "at <url>" once listening.
+ */
+function startNode(name: string, args: string[]): Promise<Target> {
+  const child = spawn(process.execPath, args, { stdio: ['ignore', 'pipe', 'inherit'] });
   const exited = new Promise<void>((resolve) => child.once('exit', () => resolve()));
   return new Promise((resolve, reject) => {
     let out = '';
@@ -77,9 +82,9 @@ function startOurs(dir: string): Promise<Target> {
         child.kill('SIGTERM');
         await exited;
       };
-      if (m) resolve({ name: 'ours', url: m[1]!, stop });
+      if (m) resolve({ name, url: m[1]!, stop });
     });
-    void exited.then(() => reject(new Error(`ssc serve exited: ${out}`)));
+    void exited.then(() => reject(new Error(`${name} exited: ${out}`)));
   });
 }
 
@@ -94,12 +99,13 @@ chmodSync(dir, 0o755); // nginx's workers run as another user when started as ro
 const targets: Target[] = [];
 try {
   const files = writeFiles(dir);
-  targets.push(await startOurs(dir));
+  targets.push(await startNode('ours', [path.join(repoRoot, 'bin/ssc.js'), 'serve', dir, '--port', '0']));
+  targets.push(await startNode('sirv', [fileURLToPath(new URL('./sirv-server.js', import.meta.url)), dir]));
   if (existsSync(NGINX_BIN)) {
     const nginx = await startNginx(dir, (config) => config.replace('worker_processes auto;', 'worker_processes 1;'));
     targets.push({ name: 'nginx', url: nginx.url, stop: () => nginx.stop() });
   } else {
-    console.log(`${NGINX_BIN} not found (apt-get install nginx): measuring ours alone`);
+    console.log(`${NGINX_BIN} not found (apt-get install nginx): measuring the node servers alone`);
   }
   console.log(`bench:serve, node ${process.version}, ${RUNS} runs of ${SECONDS} s (at most ${MAX_REQUESTS} requests) per case, medians`);
   console.log(`files: ${files.sizes}; Accept-Encoding: ${HEADERS['accept-encoding']}`);
@@ -111,7 +117,7 @@ try {
   for (let run = 0; run < RUNS; run++) {
     for (const file of [files.index, files.chunk]) {
       for (const connections of CONNECTIONS) {
-        // Interleaved, so drift in the machine's state affects both servers alike.
+        // Interleaved, so drift in the machine's state affects every server alike.
         for (const t of targets) {
           const key = `${t.name}|${file}|${connections}`;
           samples.set(key, [...(samples.get(key) ?? []), await measure(t.url + file, connections, SECONDS)]);
@@ -121,22 +127,26 @@ try {
   }
 
   const col = (s: string, w: number): string => s.padStart(w);
-  const header = ['file', 'conns', ...targets.flatMap((t) => [`${t.name} req/s`, `${t.name} p99 ms`]), ...(targets.length > 1 ? ['ours/nginx'] : [])];
+  const nginx = targets.find((t) => t.name === 'nginx');
+  const others = targets.filter((t) => t !== nginx);
+  const header = ['file', 'conns', ...targets.flatMap((t) => [`${t.name} req/s`, `${t.name} p99 ms`]), ...(nginx ? others.map((t) => `${t.name}/nginx`) : [])];
   const widths = header.map((h, i) => Math.max(h.length, i === 0 ? 22 : 8));
   console.log('\n' + header.map((h, i) => (i === 0 ? h.padEnd(widths[i]!) : col(h, widths[i]!))).join('  '));
   for (const file of [files.index, files.chunk]) {
     for (const connections of CONNECTIONS) {
       const cells = [file.padEnd(widths[0]!), col(String(connections), widths[1]!)];
-      const rps: number[] = [];
+      const rps = new Map<Target, number>();
       targets.forEach((t, i) => {
         const s = samples.get(`${t.name}|${file}|${connections}`)!;
         const r = median(s.map((x) => x.rps));
-        rps.push(r);
+        rps.set(t, r);
         // autocannon measures latency in whole milliseconds.
         const p99 = median(s.map((x) => x.p99ms));
         cells.push(col(r.toFixed(0), widths[2 + 2 * i]!), col(p99 < 1 ? '<1' : p99.toFixed(0), widths[3 + 2 * i]!));
       });
-      if (targets.length > 1) cells.push(col((rps[0]! / rps[1]!).toFixed(2), widths[widths.length - 1]!));
+      if (nginx) {
+        others.forEach((t, i) => cells.push(col((rps.get(t)! / rps.get(nginx)!).toFixed(2), widths[2 + 2 * targets.length + i]!)));
+      }
       console.log(cells.join('  '));
     }
   }
