@@ -1,7 +1,7 @@
 // Our ETags come from the bytes, not from file times: equal contents share a tag, a touched
 // file keeps it, and a rewritten file gets a new one (and is never served stale from memory).
 // The server here looks at the disk on every request (revalidateAfterMs: 0), so each change
-// must show in the very next response; the default bound is tested in lookup-cache.test.ts.
+// must show in the very next response; the default bound is tested in disk-changes.test.ts.
 import assert from 'node:assert/strict';
 import { copyFileSync, renameSync, utimesSync, writeFileSync } from 'node:fs';
 import path from 'node:path';

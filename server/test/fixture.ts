@@ -2,7 +2,7 @@
 // served. Contents are small and known, so every expectation is written out, not computed by
 // the code under test.
 import { brotliCompressSync, gzipSync } from 'node:zlib';
-import { chmodSync, mkdirSync, mkdtempSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
+import { chmodSync, mkdirSync, mkdtempSync, renameSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 
@@ -93,4 +93,17 @@ export function bytesOf(fx: Fixture, urlPath: string): Buffer {
   const b = fx.files.get(urlPath);
   if (!b) throw new Error(`no fixture file ${urlPath}`);
   return b;
+}
+
+/** Replaces `file` by a symlink to `target` in one step, as a deploy script would. */
+export function swapForSymlink(file: string, target: string): void {
+  const tmp = `${file}.swap-tmp`;
+  symlinkSync(target, tmp);
+  renameSync(tmp, file);
+}
+
+/** Writes a new file over `file` in one step, as the preprocessing does. */
+export function replaceFile(file: string, text: string): void {
+  writeFileSync(`${file}.tmp`, text);
+  renameSync(`${file}.tmp`, file);
 }
