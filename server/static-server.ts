@@ -6,8 +6,9 @@
 // nginx (bench:serve), follows symlinks out of the root (a file, a directory, a .br sibling),
 // answers suffix and multiple ranges wrongly and from the compressed copies, ignores If-Range
 // and q=0, and sends weak ETags; @fastify/static 10 measured 0.35-0.40x, with weak ETags,
-// ranges of the compressed copies and symlinks out of the root followed too. Memory for small files (content-cache.ts) and remembered lookups
-// (lookup-cache.ts) are what keep ours near nginx.
+// ranges of the compressed copies and symlinks out of the root followed too. Memory for small
+// files (content-cache.ts) and remembered lookups (lookup-cache.ts) are what keep ours near
+// nginx.
 import { realpathSync, statSync } from 'node:fs';
 import { createServer, type IncomingMessage, type Server, type ServerResponse } from 'node:http';
 import type { AddressInfo, Socket } from 'node:net';
