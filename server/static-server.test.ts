@@ -2,29 +2,18 @@
 // it refuses to start with.
 import assert from 'node:assert/strict';
 import { symlinkSync, writeFileSync } from 'node:fs';
-import { connect } from 'node:net';
 import path from 'node:path';
 import { after, before, test } from 'node:test';
-import { createStaticServer } from '../static-server.js';
-import { makeFixture, type Fixture } from './fixture.js';
-import { request } from './http-client.js';
+import { accepts } from './nginx-process.js';
+import { createStaticServer } from './static-server.js';
+import { makeFixture, type Fixture } from './test/fixture.js';
+import { request } from './test/http-client.js';
 
 let fx: Fixture;
 before(() => {
   fx = makeFixture();
 });
 after(() => fx.remove());
-
-function refused(port: number): Promise<boolean> {
-  return new Promise((resolve) => {
-    const socket = connect({ host: '127.0.0.1', port });
-    socket.once('connect', () => {
-      socket.destroy();
-      resolve(false);
-    });
-    socket.once('error', () => resolve(true));
-  });
-}
 
 test('listens on 127.0.0.1 by default and reports the bound address', async () => {
   const server = createStaticServer({ root: fx.root });
@@ -47,7 +36,7 @@ test('close() stops accepting connections, and may be called again', async () =>
   const { port } = await server.listen(0, '127.0.0.1');
   await server.close();
   assert.equal(server.address, null);
-  assert.ok(await refused(port));
+  assert.ok(!(await accepts(port)));
   await server.close();
 });
 
