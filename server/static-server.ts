@@ -2,13 +2,13 @@
 // and malformed clients, and listening on loopback unless told otherwise.
 //
 // Hand-written, not a library, by issue 10's rule (a library unless it falls below 0.8x nginx
-// or loses a hardening test), measured in Nov 2026: sirv 3.0.2 serves index.json at 0.33-0.56x
-// nginx (bench:serve), follows symlinks out of the root (a file, a directory, a .br sibling),
-// answers suffix and multiple ranges wrongly and from the compressed copies, ignores If-Range
-// and q=0, and sends weak ETags; @fastify/static 10 measured 0.35-0.40x, with weak ETags,
-// ranges of the compressed copies and symlinks out of the root followed too. Memory for small
-// files (content-cache.ts) and remembered lookups (lookup-cache.ts) are what keep ours near
-// nginx.
+// or loses a hardening test), measured in Nov 2026: sirv 3.0.2 serves index.json at 0.2-0.6x
+// nginx in bench:serve (ours 0.6-1.0 in the same runs; the chunk is bandwidth-bound, near 1
+// for all), follows symlinks out of the root (a file, a directory, a .br sibling), answers
+// suffix and multiple ranges wrongly and from the compressed copies, ignores If-Range and q=0,
+// and sends weak ETags; @fastify/static 10 measured 0.35-0.40x, with weak ETags, ranges of the
+// compressed copies and symlinks out of the root followed too. Memory for small files
+// (content-cache.ts) and remembered lookups (lookup-cache.ts) are what keep ours near nginx.
 import { realpathSync, statSync } from 'node:fs';
 import { createServer, type IncomingMessage, type Server, type ServerResponse } from 'node:http';
 import type { AddressInfo, Socket } from 'node:net';
