@@ -1,6 +1,7 @@
 // Small planar partitions drawn by hand, for unit tests of the topology and tGAP steps. Faces
 // are given as rings of local coordinates; face f (1, 2, ...) is the f-th face given, 0 the
 // outside. Tests work out what they expect from the drawing, not from the code under test.
+import assert from 'node:assert/strict';
 import type { InputFeature } from '../preprocess/io/read-input.js';
 import type { ClassStyle, Style } from '../preprocess/style.js';
 import { PlanarState } from '../preprocess/tgap/planar-state.js';
@@ -26,14 +27,18 @@ export function topologyOf(faces: FixtureFace[]): Topology {
   return buildTopology(features, { precision: 0.001 });
 }
 
-/** The faces as a PlanarState, classes numbered in the order of `classes`. */
-export function planarStateOf(faces: FixtureFace[], classes: string[]): PlanarState {
-  const classOf = (f: number): number => {
+/** Face f's class as its index in `classes`. */
+export function classIndexOf(faces: FixtureFace[], classes: string[]): (f: number) => number {
+  return (f) => {
     const i = classes.indexOf(faces[f - 1]?.cls ?? '');
     if (i < 0) throw new Error(`face ${f}: class not in ${classes.join(', ')}`);
     return i;
   };
-  return new PlanarState(topologyOf(faces), classOf);
+}
+
+/** The faces as a PlanarState, classes numbered in the order of `classes`. */
+export function planarStateOf(faces: FixtureFace[], classes: string[]): PlanarState {
+  return new PlanarState(topologyOf(faces), classIndexOf(faces, classes));
 }
 
 /** The id of the vertex at (x, y) exactly. */
@@ -66,4 +71,9 @@ export function fixtureStyle(classes: { key: string; weight?: number; linear?: b
   const cs: ClassStyle[] = classes.map((c) => ({ key: c.key, label: c.key, color: '#808080', weight: c.weight ?? 1, linear: c.linear ?? false }));
   const matrix = cs.map((a) => Float64Array.from(cs.map((b) => (a.key === b.key ? 1 : compat[a.key]?.[b.key] ?? 1))));
   return { name: 'fixture', classProperty: 'cls', idProperty: null, baseScale: 1000, resolutionMm: 0.28, allowHoles: false, background: '#ffffff', classes: cs, compat: matrix, attribution: '' };
+}
+
+/** Equal up to rounding (areas summed from float coordinates). */
+export function assertNear(actual: number, expected: number, what: string): void {
+  assert.ok(Math.abs(actual - expected) < 1e-9, `${what}: ${actual}, expected ${expected}`);
 }

@@ -13,7 +13,7 @@ import test from 'node:test';
 import assert from 'node:assert/strict';
 import { ALIVE } from './planar-state.js';
 import { EventKind } from '../../format/tgap-model.js';
-import { edgePoints, edgesBetween, fixtureStyle, planarStateOf, rect, topologyOf, type FixtureFace } from '../../testing/planar-fixtures.js';
+import { classIndexOf, edgePoints, edgesBetween, fixtureStyle, planarStateOf, rect, topologyOf, type FixtureFace } from '../../testing/planar-fixtures.js';
 import { generalize } from './generalize.js';
 import { mergeFace, mostCompatibleNeighbour } from './merge.js';
 
@@ -63,7 +63,7 @@ test('a merge gives the loser\'s area to the winner and joins the edges it leave
 
 test('generalize merges the least important face first, into its most compatible neighbour', () => {
   const topo = topologyOf(FACES);
-  const classOf = (f: number): number => CLASSES.indexOf(FACES[f - 1]!.cls);
+  const classOf = classIndexOf(FACES, CLASSES);
   // Equal weights: S (area 1) goes first, into Y (the longer boundary); then Y, now 16, before
   // X (24), into X, its only neighbour.
   const plain = generalize(topo, classOf, fixtureStyle(CLASSES.map((key) => ({ key }))), { baseScale: 1000, resolutionMm: 0.28 });

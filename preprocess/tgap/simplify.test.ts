@@ -15,7 +15,7 @@
 // it: -0.3 + 0.6 + 0.75 = 1.05, so 41.05; B's is 80 - 41.05 = 38.95.
 import test from 'node:test';
 import assert from 'node:assert/strict';
-import { edgePoints, edgesBetween, planarStateOf, vertexAt, type FixtureFace, type XY } from '../../testing/planar-fixtures.js';
+import { assertNear, edgePoints, edgesBetween, planarStateOf, vertexAt, type FixtureFace, type XY } from '../../testing/planar-fixtures.js';
 import { simplifyEdge, StepTriangles } from './simplify.js';
 
 const A = 1, B = 2;
@@ -39,9 +39,6 @@ function boundary(st: ReturnType<typeof planarStateOf>): number {
   return edges[0]!;
 }
 
-const near = (actual: number, expected: number, what: string): void =>
-  assert.ok(Math.abs(actual - expected) < 1e-9, `${what}: ${actual}, expected ${expected}`);
-
 test('the vertex with the smaller triangle goes first, and removals stop at the tolerance', () => {
   const st = fixture(false);
   const e = boundary(st);
@@ -54,8 +51,8 @@ test('the vertex with the smaller triangle goes first, and removals stop at the 
   const pts = edgePoints(st, id).map(([x, y]) => `${x},${y}`).sort();
   assert.deepEqual(pts, ['0,0', '10,0', '7,0.5']);
   // The triangle under the chord (0,0)-(7,0.5) was B's and is now A's.
-  near(st.faceArea2[A]! / 2, 41.05 + 1.45, 'area of A');
-  near(st.faceArea2[B]! / 2, 38.95 - 1.45, 'area of B');
+  assertNear(st.faceArea2[A]! / 2, 41.05 + 1.45, 'area of A');
+  assertNear(st.faceArea2[B]! / 2, 38.95 - 1.45, 'area of B');
 });
 
 test('with a larger tolerance both vertices go, smallest triangle first, and the areas still add up', () => {
@@ -68,8 +65,8 @@ test('with a larger tolerance both vertices go, smallest triangle first, and the
   // second removal of the step comes in the next phase.
   assert.deepEqual([...st.edges[id]!.removedPhase], [1, 2]);
   assert.equal(st.edges[id]!.verts.length, 2, 'a straight edge is left');
-  near(st.faceArea2[A]! / 2, 40, 'area of A');
-  near(st.faceArea2[B]! / 2, 40, 'area of B');
+  assertNear(st.faceArea2[A]! / 2, 40, 'area of A');
+  assertNear(st.faceArea2[B]! / 2, 40, 'area of B');
 });
 
 test('a removal whose chord would cross another boundary is refused', () => {
@@ -90,7 +87,7 @@ test('a refused vertex goes once its new chord no longer crosses', () => {
   // (3,-0.2) is refused first; (7,0.5) goes; then (3,-0.2)'s chord is (0,0)-(10,0), under the island.
   const id = simplifyEdge(st, e, 3, new StepTriangles());
   assert.deepEqual([...st.edges[id]!.removed], [vertexAt(st, 7, 0.5), vertexAt(st, 3, -0.2)]);
-  near(st.faceArea2[A]! / 2, 40, 'area of A');
+  assertNear(st.faceArea2[A]! / 2, 40, 'area of A');
 });
 
 test('removal triangles of one step that overlap get successive phases', () => {
