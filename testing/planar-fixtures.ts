@@ -18,6 +18,17 @@ export interface FixtureFace {
 /** Counterclockwise rectangle, open. */
 export const rect = (x0: number, y0: number, x1: number, y1: number): XY[] => [[x0, y0], [x1, y0], [x1, y1], [x0, y1]];
 
+/**
+ * Three faces in [0,10] x [0,4] (drawn in preprocess/tgap/merge.test.ts): X = [0,6] x [0,4]
+ * (face 1, class x), S = [6,7] x [0,1] (face 2, class s) and Y, the L-shaped rest (face 3,
+ * class y).
+ */
+export const SMALL_BETWEEN_TWO: FixtureFace[] = [
+  { cls: 'x', rings: [rect(0, 0, 6, 4)] },
+  { cls: 's', rings: [rect(6, 0, 7, 1)] },
+  { cls: 'y', rings: [[[6, 1], [7, 1], [7, 0], [10, 0], [10, 4], [6, 4]]] },
+];
+
 export function topologyOf(faces: FixtureFace[]): Topology {
   const features: InputFeature[] = faces.map((f, index) => ({
     ref: { index, id: null },

@@ -13,17 +13,13 @@ import test from 'node:test';
 import assert from 'node:assert/strict';
 import { ALIVE } from './planar-state.js';
 import { EventKind } from '../../format/tgap-model.js';
-import { classIndexOf, edgePoints, edgesBetween, fixtureStyle, planarStateOf, rect, topologyOf, type FixtureFace } from '../../testing/planar-fixtures.js';
+import { classIndexOf, edgePoints, edgesBetween, fixtureStyle, planarStateOf, SMALL_BETWEEN_TWO, topologyOf } from '../../testing/planar-fixtures.js';
 import { generalize } from './generalize.js';
 import { mergeFace, mostCompatibleNeighbour } from './merge.js';
 
 const X = 1, S = 2, Y = 3;
 const CLASSES = ['x', 's', 'y'];
-const FACES: FixtureFace[] = [
-  { cls: 'x', rings: [rect(0, 0, 6, 4)] },
-  { cls: 's', rings: [rect(6, 0, 7, 1)] },
-  { cls: 'y', rings: [[[6, 1], [7, 1], [7, 0], [10, 0], [10, 4], [6, 4]]] },
-];
+const FACES = SMALL_BETWEEN_TWO;
 
 /** compat[loser][neighbour] with 1 on the diagonal, the given overrides, else 1. */
 function compat(over: Record<string, Record<string, number>>): Float64Array[] {
