@@ -26,7 +26,7 @@ export class PlanarState {
   readonly faceEdges: (Set<number> | null)[] = [];
   /** Current twice-area of each face (follows merges, splits and simplification). */
   readonly faceArea2: number[] = [];
-  /** Vertex count of what the face's surfaces in the cube cost since it was made (see generalize). */
+  /** Vertex count of what the face's surfaces in the cube cost since it was made (see reemit.ts). */
   readonly faceCost: number[] = [];
   /** Vertices around each face now (segments of its current edges). */
   readonly faceVerts: number[] = [];

@@ -7,6 +7,7 @@ import { triangulateRegion } from '../geom/cdt.js';
 import { LocalVertices } from '../geom/local-vertices.js';
 import type { PlanarState } from './planar-state.js';
 import { EMPTY_I32, EMPTY_U8 } from './planar-state.js';
+import { dissolveNodes } from './dissolve-node.js';
 
 export interface SplitResult {
   /** Twice the area each receiving face gets. */
@@ -196,6 +197,21 @@ export function splitFace(st: PlanarState, L: number): SplitResult | null {
     newEdges,
     touchedNodes: [...touched].sort((p, q) => p - q),
   };
+}
+
+/**
+ * Completes the split of L that `splitFace` made: L ends, each receiver gets its area (and
+ * pays a drawn vertex per triangle it got), and nodes left between two edges of one boundary
+ * are dissolved. Returns the receivers (in id order) and the edges that may need simplifying:
+ * the new ones, then the joined ones.
+ */
+export function handOver(st: PlanarState, L: number, res: SplitResult): { receivers: number[]; edges: number[] } {
+  st.endFace(L, -1);
+  const receivers = [...res.gains.keys()].sort((p, q) => p - q);
+  for (const f of receivers) st.faceArea2[f]! += res.gains.get(f)!;
+  for (const f of res.triFaces) st.faceCost[f]!++;
+  const joined = dissolveNodes(st, res.touchedNodes);
+  return { receivers, edges: [...res.newEdges, ...joined] };
 }
 
 /**

@@ -13,7 +13,7 @@ import { InputError } from '../io/errors.js';
 import { readInput } from '../io/read-input.js';
 import { readTgap } from '../../format/tgap.js';
 import type { Tgap } from '../../format/tgap-model.js';
-import { buildTopology, type Topology, type TopologyRepairs } from '../topology/build-topology.js';
+import { buildTopology, type Topology, type TopologyRepairs } from './build-topology.js';
 
 type Json = null | boolean | number | string | Json[] | { [key: string]: Json };
 type XY = [number, number];

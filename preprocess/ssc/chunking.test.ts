@@ -1,0 +1,91 @@
+// planChunks on hand-made surfaces: a 16 x 16 grid of unit cells, one triangle a cell.
+// A triangle that is a piece of its own costs 6 bytes of indices and 3 vertices of 24 bytes:
+// 78 bytes (docs/FORMAT.md), so 256 of them are 19,968 bytes.
+import test from 'node:test';
+import assert from 'node:assert/strict';
+import { planChunks, type ChunkPlan } from './chunking.js';
+import { Surfaces } from './surfaces.js';
+
+const N = 16;
+const TRI_BYTES = 78;
+
+interface Grid {
+  surfaces: Surfaces;
+  xs: Float64Array;
+  ys: Float64Array;
+}
+
+/** One triangle in each cell of an N x N grid, each a piece of its own, at z = 0 and covered from z = 10. */
+function grid(): Grid {
+  const xs = new Float64Array((N + 1) * (N + 1)), ys = new Float64Array((N + 1) * (N + 1));
+  for (let y = 0; y <= N; y++) for (let x = 0; x <= N; x++) {
+    xs[y * (N + 1) + x] = x;
+    ys[y * (N + 1) + x] = y;
+  }
+  const surfaces = new Surfaces();
+  for (let cy = 0; cy < N; cy++) for (let cx = 0; cx < N; cx++) {
+    const v = cy * (N + 1) + cx;
+    surfaces.add(v, v + 1, v + N + 1, 0, 1 + cy * N + cx, 0);
+    surfaces.zEnd[surfaces.count - 1] = 10;
+  }
+  return { surfaces, xs, ys };
+}
+
+function plan(g: Grid, targetBytes: number): ChunkPlan {
+  return planChunks({
+    ...g,
+    extent: [0, 0, N, N],
+    scaleAt: (z) => 1000 * (1 + z),
+    viewPerScale: [0.3584, 0.2016],
+    targetBytes,
+  });
+}
+
+/** The triangles of chunk c. */
+const chunk = (p: ChunkPlan, c: number): number[] => [...p.order.subarray(p.start[c], p.start[c + 1])];
+const chunkCount = (p: ChunkPlan): number => p.start.length - 1;
+
+test('every triangle is in exactly one chunk, and the chunks are evenly sized', () => {
+  const p = plan(grid(), 32 * TRI_BYTES);
+  // 19,968 bytes at 2,496 a chunk: 8 chunks.
+  assert.equal(chunkCount(p), 8);
+  assert.deepEqual([...p.order].sort((a, b) => a - b), Array.from({ length: N * N }, (_, i) => i));
+  for (let c = 0; c < chunkCount(p); c++) {
+    const n = chunk(p, c).length;
+    // Each cut must leave each side within 15% of its chunks' worth: with equal triangles the
+    // cuts fall at whole multiples of 32.
+    assert.equal(n, 32, `chunk ${c} holds ${n} triangles`);
+  }
+});
+
+test('the chunks are compact: their ground boxes tile the grid without overlap', () => {
+  const g = grid();
+  const p = plan(g, 32 * TRI_BYTES);
+  let area = 0;
+  for (let c = 0; c < chunkCount(p); c++) {
+    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+    for (const t of chunk(p, c)) {
+      const v = g.surfaces.v[3 * t]!;
+      x0 = Math.min(x0, g.xs[v]!);
+      y0 = Math.min(y0, g.ys[v]!);
+      x1 = Math.max(x1, g.xs[v]! + 1);
+      y1 = Math.max(y1, g.ys[v]! + 1);
+    }
+    area += (x1 - x0) * (y1 - y0);
+  }
+  // 8 blocks of 32 cells cover the 256 cells exactly; any block that is not a rectangle, or
+  // chunks that interleave, would add area.
+  assert.equal(area, N * N);
+});
+
+test('the same input gives the same plan', () => {
+  const a = plan(grid(), 20 * TRI_BYTES);
+  const b = plan(grid(), 20 * TRI_BYTES);
+  assert.deepEqual([...a.order], [...b.order]);
+  assert.deepEqual(a.start, b.start);
+});
+
+test('input smaller than one chunk is one chunk', () => {
+  const p = plan(grid(), 1 << 20);
+  assert.deepEqual(p.start, [0, N * N]);
+});

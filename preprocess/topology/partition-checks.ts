@@ -1,0 +1,151 @@
+// The checks that the half-edges form a planar partition: no segments crossing, no gap
+// inside the domain, no part of it lying inside another.
+import Flatbush from 'flatbush';
+import { orient, segmentsIntersect } from '../geom/predicates.js';
+import { ringArea2 } from '../geom/ring.js';
+import { nextInFace, type HalfEdges } from './half-edges.js';
+import type { Refusal } from './refusal.js';
+
+/** Refuses two segments that cross or touch other than at a shared vertex (self-intersection or overlap). */
+export function checkCrossings(he: HalfEdges, xs: Float64Array, ys: Float64Array, refusal: Refusal): void {
+  const { from, to, face, twin, count: nh } = he;
+  const segs: number[] = [];
+  for (let h = 0; h < nh; h++) if (h < twin[h]!) segs.push(h);
+  if (segs.length === 0) return;
+  const index = new Flatbush(segs.length);
+  for (const h of segs) {
+    const a = from[h]!, b = to[h]!;
+    index.add(Math.min(xs[a]!, xs[b]!), Math.min(ys[a]!, ys[b]!), Math.max(xs[a]!, xs[b]!), Math.max(ys[a]!, ys[b]!));
+  }
+  index.finish();
+  const hits: number[] = [];
+  for (let i = 0; i < segs.length; i++) {
+    const h = segs[i]!;
+    const a = from[h]!, b = to[h]!;
+    hits.length = 0;
+    index.search(Math.min(xs[a]!, xs[b]!), Math.min(ys[a]!, ys[b]!), Math.max(xs[a]!, xs[b]!), Math.max(ys[a]!, ys[b]!), (j) => {
+      if (j > i) hits.push(j);
+      return false;
+    });
+    for (const j of hits) {
+      const g = segs[j]!;
+      const c = from[g]!, d = to[g]!;
+      let bad: boolean;
+      if (a === c || a === d || b === c || b === d) {
+        // Sharing one vertex is fine unless the two run along each other.
+        const shared = a === c || a === d ? a : b;
+        const p = shared === a ? b : a, q = shared === c ? d : c;
+        bad = p === q || (orient(xs[shared]!, ys[shared]!, xs[p]!, ys[p]!, xs[q]!, ys[q]!) === 0 &&
+          (xs[p]! - xs[shared]!) * (xs[q]! - xs[shared]!) + (ys[p]! - ys[shared]!) * (ys[q]! - ys[shared]!) > 0);
+      } else {
+        bad = segmentsIntersect(xs[a]!, ys[a]!, xs[b]!, ys[b]!, xs[c]!, ys[c]!, xs[d]!, ys[d]!);
+      }
+      if (!bad) continue;
+      const [ix, iy] = crossingPoint(xs[a]!, ys[a]!, xs[b]!, ys[b]!, xs[c]!, ys[c]!, xs[d]!, ys[d]!);
+      const f1 = face[h] || face[twin[h]!]!, f2 = face[g] || face[twin[g]!]!;
+      const faces1 = [face[h]!, face[twin[h]!]!].filter((f) => f > 0);
+      const faces2 = [face[g]!, face[twin[g]!]!].filter((f) => f > 0);
+      if (faces1.some((f) => faces2.includes(f)) && faces1.length + faces2.length <= 2) {
+        refusal.fail('is self-intersecting: its boundary crosses itself', f1, ix, iy);
+      }
+      const other = faces2.find((f) => !faces1.includes(f)) ?? f2;
+      refusal.fail(
+        f1 === other
+          ? 'is self-intersecting: its boundary crosses itself'
+          : `crosses ${refusal.describe(other)} (self-intersection or overlap)`,
+        f1, ix, iy,
+      );
+    }
+  }
+}
+
+function crossingPoint(ax: number, ay: number, bx: number, by: number, cx: number, cy: number, dx: number, dy: number): [number, number] {
+  const den = (bx - ax) * (dy - cy) - (by - ay) * (dx - cx);
+  if (den === 0) return [(ax + bx) / 2, (ay + by) / 2];
+  const t = ((cx - ax) * (dy - cy) - (cy - ay) * (dx - cx)) / den;
+  const tc = Math.max(0, Math.min(1, t));
+  return [ax + tc * (bx - ax), ay + tc * (by - ay)];
+}
+
+/**
+ * The outside's boundary: a cycle around a hole in the union of the faces is a gap (refused)
+ * or, with allowHoles, an enclave (returned); a part of the domain inside another one's area
+ * is an overlap (refused).
+ */
+export function checkOutside(he: HalfEdges, xs: Float64Array, ys: Float64Array, refusal: Refusal, allowHoles: boolean): { area: number; x: number; y: number }[] {
+  const { from, to, face, twin, count: nh, out } = he;
+  const holes: { area: number; x: number; y: number }[] = [];
+  const seen = new Uint8Array(nh);
+  const cycles: { hs: number[]; area2: number; bbox: [number, number, number, number] }[] = [];
+  for (let h0 = 0; h0 < nh; h0++) {
+    if (face[h0] !== 0 || seen[h0]) continue;
+    const hs: number[] = [];
+    let h = h0;
+    let guard = 0;
+    do {
+      seen[h] = 1;
+      hs.push(h);
+      h = nextInFace(h, twin, to, out);
+      if (++guard > nh) throw new Error('outside boundary does not close');
+    } while (h !== h0);
+    const ids = hs.map((g) => from[g]!);
+    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+    for (const v of ids) {
+      x0 = Math.min(x0, xs[v]!); y0 = Math.min(y0, ys[v]!);
+      x1 = Math.max(x1, xs[v]!); y1 = Math.max(y1, ys[v]!);
+    }
+    cycles.push({ hs, area2: ringArea2(ids, xs, ys), bbox: [x0, y0, x1, y1] });
+  }
+  for (const c of cycles) {
+    if (c.area2 > 0) {
+      // The outside on the left going counterclockwise: a hole in the union of all faces.
+      const h = c.hs[0]!;
+      if (allowHoles) {
+        holes.push({ area: c.area2 / 2, x: xs[from[h]!]!, y: ys[from[h]!]! });
+        continue;
+      }
+      const inner = face[twin[h]!]!;
+      const [x0, y0, x1, y1] = c.bbox;
+      refusal.fail(
+        `borders a gap inside the domain (an area no feature covers, ${(c.area2 / 2).toPrecision(4)} square units, bounding box ${[x0, y0, x1, y1].map((v) => Math.round(v * 1000) / 1000).join(', ')}); if it is outside the domain on purpose (an enclave), allow holes (--allow-holes, or "allowHoles": true in the style)`,
+        inner, xs[from[h]!], ys[from[h]!],
+      );
+    }
+  }
+  // A point just outside the faces along any outside boundary must be outside every other
+  // boundary too (counting holes): otherwise a component lies inside another one's area.
+  if (cycles.length > 1) {
+    for (const c of cycles) {
+      const h = c.hs[0]!;
+      const a = from[h]!, b = to[h]!;
+      const mx = (xs[a]! + xs[b]!) / 2, my = (ys[a]! + ys[b]!) / 2;
+      // Left of the half-edge lies the outside: inside c itself only when c is a hole.
+      let w = c.area2 > 0 ? 1 : 0;
+      for (const d of cycles) {
+        if (d === c) continue;
+        const [x0, y0, x1, y1] = d.bbox;
+        if (mx < x0 || mx > x1 || my < y0 || my > y1) continue;
+        w += windingAround(d.hs, from, xs, ys, mx, my);
+      }
+      if (w !== 0) {
+        refusal.fail('lies inside the area of other features without a hole for it (overlap)', face[twin[h]!], mx, my);
+      }
+    }
+  }
+  return holes;
+}
+
+function windingAround(hs: number[], from: Int32Array, xs: Float64Array, ys: Float64Array, px: number, py: number): number {
+  let w = 0;
+  const n = hs.length;
+  for (let i = 0; i < n; i++) {
+    const a = from[hs[i]!]!, b = from[hs[(i + 1) % n]!]!;
+    const ay = ys[a]!, by = ys[b]!;
+    if (ay <= py) {
+      if (by > py && orient(xs[a]!, ay, xs[b]!, by, px, py) > 0) w++;
+    } else if (by <= py && orient(xs[a]!, ay, xs[b]!, by, px, py) < 0) {
+      w--;
+    }
+  }
+  return w;
+}

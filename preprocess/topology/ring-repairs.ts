@@ -1,0 +1,170 @@
+// The safe repairs of input rings, each counted: points closer than the precision merged,
+// T-junctions inserted, repeated points and zero-width spikes dropped, and rings turned to the
+// orientation of their role. What cannot be repaired is refused.
+import KDBush from 'kdbush';
+import { orient } from '../geom/predicates.js';
+import { ringArea2 } from '../geom/ring.js';
+import type { Refusal } from './refusal.js';
+import type { Ring, TopologyRepairs } from './topology-types.js';
+
+/**
+ * Merges points closer than `precision`, puts vertices lying on another ring's segment into
+ * that segment, and cleans what that leaves. The ids keep their coordinates; rings are new
+ * where they changed.
+ */
+export function repairRings(rawRings: Ring[], xs: Float64Array, ys: Float64Array, precision: number, repairs: TopologyRepairs): Ring[] {
+  const nv = xs.length;
+  const index = new KDBush(nv, 64, Float64Array);
+  for (let v = 0; v < nv; v++) index.add(xs[v]!, ys[v]!);
+  index.finish();
+  // Tolerances compare with a hair of slack so that neighbours exactly one grid step apart count.
+  const tol = precision * (1 + 1e-9);
+  // Points closer than the precision are one point (the first one met in the input).
+  const alias = mergeNearPoints(rawRings, index, xs, ys, tol, repairs);
+  // T-junctions: a vertex lying on another ring's segment is inserted into that segment.
+  const rings = insertTJunctions(rawRings, index, alias, xs, ys, tol, repairs);
+  for (const r of rings) r.ids = cleanRing(r.ids, repairs);
+  return rings;
+}
+
+/** Refuses rings of fewer than 3 points or no area; turns outer rings counterclockwise and holes clockwise. */
+export function orientRings(rings: Ring[], xs: Float64Array, ys: Float64Array, repairs: TopologyRepairs, refusal: Refusal): void {
+  for (const r of rings) {
+    const distinct = new Set(r.ids).size;
+    if (distinct < 3) {
+      refusal.fail(`has a ${r.outer ? 'ring' : 'hole'} with fewer than 3 distinct points`, r.face, xs[r.ids[0]!], ys[r.ids[0]!]);
+    }
+    const a2 = ringArea2(r.ids, xs, ys);
+    if (a2 === 0) refusal.fail(`has a ${r.outer ? 'ring' : 'hole'} of zero area`, r.face, xs[r.ids[0]!], ys[r.ids[0]!]);
+    if ((a2 > 0) !== r.outer) {
+      r.ids.reverse();
+      repairs.reorientedRings++;
+    }
+  }
+}
+
+/** Inserts every vertex that lies on a segment (within the precision) into that segment. */
+function insertTJunctions(rings: Ring[], index: KDBush, alias: Int32Array, xs: Float64Array, ys: Float64Array, tol: number, repairs: TopologyRepairs): Ring[] {
+  const tol2 = tol * tol;
+  const out: Ring[] = [];
+  for (const r of rings) {
+    const ids = r.ids;
+    const n = ids.length;
+    let result: number[] | null = null;
+    for (let i = 0; i < n; i++) {
+      const a = ids[i]!, b = ids[(i + 1) % n]!;
+      const ax = xs[a]!, ay = ys[a]!, bx = xs[b]!, by = ys[b]!;
+      const found = index.range(Math.min(ax, bx) - tol, Math.min(ay, by) - tol, Math.max(ax, bx) + tol, Math.max(ay, by) + tol);
+      let inserts: { v: number; t: number }[] | null = null;
+      if (found.length > 2) {
+        const dx = bx - ax, dy = by - ay;
+        const len2 = dx * dx + dy * dy;
+        for (const v of found) {
+          if (v === a || v === b || alias[v] !== v) continue;
+          const px = xs[v]! - ax, py = ys[v]! - ay;
+          const t = (px * dx + py * dy) / len2;
+          if (t <= 0 || t >= 1) continue;
+          // Within the precision of an end point it is that end point (merged before), not a T.
+          if (px * px + py * py <= tol2) continue;
+          const qx = xs[v]! - bx, qy = ys[v]! - by;
+          if (qx * qx + qy * qy <= tol2) continue;
+          const o = orient(ax, ay, bx, by, xs[v]!, ys[v]!);
+          if (o !== 0) {
+            // o is twice the triangle area: distance to the line is o / |ab|.
+            if (tol === 0 || (o * o) / len2 > tol2) continue;
+          }
+          (inserts ??= []).push({ v, t });
+        }
+      }
+      if (inserts) {
+        if (!result) result = Array.from(ids.subarray(0, i + 1));
+        inserts.sort((p, q) => p.t - q.t || p.v - q.v);
+        for (const ins of inserts) result.push(ins.v);
+        repairs.tJunctions += inserts.length;
+        if (i + 1 < n) result.push(b);
+      } else if (result && i + 1 < n) {
+        result.push(b);
+      }
+    }
+    out.push(result ? { face: r.face, outer: r.outer, ids: Int32Array.from(result) } : r);
+  }
+  return out;
+}
+
+/** Union of points within `tol` of each other, each replaced by the lowest id of its group. */
+function mergeNearPoints(rings: Ring[], index: KDBush, xs: Float64Array, ys: Float64Array, tol: number, repairs: TopologyRepairs): Int32Array {
+  const nv = xs.length;
+  const alias = new Int32Array(nv);
+  for (let v = 0; v < nv; v++) alias[v] = v;
+  if (tol <= 0) return alias;
+  const find = (v: number): number => {
+    while (alias[v] !== v) {
+      alias[v] = alias[alias[v]!]!;
+      v = alias[v]!;
+    }
+    return v;
+  };
+  let merged = false;
+  for (let v = 0; v < nv; v++) {
+    for (const w of index.within(xs[v]!, ys[v]!, tol)) {
+      if (w === v) continue;
+      const a = find(v), b = find(w);
+      if (a === b) continue;
+      if (a < b) alias[b] = a;
+      else alias[a] = b;
+      merged = true;
+    }
+  }
+  if (!merged) return alias;
+  for (let v = 0; v < nv; v++) alias[v] = find(v);
+  for (const r of rings) {
+    for (let i = 0; i < r.ids.length; i++) {
+      const v = r.ids[i]!;
+      if (alias[v] !== v) {
+        r.ids[i] = alias[v]!;
+        repairs.mergedPoints++;
+      }
+    }
+  }
+  return alias;
+}
+
+/** Drops repeated points and zero-width spikes (a, b, a) that merging can leave in a ring. */
+export function cleanRing(ids: Int32Array, repairs: TopologyRepairs): Int32Array {
+  const out: number[] = [];
+  let changed = false;
+  for (const v of ids) {
+    if (out.length > 0 && out[out.length - 1] === v) {
+      repairs.duplicatePoints++;
+      changed = true;
+      continue;
+    }
+    if (out.length >= 2 && out[out.length - 2] === v) {
+      out.pop();
+      repairs.spikes++;
+      changed = true;
+      continue;
+    }
+    out.push(v);
+  }
+  // The same across the ring's closing point.
+  for (;;) {
+    const n = out.length;
+    if (n >= 2 && out[0] === out[n - 1]) {
+      out.pop();
+      repairs.duplicatePoints++;
+      changed = true;
+    } else if (n >= 3 && out[1] === out[n - 1]) {
+      out.shift();
+      out.pop();
+      repairs.spikes++;
+      changed = true;
+    } else if (n >= 3 && out[0] === out[n - 2]) {
+      out.pop();
+      out.pop();
+      repairs.spikes++;
+      changed = true;
+    } else break;
+  }
+  return changed ? Int32Array.from(out) : ids;
+}
