@@ -1,5 +1,6 @@
 // Runs the ssc command line from source (tsx), so CLI tests need no build.
-import { execFile, spawnSync } from 'node:child_process';
+import { execFile, spawn, spawnSync } from 'node:child_process';
+import { createInterface } from 'node:readline';
 import path from 'node:path';
 import { promisify } from 'node:util';
 import { repoRoot } from './paths.js';
@@ -28,4 +29,31 @@ const execFileP = promisify(execFile);
 /** The same without blocking the event loop (a server or browser may be running beside it). */
 export async function runSscAsync(args: string[]): Promise<{ stdout: string; stderr: string }> {
   return execFileP(process.execPath, [...nodeArgs, ...args], { maxBuffer: 64 << 20 });
+}
+
+export interface SscSession {
+  run(args: string[]): Promise<SscResult>;
+  close(): void;
+}
+
+/**
+ * One ssc process that runs many commands in turn (testing/ssc-session-child.ts): the same
+ * main() and output as a fresh `ssc` each time, without starting tsx each time.
+ */
+export function startSscSession(): SscSession {
+  const child = spawn(process.execPath, ['--import', 'tsx', path.join(repoRoot, 'testing/ssc-session-child.ts')], { stdio: ['pipe', 'pipe', 'inherit'] });
+  const waiting: { resolve: (r: SscResult) => void; reject: (e: Error) => void }[] = [];
+  const lines = createInterface({ input: child.stdout });
+  lines.on('line', (line) => waiting.shift()?.resolve(JSON.parse(line) as SscResult));
+  child.on('exit', (code) => {
+    for (const w of waiting.splice(0)) w.reject(new Error(`the ssc session ended (exit ${code}) before answering`));
+  });
+  return {
+    run: (args) =>
+      new Promise<SscResult>((resolve, reject) => {
+        waiting.push({ resolve, reject });
+        child.stdin.write(JSON.stringify(args) + '\n');
+      }),
+    close: () => child.stdin.end(),
+  };
 }

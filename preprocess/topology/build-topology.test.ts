@@ -2,11 +2,11 @@
 // TopoJSON) files run through the real CLI, and where it helps through buildTopology itself.
 // Every expected number (counts, repairs, areas, shared boundary lengths) is derived by hand
 // from the fixture drawn in the comment above it.
-import test from 'node:test';
+import test, { after, before } from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, readdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
-import { runSsc } from '../../testing/run-ssc.js';
+import { startSscSession, type SscSession } from '../../testing/run-ssc.js';
 import { tempDir } from '../../testing/temp-dir.js';
 import { resolveCrs } from '../io/crs.js';
 import { InputError } from '../io/errors.js';
@@ -78,9 +78,16 @@ interface Run {
   out: string;
 }
 
-function generalize(c: Case, out: string, ...extra: string[]): Run {
+// One CLI process for the whole file: the same main() per case, without tsx's start-up each time.
+let ssc: SscSession;
+before(() => {
+  ssc = startSscSession();
+});
+after(() => ssc.close());
+
+async function generalize(c: Case, out: string, ...extra: string[]): Promise<Run> {
   const file = path.join(c.dir, out);
-  const r = runSsc(['generalize', c.input, '--style', c.style, '--out', file, '--quiet', ...extra]);
+  const r = await ssc.run(['generalize', c.input, '--style', c.style, '--out', file, '--quiet', ...extra]);
   return { ...r, out: file };
 }
 
@@ -142,7 +149,7 @@ function sortedKeys(o: Record<string, number>): Record<string, number> {
 
 /** Runs the CLI on a valid case and checks what it reports and writes against `exp`. */
 async function expectPartition(c: Case, exp: Expected, ...extra: string[]): Promise<Tgap> {
-  const r = generalize(c, 'out.tgap', ...extra);
+  const r = await generalize(c, 'out.tgap', ...extra);
   assert.equal(r.code, 0, r.stderr);
   assert.deepEqual(countsOf(r.stdout), exp.counts, 'faces, edges, nodes, vertices');
   const t = await readTgap(r.out);
@@ -201,8 +208,8 @@ interface Refusal {
 }
 
 /** Runs the CLI on input that must be refused and checks the message, the exit code and that nothing is written. */
-function expectRefusal(c: Case, exp: Refusal, ...extra: string[]): string {
-  const r = generalize(c, 'out.tgap', ...extra);
+async function expectRefusal(c: Case, exp: Refusal, ...extra: string[]): Promise<string> {
+  const r = await generalize(c, 'out.tgap', ...extra);
   assert.notEqual(r.code, 0, `accepted:\n${r.stdout}`);
   assert.equal(r.stdout, '', 'nothing on stdout');
   const lines = r.stderr.trimEnd().split('\n');
@@ -443,7 +450,7 @@ test('overlapping faces whose sides cross are refused', async (t) => {
   // A (0,0)-(10,10) and B (5,5)-(15,15): the sides cross at (10,5) and (5,10).
   const c = writeCase(t, 'cross.geojson', collection([feature('a', polygon(rect(0, 0, 10, 10))), feature('b', polygon(rect(5, 5, 15, 15)))]));
   const crossing = (x: number, y: number): boolean => isAt(10, 5)(x, y) || isAt(5, 10)(x, y);
-  const msg = expectRefusal(c, { feature: null, message: /crosses feature #\d \(id "[ab]"\) \(self-intersection or overlap\)/, location: crossing });
+  const msg = await expectRefusal(c, { feature: null, message: /crosses feature #\d \(id "[ab]"\) \(self-intersection or overlap\)/, location: crossing });
   assert.match(msg, /feature #0 \(id "a"\)/);
   assert.match(msg, /feature #1 \(id "b"\)/);
   const err = await topologyError(c.input);
@@ -453,7 +460,7 @@ test('overlapping faces whose sides cross are refused', async (t) => {
 test('a face inside another face without a hole for it is refused', async (t) => {
   const inner = rect(10, 10, 20, 20);
   const c = writeCase(t, 'nested.geojson', collection([feature('outer', polygon(rect(0, 0, 30, 30))), feature('inner', polygon(inner))]));
-  expectRefusal(c, {
+  await expectRefusal(c, {
     feature: [1, 'inner'],
     message: /lies inside the area of other features without a hole for it \(overlap\)/,
     location: (x, y) => onBoundary([inner], x, y),
@@ -470,7 +477,7 @@ test('a duplicated polygon is refused', async (t) => {
       feature('b', polygon(b)),
       feature('copy of b', polygon(b)),
     ]));
-    const msg = expectRefusal(c, {
+    const msg = await expectRefusal(c, {
       feature: null,
       message: /overlaps feature #\d \(id "[^"]+"\): both lie on the same side of the segment/,
       location: (x, y) => onBoundary([b], x, y),
@@ -486,7 +493,7 @@ test('a duplicated polygon is refused', async (t) => {
       feature('a', polygon(rect(0, 0, 10, 10))),
       feature('b', { type: 'MultiPolygon', coordinates: [part, part] }),
     ]));
-    expectRefusal(c, {
+    await expectRefusal(c, {
       feature: [1, 'b'],
       message: /has a boundary segment twice in the same direction \(a repeated ring or part\)/,
       location: (x, y) => onBoundary([rect(10, 0, 20, 10)], x, y),
@@ -499,7 +506,7 @@ test('a gap inside the domain is refused, and taken as an enclave with --allow-h
     const hole = rect(10, 10, 20, 20);
     const doc = collection([feature('frame', polygon(rect(0, 0, 30, 30), [...hole].reverse()))]);
     const c = writeCase(t, 'hole.geojson', doc);
-    expectRefusal(c, {
+    await expectRefusal(c, {
       feature: [0, 'frame'],
       message: /borders a gap inside the domain \(an area no feature covers, 100\.0 square units, bounding box 1010, 2010, 1020, 2020\).*--allow-holes/,
       location: (x, y) => onBoundary([hole], x, y),
@@ -534,7 +541,7 @@ test('a gap inside the domain is refused, and taken as an enclave with --allow-h
       feature('C', polygon(rect(0, 10, 10, 20)), 'water'),
       feature('D', polygon(rect(20, 10, 30, 20)), 'water'),
     ]));
-    const msg = expectRefusal(c, {
+    const msg = await expectRefusal(c, {
       feature: null,
       message: /borders a gap inside the domain \(an area no feature covers, 100\.0 square units, bounding box 1010, 2010, 1020, 2020\)/,
       location: (x, y) => onBoundary([gap], x, y),
@@ -560,7 +567,7 @@ test('a self-intersecting ring (bow-tie) is refused', async (t) => {
   // do not cancel out. Feature #0 is a good square elsewhere.
   const bow: XY[] = [[0, 0], [30, 30], [30, 20], [0, 5]];
   const c = writeCase(t, 'bow.geojson', collection([feature('square', polygon(rect(40, 0, 50, 10))), feature('bow', polygon(bow))]));
-  expectRefusal(c, { feature: [1, 'bow'], message: /is self-intersecting: its boundary crosses itself$/, location: isAt(10, 10) });
+  await expectRefusal(c, { feature: [1, 'bow'], message: /is self-intersecting: its boundary crosses itself$/, location: isAt(10, 10) });
 });
 
 test('coordinates that are not finite numbers are refused', async (t) => {
@@ -574,7 +581,7 @@ test('coordinates that are not finite numbers are refused', async (t) => {
     { name: 'null', bad: 'null', pos: 3, axis: 1, shown: '[1010, null]', near: [20, 10] },
   ];
   for (const k of cases) {
-    await t.test(k.name, (t) => {
+    await t.test(k.name, async (t) => {
       const pts: XY[] = [...rect(10, 0, 20, 10), [10, 0] as XY].map(([x, y]) => at(x, y));
       const coords: Json[] = pts.map((p, i) => (i === k.pos ? p.map((v, j) => (j === k.axis ? '@BAD@' : v)) : p));
       const doc = collection([
@@ -582,7 +589,7 @@ test('coordinates that are not finite numbers are refused', async (t) => {
         feature('bad', { type: 'Polygon', coordinates: [coords] }),
       ]);
       const c = writeCase(t, 'coords.geojson', JSON.stringify(doc).replace('"@BAD@"', k.bad));
-      const msg = expectRefusal(c, { feature: [1, 'bad'], message: /has a coordinate that is not a finite number: /, location: isAt(...k.near) });
+      const msg = await expectRefusal(c, { feature: [1, 'bad'], message: /has a coordinate that is not a finite number: /, location: isAt(...k.near) });
       assert.ok(msg.endsWith(`not a finite number: ${k.shown}`), msg);
     });
   }
@@ -596,20 +603,20 @@ test('geometry that is not a polygon is refused', async (t) => {
     { name: 'null geometry', geometry: null, id: null, message: /has no geometry \(polygon expected\)/, location: null },
   ];
   for (const k of cases) {
-    await t.test(k.name, (t) => {
+    await t.test(k.name, async (t) => {
       const c = writeCase(t, 'geom.geojson', collection([feature('ok', polygon(rect(0, 0, 10, 10))), feature(k.id, k.geometry)]));
-      expectRefusal(c, { feature: [1, k.id], message: k.message, location: k.location });
+      await expectRefusal(c, { feature: [1, k.id], message: k.message, location: k.location });
     });
   }
 });
 
-test('a class value the style does not define is refused', (t) => {
+test('a class value the style does not define is refused', async (t) => {
   const c = writeCase(t, 'class.geojson', collection([
     feature('f0', polygon(rect(0, 0, 10, 10))),
     feature('f1', polygon(rect(10, 0, 20, 10)), 'forest'),
   ]));
   // The feature is named, and found on the map by its first point.
-  expectRefusal(c, { feature: [1, 'f1'], message: /has class "forest" \(property "cls"\), which the style style\.json does not define/, location: isAt(10, 0) });
+  await expectRefusal(c, { feature: [1, 'f1'], message: /has class "forest" \(property "cls"\), which the style style\.json does not define/, location: isAt(10, 0) });
 });
 
 // Two cells of 0.001 degrees near Otterlo (lon 5.85, lat 52.05).
@@ -626,10 +633,10 @@ const lonLatDoc = (crs: string | null): Json => ({
   ],
 });
 
-test('longitude/latitude declared as a projected CRS is refused', (t) => {
+test('longitude/latitude declared as a projected CRS is refused', async (t) => {
   const c = writeCase(t, 'degrees.geojson', lonLatDoc('urn:ogc:def:crs:EPSG::28992'));
   // A property of the whole file: the extent is the place, no feature is named.
-  expectRefusal(c, {
+  await expectRefusal(c, {
     feature: null,
     message: /declares EPSG:28992 \(projected, metres\) but its coordinates look like degrees \(5\.8500, 52\.0500, 5\.8520, 52\.0510\)/,
     location: null,
@@ -638,7 +645,7 @@ test('longitude/latitude declared as a projected CRS is refused', (t) => {
 
 test('longitude/latitude without a crs member is projected to its UTM zone', async (t) => {
   const c = writeCase(t, 'lonlat.geojson', lonLatDoc(null));
-  const r = generalize(c, 'out.tgap');
+  const r = await generalize(c, 'out.tgap');
   assert.equal(r.code, 0, r.stderr);
   // Zone: floor((5.85 + 180) / 6) + 1 = 31, north.
   assert.match(r.stdout, /^input: lonlat\.geojson \(EPSG:32631, projected from OGC:CRS84\)$/m);
