@@ -13,7 +13,7 @@ import { Evented } from './events.js';
 import type { AnimationOptions, CameraOptions, DataEvents, FlyToOptions, VarioMapEvents, VarioMapOptions, VarioMapSettings } from './map-options.js';
 import { FeatureEvents, type MapPointerEvent } from './interaction/feature-events.js';
 import { Handlers, type HandlerName } from './interaction/handlers.js';
-import type { InteractionSettings } from './interaction/interaction-context.js';
+import type { InteractionContext, InteractionSettings } from './interaction/interaction-context.js';
 import { Pointers } from './interaction/pointers.js';
 import type { BlendingOptions, BlendMode, BoundaryOptions } from './render/colour-options.js';
 import { lerpCamera, type Camera } from './shared/camera.js';
@@ -80,14 +80,14 @@ export class VarioMap extends Evented<VarioMapEvents> {
     const cc = this.dom.canvasContainer;
     const interactive = options.interactive ?? true;
     const flag = (k: HandlerName): boolean => interactive && (options[k] ?? true);
-    const ctx = {
+    const ctx: InteractionContext = {
       element: cc,
       view: this.view,
       stepZoom: this.stepZoom,
       pointers: new Pointers(),
       settings: () => this.settings,
-      point: (ev: { clientX: number; clientY: number }) => this.dom.localPoint(ev),
-      offset: (p: [number, number]): [number, number] => {
+      point: (ev) => this.dom.localPoint(ev),
+      offset: (p) => {
         const [w, h] = this.dom.cssSize();
         return [p[0] - w / 2, p[1] - h / 2];
       },
@@ -146,7 +146,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
 
   /** Animates linearly in position and geometrically in scale. Resolves true if it completed. */
   easeTo(o: CameraOptions & AnimationOptions): Promise<boolean> {
-    if (!this.view.meta) return this.jumpTo(o).settled;
+    if (this.setBeforeMeta(o)) return Promise.resolve(true);
     const from = this.view.camera;
     const to = this.target(o);
     return this.view.animate((t) => lerpCamera(from, to, t), { durationMs: o.duration ?? 500, easing: o.easing ?? easeInOut });
@@ -157,7 +157,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
    * the chunks along it are fetched ahead of the view. Resolves true if it arrived.
    */
   flyTo(o: FlyToOptions): Promise<boolean> {
-    if (!this.view.meta) return this.jumpTo(o).settled;
+    if (this.setBeforeMeta(o)) return Promise.resolve(true);
     const from = this.view.camera;
     const to = this.target(o);
     const path = flyPath(from, to, this.dom.cssSize()[0], this.view.pixelSizeMm, o.rho ?? DEFAULT_RHO);
@@ -355,9 +355,11 @@ export class VarioMap extends Evented<VarioMapEvents> {
 
   // ---- internals ---------------------------------------------------------------------------------
 
-  /** A resolved promise of true: what an animation before the cube is known (a jump) returns. */
-  private get settled(): Promise<boolean> {
-    return Promise.resolve(true);
+  /** Before the cube is known there is nothing to animate over: the view is just set (true). */
+  private setBeforeMeta(o: CameraOptions): boolean {
+    if (this.view.meta) return false;
+    this.jumpTo(o);
+    return true;
   }
 
   private reducedMotion(): boolean {
