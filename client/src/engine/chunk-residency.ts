@@ -4,11 +4,25 @@
 import { boxMeets, type QueryBox } from '../../../format/index-query.js';
 import { surfaceRange } from '../../../format/slicing-surface.js';
 import type { MapView } from '../camera/map-view.js';
-import type { Renderer } from '../render/renderer.js';
 import type { Camera } from '../shared/camera.js';
 import { growBbox, viewBbox, type Bbox, type ViewGeometry } from '../shared/view.js';
-import type { ChunkSource } from '../source/chunk-source.js';
-import type { AheadView, ChunkPayload, NeededChunks } from '../source/worker-protocol.js';
+import type { AheadView, ChunkPayload, ChunkStatus, NeededChunks, ViewRequest } from '../source/worker-protocol.js';
+
+/** The worker's side (ChunkSource) as residency uses it. */
+export interface ChunkRequests {
+  setView(view: ViewRequest): void;
+  uploaded(file: string): void;
+  evicted(files: string[]): void;
+  status(file: string): ChunkStatus;
+}
+
+/** The GPU's side (Renderer) as residency uses it. */
+export interface GpuChunks {
+  upload(payload: ChunkPayload, frame: number): unknown;
+  /** Frees memory beyond the budget, never a chunk in either set; returns the files freed. */
+  evict(visible: ReadonlySet<string>, kept: ReadonlySet<string>): string[];
+  readonly store: { has(file: string): boolean };
+}
 
 export interface ViewQuery {
   view: ViewGeometry;
@@ -43,8 +57,8 @@ export class ChunkResidency {
   queryMs = 0;
 
   constructor(
-    private readonly source: ChunkSource,
-    private readonly renderer: Renderer,
+    private readonly source: ChunkRequests,
+    private readonly renderer: GpuChunks,
     private readonly uploadBytesPerFrame: number,
     /** A chunk went to the GPU. */
     private readonly uploaded: (file: string) => void,
