@@ -10,7 +10,7 @@ import { after, afterEach, before, describe, test } from 'node:test';
 import type { Browser } from 'playwright-core';
 import type { ChunkLeaf, ExternalNode, InnerNode } from '../format/cube-index.js';
 import { boxMeets } from '../format/index-query.js';
-import { fitBbox, growBbox, viewBbox, type Bbox } from '../client/src/shared/view.js';
+import { fitBbox, growBbox, viewBbox, type Bbox } from '../client/src/geometry/view.js';
 import { openMap, type MapPage } from './helpers/browser.js';
 import { compareIds, cpuSlice, type BuiltCube, type CubeContents } from './helpers/cube.js';
 import { checkAndClose, setUpTestBed, tearDownTestBed } from './helpers/test-bed.js';

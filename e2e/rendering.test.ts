@@ -7,7 +7,7 @@ import { readFile } from 'node:fs/promises';
 import { after, afterEach, before, describe, test } from 'node:test';
 import type { Browser } from 'playwright-core';
 import { scaleAtZ, zAtScale } from '../format/scale.js';
-import { fitBbox, pixelToGround, viewBbox, type Bbox } from '../client/src/shared/view.js';
+import { fitBbox, pixelToGround, viewBbox, type Bbox } from '../client/src/geometry/view.js';
 import { openMap, type MapPage, type OpenOptions } from './helpers/browser.js';
 import { compareIds, cpuSlice, otterlo400, type BuiltCube, type CubeContents } from './helpers/cube.js';
 import { checkAndClose, setUpTestBed, tearDownTestBed } from './helpers/test-bed.js';

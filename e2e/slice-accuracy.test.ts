@@ -8,7 +8,7 @@ import assert from 'node:assert/strict';
 import { after, before, describe, test } from 'node:test';
 import type { Browser } from 'playwright-core';
 import { zAtScale } from '../format/scale.js';
-import { fitBbox, viewBbox } from '../client/src/shared/view.js';
+import { fitBbox, viewBbox } from '../client/src/geometry/view.js';
 import { launchChromium, openMap, type MapPage } from './helpers/browser.js';
 import { buildCube, clientDir, compareIds, cpuSlice, cubeTriangles, nearTriangleEdge, otterlo400, type BuiltCube, type Comparison } from './helpers/cube.js';
 import { readIds, waitIdle } from './helpers/map-page.js';

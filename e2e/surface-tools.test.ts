@@ -8,7 +8,7 @@ import type { Browser } from 'playwright-core';
 import { scaleAtZ, zAtScale } from '../format/scale.js';
 import { formatSurface } from '../format/slicing-surface.js';
 import type { SurfaceSpec } from '../format/slicing-surface.js';
-import { fitBbox, pixelToGround, viewBbox } from '../client/src/shared/view.js';
+import { fitBbox, pixelToGround, viewBbox } from '../client/src/geometry/view.js';
 import { openMap, type MapPage } from './helpers/browser.js';
 import { compareIds, cpuSlice, type BuiltCube, type CubeContents } from './helpers/cube.js';
 import { checkAndClose, setUpTestBed, tearDownTestBed } from './helpers/test-bed.js';

@@ -4,7 +4,7 @@ import type { EngineEvents, EngineOptions } from './engine/map-engine.js';
 import type { MapPointerEvent } from './interaction/feature-events.js';
 import type { HandlerFlags } from './interaction/handlers.js';
 import type { InteractionSettings } from './interaction/interaction-context.js';
-import type { Easing } from './shared/easing.js';
+import type { Easing } from './motion/easing.js';
 
 export interface VarioMapOptions extends Partial<HandlerFlags>, Omit<EngineOptions, 'source' | 'uploadBytesPerFrame'> {
   container: HTMLElement | string;

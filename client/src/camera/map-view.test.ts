@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import type { CubeMeta } from '../../../format/cube-index.js';
 import { scaleAtZ, zAtScale } from '../../../format/scale.js';
-import { fitBbox } from '../shared/view.js';
+import { fitBbox } from '../geometry/view.js';
 import { MapView, type MoveEventType } from './map-view.js';
 
 const meta = {

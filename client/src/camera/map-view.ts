@@ -7,10 +7,10 @@ import type { CubeMeta } from '../../../format/cube-index.js';
 import { PIXEL_SIZE_MM } from '../../../format/pixel-size.js';
 import { zAtScale } from '../../../format/scale.js';
 import type { Surface, SurfaceSpec } from '../../../format/slicing-surface.js';
-import { levelFor } from '../shared/discrete-scales.js';
-import { cameraAround, clampScale, groundAt, zoomAboutPath, type Camera } from '../shared/camera.js';
-import { easeInOut, type Easing } from '../shared/easing.js';
-import { resolutionAtScale, type Bbox, type ViewGeometry } from '../shared/view.js';
+import { levelFor } from '../geometry/discrete-scales.js';
+import { cameraAround, clampScale, groundAt, zoomAboutPath, type Camera } from '../geometry/camera.js';
+import { easeInOut, type Easing } from '../motion/easing.js';
+import { resolutionAtScale, type Bbox, type ViewGeometry } from '../geometry/view.js';
 import { CameraAnimation, type AnimationSpec } from './camera-animation.js';
 
 export type MoveEventType = 'movestart' | 'move' | 'moveend' | 'zoomstart' | 'zoom' | 'zoomend';

@@ -2,7 +2,7 @@
 // by the zoom step factor about a point, eased over the zoom duration with at least a minimum
 // number of frames. A step that comes while the last one still runs adds to its target and
 // continues at the pace it had, so a quick series of clicks is one smooth zoom.
-import { continuingEasing, easeInOut, easingSpeed } from '../shared/easing.js';
+import { continuingEasing, easeInOut, easingSpeed } from '../motion/easing.js';
 import type { MapView } from './map-view.js';
 
 export interface StepOptions {

@@ -4,8 +4,8 @@
 import { boxMeets, type QueryBox } from '../../../format/index-query.js';
 import { surfaceRange } from '../../../format/slicing-surface.js';
 import type { MapView } from '../camera/map-view.js';
-import type { Camera } from '../shared/camera.js';
-import { growBbox, viewBbox, type Bbox, type ViewGeometry } from '../shared/view.js';
+import type { Camera } from '../geometry/camera.js';
+import { growBbox, viewBbox, type Bbox, type ViewGeometry } from '../geometry/view.js';
 import type { AheadView, ChunkPayload, ChunkStatus, NeededChunks, ViewRequest } from '../source/worker-protocol.js';
 
 /** The worker's side (ChunkSource) as residency uses it. */

@@ -1,6 +1,6 @@
 // The canvas the map draws on: made in the container, sized to whole device pixels and measured
 // again when the container or the device pixel ratio changes.
-import type { ViewGeometry } from '../shared/view.js';
+import type { ViewGeometry } from '../geometry/view.js';
 import type { MapView } from '../camera/map-view.js';
 
 export class MapCanvas {

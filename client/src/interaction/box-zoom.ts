@@ -1,5 +1,5 @@
 // Shift-drag a box: on release the map zooms to show it whole. Escape cancels.
-import { lerpCamera } from '../shared/camera.js';
+import { lerpCamera } from '../geometry/camera.js';
 import { InputHandler, type ListenerSpec } from './interaction-context.js';
 
 const MIN_BOX_PX = 3;

@@ -1,9 +1,9 @@
 // Drag to pan (mouse, one finger or a pen), gliding on after the release with MapLibre's
 // inertia. A second finger hands the gesture to the pinch; lifting it hands it back.
-import { inertiaEasing } from '../shared/easing.js';
-import { InertiaBuffer } from '../shared/inertia.js';
-import type { Camera } from '../shared/camera.js';
-import { resolutionAtScale } from '../shared/view.js';
+import { inertiaEasing } from '../motion/easing.js';
+import { InertiaBuffer } from '../motion/inertia.js';
+import type { Camera } from '../geometry/camera.js';
+import { resolutionAtScale } from '../geometry/view.js';
 import { InputHandler, type ListenerSpec } from './interaction-context.js';
 
 /** A mouse must move this far (CSS px) before a press becomes a drag (a click stays a click). */

@@ -1,8 +1,8 @@
 // Keys on the focused map: + and - zoom one step about the centre, the arrows pan about 100 px
 // (shift: three times as far), eased over the pan duration.
-import type { Camera } from '../shared/camera.js';
-import { easeInOut } from '../shared/easing.js';
-import { resolutionAtScale } from '../shared/view.js';
+import type { Camera } from '../geometry/camera.js';
+import { easeInOut } from '../motion/easing.js';
+import { resolutionAtScale } from '../geometry/view.js';
 import { InputHandler, type ListenerSpec } from './interaction-context.js';
 
 export const KEY_PAN_PX = 100;

@@ -1,6 +1,6 @@
 // Wheel zoom about the cursor. A mouse wheel click is one zoom step (eased, many slices); a
 // trackpad's stream of small deltas zooms continuously, as it comes.
-import { CLASSIFY_WAIT_MS, WheelClassifier, wheelDeltaPx, wheelZoomLevels, type WheelInput } from '../shared/wheel.js';
+import { CLASSIFY_WAIT_MS, WheelClassifier, wheelDeltaPx, wheelZoomLevels, type WheelInput } from '../motion/wheel.js';
 import { InputHandler, type ListenerSpec } from './interaction-context.js';
 
 /** A trackpad gesture ends after this long without an event. */

@@ -34,4 +34,4 @@ export { ScaleBar } from '../ui/scale-bar.js';
 export { SettingsPanel, type SurfaceMode } from '../ui/settings-panel.js';
 export { ZoomControl } from '../ui/zoom-control.js';
 export { InteractionLog, type LogEntry } from '../research/interaction-log.js';
-export { scaleAtZoom, zoomAtScale } from '../shared/zoom-levels.js';
+export { scaleAtZoom, zoomAtScale } from '../geometry/zoom-levels.js';

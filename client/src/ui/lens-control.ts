@@ -1,6 +1,6 @@
 // A lens of more detail that follows the pointer: the slicing surface dips (toward the base of
 // the cube) around the ground point under the pointer, and stays under it as the map moves.
-import { resolutionAtScale } from '../shared/view.js';
+import { resolutionAtScale } from '../geometry/view.js';
 import type { VarioMap } from '../vario-map.js';
 import { SurfaceTool } from './surface-tool.js';
 

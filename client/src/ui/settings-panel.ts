@@ -5,7 +5,7 @@
 // Native, labelled form controls, so the panel works from the keyboard and with screen readers.
 import { InteractionLog } from '../research/interaction-log.js';
 import type { SurfaceSpec } from '../../../format/slicing-surface.js';
-import { resolutionAtScale } from '../shared/view.js';
+import { resolutionAtScale } from '../geometry/view.js';
 import type { BlendMode, Control, VarioMap } from '../vario-map.js';
 import { controlButton, controlGroup, field, numberInput, select } from './control-dom.js';
 import { IdwControl } from './idw-control.js';
