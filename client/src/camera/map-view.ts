@@ -78,11 +78,11 @@ export class MapView {
   }
 
   /** The cube is known: z follows its scale table; a view not given yet shows `fit` whole. */
-  setMeta(meta: CubeMeta, fit: (c: Camera) => Camera): void {
+  setMeta(meta: CubeMeta, fit: () => Camera): void {
     this.cube = meta;
     const c = this.current;
     if (!Number.isFinite(c.x) || !Number.isFinite(c.scale)) {
-      const f = fit(c);
+      const f = fit();
       // What the options gave wins over the fitted box.
       this.current = Number.isFinite(c.x) ? { ...f, x: c.x, y: c.y } : Number.isFinite(c.scale) ? { ...f, scale: c.scale } : f;
     }

@@ -52,7 +52,7 @@ export class LensControl extends SurfaceTool {
   };
 
   private readonly onPointer = (ev: PointerEvent): void => {
-    const r = (ev.currentTarget as HTMLElement).getBoundingClientRect();
-    this.moveTo([ev.clientX - r.left, ev.clientY - r.top]);
+    const r = this.map?.getCanvasContainer().getBoundingClientRect();
+    if (r) this.moveTo([ev.clientX - r.left, ev.clientY - r.top]);
   };
 }
