@@ -18,18 +18,22 @@ import { datasets, median, root } from './datasets.js';
 const run = promisify(execFile);
 const WIDTH = 1280, HEIGHT = 720, FRAMES = 60, WARMUP = 5;
 
+/** The test page's map (a VarioMap) and its engine (engineOf(map)), as the page has them. */
 interface PageMap {
   whenIdle(): Promise<{ complete: boolean }>;
-  firstCompleteAt: number | null;
   getCenter(): [number, number];
   jumpTo(v: { center: [number, number] }): void;
+  getMetadata(): unknown;
+}
+interface PageEngine {
+  firstCompleteAt: number | null;
   redraw(): void;
   on(t: 'render', f: (s: { triangles: number; queryMs: number }) => void): void;
   off(t: 'render', f: (s: { triangles: number; queryMs: number }) => void): void;
   neededChunks(): { visible: string[]; margin: string[] };
-  cubeMeta: unknown;
 }
 declare const map: PageMap;
+declare const engine: PageEngine;
 
 function p95(xs: number[]): number {
   const s = [...xs].sort((a, b) => a - b);
@@ -82,11 +86,11 @@ async function main(): Promise<void> {
             const errors: string[] = [];
             page.on('pageerror', (e) => errors.push(e.message));
             await page.goto(`${server.url}index.html?source=cube/&center=${centre.join(',')}&scale=${scale}&supersampling=1`);
-            await page.waitForFunction(() => typeof map !== 'undefined' && map.cubeMeta !== null);
+            await page.waitForFunction(() => typeof map !== 'undefined' && map.getMetadata() !== null);
             await page.evaluate(() => map.whenIdle());
-            const firstMs = await page.evaluate(() => map.firstCompleteAt);
+            const firstMs = await page.evaluate(() => engine.firstCompleteAt);
             const longLoad = await page.evaluate(() => (globalThis as unknown as { longTasks: number[] }).longTasks.splice(0));
-            const needed = await page.evaluate(() => map.neededChunks());
+            const needed = await page.evaluate(() => engine.neededChunks());
             const files = [...needed.visible, ...needed.margin];
             const bytes = files.reduce((s, f) => s + (leafBytes.get(f) ?? 0), 0);
             const samples = await page.evaluate(
@@ -97,15 +101,15 @@ async function main(): Promise<void> {
                   const f = (s: { triangles: number; queryMs: number }): void => {
                     out.push({ t: performance.now(), triangles: s.triangles, queryMs: s.queryMs });
                     if (out.length >= n) {
-                      map.off('render', f);
+                      engine.off('render', f);
                       resolve(out);
                       return;
                     }
                     // A new view every frame (a millimetre pan): a full redraw and an index query.
                     map.jumpTo({ center: [cx + (out.length % 2) * 1e-3, cy] });
                   };
-                  map.on('render', f);
-                  map.redraw();
+                  engine.on('render', f);
+                  engine.redraw();
                 }),
               [FRAMES + WARMUP + 1] as const,
             );
@@ -121,13 +125,13 @@ async function main(): Promise<void> {
               placed.push(await page.evaluate(
                 (at) => new Promise<number>((resolve) => {
                   const f = (st: { triangles: number }): void => {
-                    map.off('render', f);
+                    engine.off('render', f);
                     resolve(st.triangles);
                   };
                   map.jumpTo({ center: at });
                   void map.whenIdle().then(() => {
-                    map.on('render', f);
-                    map.redraw();
+                    engine.on('render', f);
+                    engine.redraw();
                   });
                 }),
                 c,

@@ -1,6 +1,6 @@
 // Builds the browser client into dist/client: index.html (the engine's test page), demo.html
 // (the full-page demo on the public API), their module worker and shaders.
-// dist/client/src/shared holds the Node build of the shared modules (tsc), so the output
+// dist/client/src holds the Node build of the pure modules and tests (tsc), so the output
 // directory is not emptied: only Vite's own assets/ folder is cleared before each build.
 import { rmSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';

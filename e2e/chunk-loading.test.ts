@@ -10,7 +10,7 @@ import { after, afterEach, before, describe, test } from 'node:test';
 import type { Browser } from 'playwright-core';
 import type { ChunkLeaf, ExternalNode, InnerNode } from '../format/cube-index.js';
 import { boxMeets } from '../format/index-query.js';
-import { fitBbox, growBbox, viewBbox, type Bbox } from '../client/src/shared/view.js';
+import { fitBbox, growBbox, viewBbox, type Bbox } from '../client/src/geometry/view.js';
 import { openMap, type MapPage } from './helpers/browser.js';
 import { compareIds, cpuSlice, type BuiltCube, type CubeContents } from './helpers/cube.js';
 import { checkAndClose, setUpTestBed, tearDownTestBed } from './helpers/test-bed.js';
@@ -105,7 +105,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   }
 
   async function goTo(p: MapPage, bbox: Bbox, z: number): Promise<void> {
-    await p.page.evaluate(([b, zz]) => map.fitBounds(b, { z: zz }), [bbox, z] as const);
+    await p.page.evaluate(([b, zz]) => map.fitBounds(b, { sliceZ: zz, duration: 0 }), [bbox, z] as const);
   }
 
   async function assertMatchesSlicer(p: MapPage, bbox: Bbox, z: number, label: string): Promise<void> {
@@ -137,7 +137,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     for (const f of counts.keys()) assert.ok(union.has(f), `${f} was fetched but no view needed it`);
     for (const f of visible) assert.ok(counts.has(f), `${f} was on screen but never fetched`);
     assert.ok(visible.size >= 3 && visible.size < contents.leaves.length / 2, `${visible.size} chunks on screen: a zoomed-in view`);
-    const statuses = await p.page.evaluate(() => [...map.chunkStatuses()]);
+    const statuses = await p.page.evaluate(() => [...engine.chunkStatuses()]);
     const last = needed(views[views.length - 1]!, z).visible;
     for (const l of last) assert.equal(new Map(statuses).get(l.file), 'gpu', `${l.file} is on the GPU`);
     // Sub-index files: exactly those the views reach, each once.
@@ -185,13 +185,13 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     const [west, east] = pickPair((a, b) => only(a, b).size >= 3 && needed(a, z).visible.length >= 3);
     const westOnly = only(west, east);
     const p = await open(west, z);
-    await p.page.waitForFunction(() => [...map.chunkStatuses().values()].filter((s) => s === 'requested').length >= 3);
+    await p.page.waitForFunction(() => [...engine.chunkStatuses().values()].filter((s) => s === 'requested').length >= 3);
     await goTo(p, east, z);
     assert.equal(await waitIdle(p.page), true, 'the new view is complete');
     const west200 = chunkRequests().filter((e) => westOnly.has(fileOf(e)));
     assert.ok(west200.length >= 3, `${west200.length} requests for the west view`);
     for (const e of west200) assert.equal(e.outcome, 'aborted', `${e.path} was ${e.outcome}, not aborted`);
-    const statuses = new Map(await p.page.evaluate(() => [...map.chunkStatuses()]));
+    const statuses = new Map(await p.page.evaluate(() => [...engine.chunkStatuses()]));
     for (const f of westOnly) {
       const s = statuses.get(f);
       assert.ok(s === undefined || s === 'not-requested', `${f}: ${s}`);
@@ -212,9 +212,9 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
       map.on('render', () => (globalThis as unknown as { frames: number }).frames++);
     });
     await goTo(p, b, z);
-    await p.page.waitForFunction((files) => files.some((f) => map.chunkStatuses().get(f) === 'requested'), newOnes.map((l) => l.file));
+    await p.page.waitForFunction((files) => files.some((f) => engine.chunkStatuses().get(f) === 'requested'), newOnes.map((l) => l.file));
     const during = await readIds(p.page);
-    const inFlight = await p.page.evaluate((files) => files.filter((f) => map.chunkStatuses().get(f) === 'requested').length, newOnes.map((l) => l.file));
+    const inFlight = await p.page.evaluate((files) => files.filter((f) => engine.chunkStatuses().get(f) === 'requested').length, newOnes.map((l) => l.file));
     assert.ok(inFlight >= 1, 'still in flight while reading');
     assert.equal(await p.page.evaluate(() => map.loaded()), false);
     // The half of the new view the old chunks cover is drawn already.
@@ -242,10 +242,10 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     await goTo(p, b, z);
     assert.equal(await waitIdle(p.page), true);
     // Margin chunks may still be arriving; wait until all of b's are in.
-    await p.page.waitForFunction((files) => files.every((f) => map.chunkStatuses().get(f) === 'gpu'), nb.all.map((l) => l.file));
-    const stats = await p.page.evaluate(() => map.stats());
+    await p.page.waitForFunction((files) => files.every((f) => engine.chunkStatuses().get(f) === 'gpu'), nb.all.map((l) => l.file));
+    const stats = await p.page.evaluate(() => engine.stats());
     assert.ok(stats.gpuBytes <= budget, `${stats.gpuBytes} bytes on the GPU, budget ${budget}`);
-    const statuses = new Map(await p.page.evaluate(() => [...map.chunkStatuses()]));
+    const statuses = new Map(await p.page.evaluate(() => [...engine.chunkStatuses()]));
     const evicted = aOnly.filter((l) => statuses.get(l.file) === 'evicted');
     assert.ok(evicted.length >= 1, `none of ${aOnly.length} chunks only a needed was evicted: ${aOnly.map((l) => statuses.get(l.file))}`);
     await goTo(p, a, z);
@@ -292,7 +292,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     const errors = await p.page.evaluate(() => (globalThis as unknown as { errors: { kind: string; status?: number; file?: string }[] }).errors);
     assert.deepEqual(errors.map((e) => [e.kind, e.status, e.file]), [['http', 404, missing.file]]);
     assert.equal(countBy(chunkRequests()).get(missing.file), 1, '4xx is not retried');
-    const status = await p.page.evaluate((f) => map.chunkStatuses().get(f), missing.file);
+    const status = await p.page.evaluate((f) => engine.chunkStatuses().get(f), missing.file);
     assert.equal(status, 'failed');
   });
 
@@ -356,7 +356,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     assert.match(byFile.get(badHash.file)!.message, /SHA-256/);
     assert.equal(byFile.get(badMagic.file)?.kind, 'corrupt');
     assert.match(byFile.get(badMagic.file)!.message, /magic/);
-    const statuses = new Map(await p.page.evaluate(() => [...map.chunkStatuses()]));
+    const statuses = new Map(await p.page.evaluate(() => [...engine.chunkStatuses()]));
     assert.equal(statuses.get(badHash.file), 'failed');
     assert.equal(statuses.get(badMagic.file), 'failed');
     const counts = countBy(chunkRequests());

@@ -5,7 +5,7 @@
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import { boxMeets } from '../format/index-query.js';
-import { growBbox } from '../client/src/shared/view.js';
+import { growBbox } from '../client/src/geometry/view.js';
 import { useTestBed } from './helpers/test-bed.js';
 import { camera, openDemo, record, recorded, settle, type VarioWindow } from './helpers/vario-page.js';
 

@@ -245,6 +245,43 @@ describe('interaction (bgt_otterlo_400m)', () => {
     assert.ok(levels.size <= 6 && levels.size >= 3, `${levels.size} distinct slices over 5 doublings of scale`);
   });
 
+  test("the settings panel's lens and control point modes are the LensControl and IdwControl", async () => {
+    const page = await open();
+    const start = await startAt(page, { scaleDenominator: middleScale() });
+    const surface = (): Promise<{ kind: string } & Record<string, unknown>> => page.evaluate(() => (globalThis as unknown as VarioWindow).map.getSlicingSurface());
+    const choose = async (mode: string): Promise<void> => {
+      await page.click('.vario-map-settings-toggle');
+      await page.selectOption('select[id$="-surface"]', mode);
+      await page.keyboard.press('Escape');
+    };
+    const near = (a: number, b: number, what: string): void => assert.ok(Math.abs(a - b) <= 1e-6 * px(start.scale), `${what}: ${a} vs ${b}`);
+    // The lens follows the pointer, with the control's radius (120 CSS px) and depth (200 steps).
+    await choose('lens');
+    await page.mouse.move(300, 400, { steps: 4 });
+    const lens = await surface();
+    assert.equal(lens.kind, 'lens');
+    const [gx, gy] = await groundAt(page, [300, 400]);
+    near(lens.cx as number, gx, 'lens centre x');
+    near(lens.cy as number, gy, 'lens centre y');
+    near(lens.radius as number, 120 * px(start.scale), 'lens radius');
+    assert.equal(lens.depth, 200);
+    // Control points: the lens goes (flat until a point is placed), a click places a point.
+    await choose('idw');
+    assert.equal((await surface()).kind, 'flat', 'the lens is off');
+    await page.mouse.click(250, 380);
+    const idw = await surface();
+    assert.equal(idw.kind, 'idw');
+    const points = idw.points as { x: number; y: number; z: number }[];
+    assert.equal(points.length, 1);
+    const [ix, iy] = await groundAt(page, [250, 380]);
+    near(points[0]!.x, ix, 'point x');
+    near(points[0]!.y, iy, 'point y');
+    assert.equal(await page.locator('.ssc-control-point').count(), 1, 'a marker for the point');
+    await choose('flat');
+    assert.equal((await surface()).kind, 'flat');
+    assert.equal(await page.locator('.ssc-control-point').count(), 0, 'the markers go with the tool');
+  });
+
   test('the interaction log records input and views (JSON, CSV); pointermove names the face under the pointer', async () => {
     const page = await open();
     const start = await startAt(page, { scaleDenominator: 3000 });

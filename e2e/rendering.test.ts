@@ -7,7 +7,7 @@ import { readFile } from 'node:fs/promises';
 import { after, afterEach, before, describe, test } from 'node:test';
 import type { Browser } from 'playwright-core';
 import { scaleAtZ, zAtScale } from '../format/scale.js';
-import { fitBbox, pixelToGround, viewBbox, type Bbox } from '../client/src/shared/view.js';
+import { fitBbox, pixelToGround, viewBbox, type Bbox } from '../client/src/geometry/view.js';
 import { openMap, type MapPage, type OpenOptions } from './helpers/browser.js';
 import { compareIds, cpuSlice, otterlo400, type BuiltCube, type CubeContents } from './helpers/cube.js';
 import { checkAndClose, setUpTestBed, tearDownTestBed } from './helpers/test-bed.js';
@@ -88,7 +88,7 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
     assert.ok(pat && pat.maxScale, 'the style gives vegetated terrain a pattern up to a scale');
     const patternColour = hexColour(pat.color);
     const count = async (scale: number): Promise<{ pattern: number; of: number }> => {
-      const ids = await set(mpOrThrow(), `map.jumpTo({ scaleDenominator: ${scale}, z: null })`);
+      const ids = await set(mpOrThrow(), `map.jumpTo({ scaleDenominator: ${scale}, sliceZ: null })`);
       const img = await screenshot(mpOrThrow().page);
       let pattern = 0, of = 0;
       for (let k = 0; k < W * H; k++) {
@@ -177,7 +177,7 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
     const p = await open({ z: 100 });
     assert.equal(await waitIdle(p.page), true);
     const plain = await screenshot(p.page);
-    const ids = await set(p, `map.setSupersampling(16)`);
+    const ids = await set(p, `engine.setSupersampling(16)`);
     const smooth = await screenshot(p.page);
     const diff = changed(plain, smooth);
     assert.ok(diff.size > 500, `${diff.size} pixels smoothed`);
@@ -253,9 +253,9 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
     const p = await open({ z });
     assert.equal(await waitIdle(p.page), true);
     await p.page.setViewportSize({ width: 500, height: 300 });
-    await p.page.waitForFunction(() => map.getView().width === 500 && map.getView().height === 300);
+    await p.page.waitForFunction(() => engine.getView().width === 500 && engine.getView().height === 300);
     const bbox: Bbox = [ext()[0] + 50, ext()[1] + 80, ext()[0] + 300, ext()[1] + 230];
-    const ids = await set(p, `map.fitBounds([${bbox.join(',')}], { z: ${z} })`);
+    const ids = await set(p, `map.fitBounds([${bbox.join(',')}], { sliceZ: ${z}, duration: 0 })`);
     assert.deepEqual([ids.width, ids.height], [500, 300]);
     const ref = await cpuSlice(cube.dir, { step: z, width: 500, height: 300, bbox });
     assert.ok(compareIds(ids.upper, ref, 500, 300).share >= 0.995);
@@ -267,13 +267,13 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
     const before = await screenshot(p.page);
     const idsBefore = await readIds(p.page);
     await p.page.evaluate(async () => {
-      const ext = (map.canvas.getContext('webgl2') as { getExtension(n: string): { loseContext(): void; restoreContext(): void } }).getExtension('WEBGL_lose_context');
+      const ext = (map.getCanvas().getContext('webgl2') as { getExtension(n: string): { loseContext(): void; restoreContext(): void } }).getExtension('WEBGL_lose_context');
       const lost = map.once('contextlost');
       ext.loseContext();
       await lost;
       (globalThis as unknown as { restore: () => void }).restore = () => ext.restoreContext();
     });
-    assert.equal(await p.page.evaluate(() => map.readIds()), null, 'nothing to read while lost');
+    assert.equal(await p.page.evaluate(() => engine.readIds()), null, 'nothing to read while lost');
     await p.page.evaluate(async () => {
       const restored = map.once('contextrestored');
       (globalThis as unknown as { restore: () => void }).restore();
@@ -311,17 +311,17 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
     await p.page.waitForSelector('.ssc-no-webgl2');
     const text = await p.page.textContent('.ssc-no-webgl2');
     assert.match(text ?? '', /WebGL2/);
-    assert.equal(await p.page.evaluate(() => map.readIds()), null);
+    assert.equal(await p.page.evaluate(() => engine.readIds()), null);
   });
 
   // z and scale agree with the shared definitions (a sanity check of the test's own numbers).
   test('the scale of the default view and its z are consistent', async () => {
     const p = await open({});
     assert.equal(await waitIdle(p.page), true);
-    const [scale, z] = await p.page.evaluate(() => [map.getScale(), map.getZ()]);
+    const [scale, z] = await p.page.evaluate(() => [map.getScaleDenominator(), map.getSliceZ()]);
     assert.ok(Math.abs(z - zAtScale(info(), scale)) < 1e-9);
     assert.ok(Math.abs(scaleAtZ(info(), z) - scale) / scale < 1e-9 || z === 0 || z === info().zMax);
-    const v = await p.page.evaluate(() => map.getView());
+    const v = await p.page.evaluate(() => engine.getView());
     const [gx, gy] = pixelToGround(v, W / 2, H / 2);
     assert.ok(Math.abs(gx - (ext()[0] + ext()[2]) / 2) < 1e-6 && Math.abs(gy - (ext()[1] + ext()[3]) / 2) < 1e-6);
   });

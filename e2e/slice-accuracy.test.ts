@@ -8,7 +8,7 @@ import assert from 'node:assert/strict';
 import { after, before, describe, test } from 'node:test';
 import type { Browser } from 'playwright-core';
 import { zAtScale } from '../format/scale.js';
-import { fitBbox, viewBbox } from '../client/src/shared/view.js';
+import { fitBbox, viewBbox } from '../client/src/geometry/view.js';
 import { launchChromium, openMap, type MapPage } from './helpers/browser.js';
 import { buildCube, clientDir, compareIds, cpuSlice, cubeTriangles, nearTriangleEdge, otterlo400, type BuiltCube, type Comparison } from './helpers/cube.js';
 import { readIds, waitIdle } from './helpers/map-page.js';
@@ -48,7 +48,7 @@ describe('GPU slicing equals the CPU reference slicer (bgt_otterlo_400m)', () =>
     browser = await launchChromium();
     mp = await openMap(browser, server.url, { source: 'cube/' });
     assert.equal(await waitIdle(mp.page), true, 'the first map is complete');
-    const meta = await mp.page.evaluate(() => map.cubeMeta!);
+    const meta = await mp.page.evaluate(() => map.getMetadata()!);
     extent = meta.extent;
     zMax = meta.zMax;
   });
@@ -63,8 +63,8 @@ describe('GPU slicing equals the CPU reference slicer (bgt_otterlo_400m)', () =>
   /** Shows bbox at base z (and surface) on the GPU, slices the same on the CPU, compares. */
   async function check(label: string, bbox: [number, number, number, number], z: number, surface?: string): Promise<void> {
     await mp.page.evaluate(([b, zz, s]) => {
-      map.setSurface(s ?? 'flat');
-      map.fitBounds(b, { z: zz });
+      map.setSlicingSurface(s ?? 'flat');
+      map.fitBounds(b, { sliceZ: zz, duration: 0 });
     }, [bbox, z, surface] as const);
     assert.equal(await waitIdle(mp.page), true, `${label}: the map is complete`);
     const gpu = await readIds(mp.page);
@@ -91,16 +91,16 @@ describe('GPU slicing equals the CPU reference slicer (bgt_otterlo_400m)', () =>
   });
 
   test('a view given by centre and scale denominator matches ssc slice --scale', async () => {
-    const meta = await mp.page.evaluate(() => map.cubeMeta!);
+    const meta = await mp.page.evaluate(() => map.getMetadata()!);
     for (const scale of [1500, 4000]) {
       const cx = (extent[0] + extent[2]) / 2 + 17.3, cy = (extent[1] + extent[3]) / 2 - 9.1;
       await mp.page.evaluate(([c, s]) => {
-        map.setSurface('flat');
-        map.jumpTo({ center: c, scaleDenominator: s, z: null });
+        map.setSlicingSurface('flat');
+        map.jumpTo({ center: c, scaleDenominator: s, sliceZ: null });
       }, [[cx, cy] as [number, number], scale] as const);
       assert.equal(await waitIdle(mp.page), true);
-      const view = await mp.page.evaluate(() => map.getView());
-      const z = await mp.page.evaluate(() => map.getZ());
+      const view = await mp.page.evaluate(() => engine.getView());
+      const z = await mp.page.evaluate(() => map.getSliceZ());
       assert.ok(Math.abs(z - zAtScale(meta, scale)) < 1e-9, 'z follows the scale');
       // 1 CSS pixel is 0.28 mm: ground size of the view at this scale.
       assert.ok(Math.abs(view.resolution - (scale * 0.28) / 1000) < 1e-9);

@@ -8,7 +8,7 @@ import type { Browser } from 'playwright-core';
 import { scaleAtZ, zAtScale } from '../format/scale.js';
 import { formatSurface } from '../format/slicing-surface.js';
 import type { SurfaceSpec } from '../format/slicing-surface.js';
-import { fitBbox, pixelToGround, viewBbox } from '../client/src/shared/view.js';
+import { fitBbox, pixelToGround, viewBbox } from '../client/src/geometry/view.js';
 import { openMap, type MapPage } from './helpers/browser.js';
 import { compareIds, cpuSlice, type BuiltCube, type CubeContents } from './helpers/cube.js';
 import { checkAndClose, setUpTestBed, tearDownTestBed } from './helpers/test-bed.js';
@@ -40,7 +40,7 @@ describe('slicing surface tools (bgt_otterlo_400m)', () => {
   const close = (a: number, b: number, tol: number, what: string): void => assert.ok(Math.abs(a - b) <= tol, `${what}: ${a} vs ${b}`);
 
   async function surface(p: MapPage): Promise<{ base: number; spec: SurfaceSpec }> {
-    return (await p.page.evaluate(() => map.getSurface())) as unknown as { base: number; spec: SurfaceSpec };
+    return (await p.page.evaluate(() => ({ base: map.getSliceZ(), spec: map.getSlicingSurface() }))) as unknown as { base: number; spec: SurfaceSpec };
   }
 
   async function assertMatchesSlicer(p: MapPage, label: string): Promise<void> {
@@ -127,7 +127,7 @@ describe('slicing surface tools (bgt_otterlo_400m)', () => {
     await p.page.mouse.wheel(0, 100);
     await p.page.mouse.wheel(0, 100);
     await p.page.waitForFunction((want) => {
-      const sp = map.getSurface().spec as unknown as { points: { z: number }[] };
+      const sp = map.getSlicingSurface() as unknown as { points: { z: number }[] };
       return Math.abs(sp.points[1]!.z - want) < 1e-6;
     }, zAtScale(meta, scaleAtZ(meta, zAtScale(meta, scaleAtZ(meta, newZ) * Math.SQRT2)) * Math.SQRT2));
     await assertMatchesSlicer(p, 'after the wheel');

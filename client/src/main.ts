@@ -1,27 +1,31 @@
-// The demo page: a SliceMap over the cube named by the URL (?source=dir/), with optional view,
-// surface and tools from URL parameters:
+// The test page (index.html): a VarioMap over the cube named by the URL (?source=dir/), with
+// optional view, surface and tools from URL parameters:
 //   center=x,y  scale=n  bbox=x0,y0,x1,y1  z=steps  surface=kind:key=value,...  tool=lens|idw
 //   supersampling=n  boundaries=1  blending=off|moving|always  budget=bytes  ratio=dpr
 //   retries=n  backoff=ms  concurrency=n (chunk loading)
-// `window.map` (and `window.lens`, `window.idw`) are there for the console and the tests.
-import { SliceMap, type SliceMapOptions } from './slice-map.js';
+// Any scale may be shown (no limits) and no control covers the canvas. `window.map` (and
+// `window.engine`, the map's engine for chunk statuses, frame stats and the ID buffer;
+// `window.lens`, `window.idw`) are there for the console and the tests.
+import { engineOf } from './engine/engine-of.js';
 import { IdwControl } from './ui/idw-control.js';
 import { LensControl } from './ui/lens-control.js';
+import { VarioMap, type VarioMapOptions } from './vario-map.js';
 
 const params = new URLSearchParams(location.search);
 const num = (k: string): number | undefined => {
   const v = params.get(k);
   return v === null || v === '' ? undefined : Number(v);
 };
-const options: SliceMapOptions = { container: 'map', source: params.get('source') ?? 'cube/' };
-const center = params.get('center');
-if (center) options.center = center.split(',').map(Number) as [number, number];
-const bbox = params.get('bbox');
-if (bbox) options.bounds = bbox.split(',').map(Number) as [number, number, number, number];
+const pair = (k: string): number[] | undefined => params.get(k)?.split(',').map(Number);
+const options: VarioMapOptions = { container: 'map', source: params.get('source') ?? 'cube/', minScale: 1e-9, maxScale: Infinity, attributionControl: false };
+const center = pair('center');
+if (center) options.center = [center[0] ?? NaN, center[1] ?? NaN];
+const bbox = pair('bbox');
+if (bbox) options.bounds = [bbox[0] ?? NaN, bbox[1] ?? NaN, bbox[2] ?? NaN, bbox[3] ?? NaN];
 const scale = num('scale');
 if (scale !== undefined) options.scaleDenominator = scale;
 const z = num('z');
-if (z !== undefined) options.z = z;
+if (z !== undefined) options.sliceZ = z;
 const surface = params.get('surface');
 if (surface) options.surface = surface;
 const ss = num('supersampling');
@@ -39,30 +43,23 @@ if (retries !== undefined) options.sourceOptions.retries = retries;
 if (backoff !== undefined) options.sourceOptions.backoffMs = backoff;
 if (concurrency !== undefined) options.sourceOptions.concurrency = concurrency;
 
-const map = new SliceMap(options);
-const info = document.getElementById('info')!;
-map.on('error', (e) => {
-  info.textContent = `${e.kind} error: ${e.message}`;
-});
+const map = new VarioMap(options);
+const info = document.getElementById('info');
+const say = (text: string): void => {
+  if (info) info.textContent = text;
+};
+map.on('error', (e) => say(`${e.kind} error: ${e.message}`));
 
 const tool = params.get('tool');
-const lens = new LensControl(map);
-const idw = new IdwControl(map);
-if (tool === 'lens') lens.enable();
-if (tool === 'idw') idw.enable();
+const lens = new LensControl();
+const idw = new IdwControl();
+if (tool === 'lens') map.addControl(lens.enable());
+if (tool === 'idw') map.addControl(idw.enable());
 if (tool !== 'idw') {
-  map.canvas.addEventListener('click', (ev) => {
-    const rect = map.container.getBoundingClientRect();
-    map.queryFeatures([ev.clientX - rect.left, ev.clientY - rect.top]).then(
-      (fs) => {
-        const f = fs[0];
-        info.textContent = f ? `${f.classLabel} (face ${f.face}, steps ${f.stepLow}-${f.stepHigh})\n${JSON.stringify(f.properties, null, 1)}` : '';
-      },
-      (err: unknown) => {
-        info.textContent = `picking failed: ${(err as Error).message}`;
-      },
-    );
+  map.on('click', (ev) => {
+    const f = ev.feature;
+    say(f ? `${f.classLabel} (face ${f.face}, steps ${f.stepLow}-${f.stepHigh})\n${JSON.stringify(f.properties, null, 1)}` : '');
   });
 }
 
-Object.assign(window, { map, lens, idw });
+Object.assign(window, { map, engine: engineOf(map), lens, idw });

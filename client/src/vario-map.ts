@@ -1,187 +1,60 @@
 // VarioMap: the public, embeddable map (options, events, camera methods, controls), in the
-// manner of MapLibre and Leaflet. SliceMap is its engine (chunks, GPU, frames); the camera,
-// the input handlers and the controls live in their own modules.
-import { CameraController, type MoveEventType } from './camera/camera-controller.js';
+// manner of MapLibre and Leaflet, and the only map class. Its view (camera/map-view.ts) is the
+// one owner of where it looks: the input handlers and these methods change it, and the engine
+// beneath (engine/: canvas, chunks, frame loop, picking; internal) reads it every frame.
+import type { CubeMeta } from '../../format/cube-index.js';
+import { parseSurface, type SurfaceSpec } from '../../format/slicing-surface.js';
+import { MapView, type MoveEventType } from './camera/map-view.js';
 import { StepZoom } from './camera/step-zoom.js';
+import { bindEngine } from './engine/engine-of.js';
+import { MapEngine } from './engine/map-engine.js';
+import type { Feature } from './engine/picking.js';
 import { Evented } from './events.js';
-import { Handlers, type HandlerFlags, type HandlerName } from './interaction/handlers.js';
+import type { AnimationOptions, CameraOptions, DataEvents, FlyToOptions, VarioMapEvents, VarioMapOptions, VarioMapSettings } from './map-options.js';
+import { FeatureEvents, type MapPointerEvent } from './interaction/feature-events.js';
+import { Handlers, type HandlerName } from './interaction/handlers.js';
 import type { InteractionContext, InteractionSettings } from './interaction/interaction-context.js';
 import { Pointers } from './interaction/pointers.js';
-import { lerpCamera, type Camera } from './shared/camera.js';
-import type { CubeMeta } from '../../format/cube-index.js';
-import { discreteLevels, levelFor } from './shared/discrete-scales.js';
-import { easeInOut, type Easing } from './shared/easing.js';
-import { flyPath, DEFAULT_RHO } from './shared/fly-path.js';
-import { zAtScale, type ScaleInfo } from '../../format/scale.js';
-import type { SurfaceSpec } from '../../format/slicing-surface.js';
-import { groundToPixel, resolutionAtScale, scaleAtResolution, viewBbox, type Bbox } from './shared/view.js';
-import { scaleAtZoom, zoomAtScale } from './shared/zoom-levels.js';
-import { SliceMap, type BlendingOptions, type BlendMode, type BoundaryOptions, type Feature, type PrefetchView, type SliceMapEvents, type SliceMapOptions } from './slice-map.js';
+import type { BlendingOptions, BlendMode, BoundaryOptions } from './render/colour-options.js';
+import { lerpCamera, type Camera } from './geometry/camera.js';
+import { discreteLevels } from './geometry/discrete-scales.js';
+import { easeInOut } from './motion/easing.js';
+import { DEFAULT_RHO, flyPath } from './motion/fly-path.js';
+import { resolutionAtScale, scaleAtResolution, viewBbox, type Bbox } from './geometry/view.js';
+import { scaleAtZoom, zoomAtScale } from './geometry/zoom-levels.js';
 import type { SourceErrorInfo } from './source/worker-protocol.js';
 import { AttributionControl } from './ui/attribution-control.js';
+import { MapDom, type Control, type ControlPosition } from './ui/map-dom.js';
 import { UrlHash } from './ui/url-hash.js';
-import { PIXEL_SIZE_MM } from '../../format/pixel-size.js';
 
-export type { Bbox, Feature, BlendingOptions, BlendMode, BoundaryOptions, SurfaceSpec, SourceErrorInfo, Camera, HandlerName, InteractionSettings };
+export type { Bbox, Feature, BlendingOptions, BlendMode, BoundaryOptions, SurfaceSpec, SourceErrorInfo, Camera, HandlerName, InteractionSettings, MapPointerEvent, Control, ControlPosition };
+export type { AnimationOptions, CameraOptions, FlyToOptions, MapMoveEvent, VarioMapEvents, VarioMapOptions, VarioMapSettings } from './map-options.js';
 
-/** Options handed to the engine as they are (docs/CLIENT.md). */
-const ENGINE_OPTIONS = ['center', 'bounds', 'pixelRatio', 'surface', 'blending', 'boundaries', 'supersampling', 'gpuMemoryBudget', 'prefetchMargin', 'sourceOptions'] as const;
-type EngineOptions = Pick<SliceMapOptions, (typeof ENGINE_OPTIONS)[number]>;
-
-export interface VarioMapOptions extends Partial<HandlerFlags>, EngineOptions {
-  container: HTMLElement | string;
-  /** URL of the cube's index.json (or its directory, ending in /). */
-  source: string;
-  /** Scale denominator; or `zoom` (web map levels: 1:559082264 / 2^zoom). Default: the extent fits. */
-  scaleDenominator?: number;
-  zoom?: number;
-  /** Smallest scale denominator (most detail) and largest; defaults: a quarter of the base scale, 4x the extent. */
-  minScale?: number;
-  maxScale?: number;
-  /** false turns every input handler off. */
-  interactive?: boolean;
-  /** Keeps centre and scale in the URL's hash (#x/y/scale). */
-  hash?: boolean;
-  /** Replace animations with jumps; default: the user's prefers-reduced-motion. */
-  reduceMotion?: boolean;
-  /** Factor of the scale per zoom step (default 2). */
-  zoomStep?: number;
-  /** ms of a zoom step's animation (default 300; 0: none). */
-  zoomDuration?: number;
-  /** ms of keyboard pans (default 300; 0: none, and no inertia). */
-  panDuration?: number;
-  /** A zoom step shows at least this many slices, however slow the frames (default 12). */
-  minZoomFrames?: number;
-  /** The comparison mode: content only at a few discrete scales, as a classic multi-scale map. */
-  comparisonMode?: boolean;
-  /** Factor between the comparison mode's scales (default 2). */
-  comparisonFactor?: number;
-  /** The canvas container's accessible name (default "Map"). */
-  ariaLabel?: string;
-  /** Shows the dataset's attribution (default true). */
-  attributionControl?: boolean;
-}
-
-export interface MapMoveEvent {
-  /** The input that caused it, when one did. */
-  originalEvent?: Event;
-}
-
-export interface MapPointerEvent {
-  /** CSS px in the map. */
-  point: [number, number];
-  ground: [number, number];
-  /** The face under the pointer (null: none, or not drawn yet). */
-  feature: Feature | null;
-  originalEvent: MouseEvent;
-}
-
-export interface VarioMapSettings extends InteractionSettings {
-  comparisonMode: boolean;
-}
-
-/** Passed on from the engine as they are. */
-type EngineEvents = Pick<SliceMapEvents, 'load' | 'idle' | 'error' | 'contextlost' | 'contextrestored' | 'dataloading' | 'data' | 'meta'>;
-const ENGINE_EVENTS: (keyof EngineEvents)[] = ['load', 'idle', 'error', 'contextlost', 'contextrestored', 'dataloading', 'data', 'meta'];
-
-export interface VarioMapEvents extends EngineEvents {
-  movestart: MapMoveEvent;
-  move: MapMoveEvent;
-  moveend: MapMoveEvent;
-  zoomstart: MapMoveEvent;
-  zoom: MapMoveEvent;
-  zoomend: MapMoveEvent;
-  click: MapPointerEvent;
-  pointermove: MapPointerEvent;
-  /** Every frame drawn: its slice's base z and scale. */
-  render: { frame: number; z: number; scaleDenominator: number; triangles: number };
-  /** The settings changed (setSettings, setBlending). */
-  settings: VarioMapSettings;
-  remove: Record<string, never>;
-}
-
-export type ControlPosition = 'top-left' | 'top-right' | 'bottom-left' | 'bottom-right';
-
-export interface Control {
-  onAdd(map: VarioMap): HTMLElement;
-  onRemove(map: VarioMap): void;
-}
-
-export interface CameraOptions {
-  center?: [number, number];
-  scaleDenominator?: number;
-  zoom?: number;
-}
-
-export interface AnimationOptions {
-  /** ms; 0 jumps. */
-  duration?: number;
-  easing?: Easing;
-}
-
-export interface FlyToOptions extends CameraOptions {
-  /** Path length per second (default 1.2, as MapLibre); `duration` wins when given. */
-  speed?: number;
-  duration?: number;
-  /** Curvature of the path (default 1.42). */
-  rho?: number;
-  easing?: Easing;
-}
+/** Passed on from the engine as they are ('meta' after the map's own state follows it). */
+const DATA_EVENTS: (keyof DataEvents)[] = ['load', 'idle', 'error', 'contextlost', 'contextrestored', 'dataloading', 'data'];
 
 /** How many views along a flight's path are prefetched. */
 const FLIGHT_SAMPLES = 16;
-const CLICK_TOLERANCE_PX = 3;
 
 export class VarioMap extends Evented<VarioMapEvents> {
-  /** The engine: chunk loading, rendering and the frame loop. */
-  private readonly engine: SliceMap;
   readonly handlers: Handlers | null;
-  private readonly root: HTMLElement;
-  private readonly canvasContainer: HTMLElement;
-  private readonly controlCorners = new Map<ControlPosition, HTMLElement>();
-  private readonly controls = new Map<Control, HTMLElement>();
-  private readonly camera: CameraController;
+  /** Chunk loading, rendering and the frame loop (engineOf() reaches it, for tests). */
+  private readonly engine: MapEngine;
+  private readonly view: MapView;
+  private readonly dom: MapDom;
   private readonly stepZoom: StepZoom;
+  private readonly features: FeatureEvents;
   private settings: VarioMapSettings;
-  private readonly comparisonFactor: number;
   private levels: number[] = [];
-  private scaleInfo: ScaleInfo | null = null;
-  private meta: CubeMeta | null = null;
   private readonly options: VarioMapOptions;
   private readonly motionQuery: MediaQueryList | null;
   private hash: UrlHash | null = null;
-  private pressed: { x: number; y: number } | null = null;
-  private pointerQuery: { busy: boolean; next: PointerEvent | null } = { busy: false, next: null };
   private removed = false;
 
   constructor(options: VarioMapOptions) {
     super();
     this.options = options;
-    const c = typeof options.container === 'string' ? document.getElementById(options.container) : options.container;
-    if (!c) throw new Error(`VarioMap: no container ${JSON.stringify(options.container)}`);
-    this.root = c;
-    c.classList.add('vario-map');
-    if (getComputedStyle(c).position === 'static') c.style.position = 'relative';
-
-    const cc = document.createElement('div');
-    cc.className = 'vario-map-canvas-container';
-    cc.style.cssText = 'position:absolute;inset:0;overflow:hidden;touch-action:none';
-    cc.tabIndex = 0;
-    cc.setAttribute('role', 'region');
-    cc.setAttribute('aria-roledescription', 'map');
-    cc.setAttribute('aria-label', options.ariaLabel ?? 'Map');
-    c.appendChild(cc);
-    this.canvasContainer = cc;
-    const corners = document.createElement('div');
-    corners.className = 'vario-map-control-container';
-    for (const pos of ['top-left', 'top-right', 'bottom-left', 'bottom-right'] as const) {
-      const d = document.createElement('div');
-      d.className = `vario-map-ctrl-${pos}`;
-      corners.appendChild(d);
-      this.controlCorners.set(pos, d);
-    }
-    c.appendChild(corners);
-
+    this.dom = new MapDom(options.container, options.ariaLabel ?? 'Map');
     this.settings = {
       zoomStep: options.zoomStep ?? 2,
       zoomDurationMs: options.zoomDuration ?? 300,
@@ -189,46 +62,46 @@ export class VarioMap extends Evented<VarioMapEvents> {
       minZoomFrames: options.minZoomFrames ?? 12,
       comparisonMode: options.comparisonMode ?? false,
     };
-    this.comparisonFactor = options.comparisonFactor ?? 2;
     this.motionQuery = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
 
-    const scale = options.scaleDenominator ?? (options.zoom !== undefined ? scaleAtZoom(options.zoom) : undefined);
-    const engineOptions: SliceMapOptions = { container: cc, source: options.source };
-    for (const k of ENGINE_OPTIONS) if (options[k] !== undefined) Object.assign(engineOptions, { [k]: options[k] });
-    if (scale !== undefined) engineOptions.scaleDenominator = scale;
-    this.engine = new SliceMap(engineOptions);
-
-    this.camera = new CameraController({
-      show: (cam) => this.show(cam),
+    this.view = new MapView({
       requestFrame: () => this.engine.requestFrame(),
-      pixelSizeMm: () => this.pixelSizeMm(),
       reduceMotion: () => this.reducedMotion(),
-      emit: (type, originalEvent) => this.emitMove(type, originalEvent),
+      emit: (type: MoveEventType, originalEvent) => this.fire(type, originalEvent ? { originalEvent } : {}),
     });
-    this.stepZoom = new StepZoom(this.camera);
-    this.engine.addFrameHook(this.tick);
+    const scale = options.scaleDenominator ?? (options.zoom !== undefined ? scaleAtZoom(options.zoom) : undefined);
+    this.view.place({ ...(options.center ? { x: options.center[0], y: options.center[1] } : {}), ...(scale !== undefined ? { scale } : {}) }, options.sliceZ ?? null);
+    if (options.surface) this.view.setSurface(typeof options.surface === 'string' ? parseSurface(options.surface) : options.surface);
+    this.engine = new MapEngine(this.dom.canvasContainer, this.view, options);
+    bindEngine(this, this.engine);
+    this.stepZoom = new StepZoom(this.view);
     this.forwardEngineEvents();
 
+    const cc = this.dom.canvasContainer;
     const interactive = options.interactive ?? true;
     const flag = (k: HandlerName): boolean => interactive && (options[k] ?? true);
     const ctx: InteractionContext = {
       element: cc,
-      camera: this.camera,
+      view: this.view,
       stepZoom: this.stepZoom,
       pointers: new Pointers(),
       settings: () => this.settings,
-      point: (ev) => this.localPoint(ev),
+      point: (ev) => this.dom.localPoint(ev),
       offset: (p) => {
-        const [w, h] = this.cssSize();
+        const [w, h] = this.dom.cssSize();
         return [p[0] - w / 2, p[1] - h / 2];
       },
-      size: () => this.cssSize(),
-      pixelSizeMm: () => this.pixelSizeMm(),
+      size: () => this.dom.cssSize(),
+      pixelSizeMm: () => this.view.pixelSizeMm,
     };
     this.handlers = interactive ? new Handlers(ctx, { scrollZoom: flag('scrollZoom'), dragPan: flag('dragPan'), keyboard: flag('keyboard'), doubleClickZoom: flag('doubleClickZoom'), touchZoomRotate: flag('touchZoomRotate'), boxZoom: flag('boxZoom') }) : null;
-    cc.addEventListener('pointerdown', this.onPress);
-    cc.addEventListener('click', this.onClick);
-    cc.addEventListener('pointermove', this.onPointerMove);
+    this.features = new FeatureEvents(cc, {
+      listens: (type) => this.listens(type),
+      fire: (type, ev) => this.fire(type, ev),
+      point: (ev) => this.dom.localPoint(ev),
+      unproject: (p) => this.unproject(p),
+      queryFeatures: (p) => this.queryFeatures(p),
+    });
     if (options.hash) this.hash = new UrlHash(this);
     if (options.attributionControl ?? true) this.addControl(new AttributionControl(), 'bottom-right');
   }
@@ -236,12 +109,12 @@ export class VarioMap extends Evented<VarioMapEvents> {
   // ---- the camera -----------------------------------------------------------------------------
 
   getCenter(): [number, number] {
-    const c = this.camera.camera;
+    const c = this.view.camera;
     return [c.x, c.y];
   }
 
   getScaleDenominator(): number {
-    return this.camera.camera.scale;
+    return this.view.camera.scale;
   }
 
   /** The scale as a web map zoom level (see the zoom option). */
@@ -256,25 +129,27 @@ export class VarioMap extends Evented<VarioMapEvents> {
 
   /** The base z (step) of the slice shown. */
   getSliceZ(): number {
-    return this.engine.getZ();
+    return this.view.z();
   }
 
   isMoving(): boolean {
-    return this.camera.isMoving;
+    return this.view.isMoving;
   }
 
+  /** Goes there at once (before the cube is known too, without movement events then). */
   jumpTo(o: CameraOptions): this {
-    if (!this.ready(o)) return this;
-    this.camera.jump(this.target(o));
+    const to = this.target(o);
+    if (this.view.meta) this.view.jump(to);
+    else this.view.place(to);
     return this;
   }
 
   /** Animates linearly in position and geometrically in scale. Resolves true if it completed. */
   easeTo(o: CameraOptions & AnimationOptions): Promise<boolean> {
-    if (!this.ready(o)) return Promise.resolve(true);
-    const from = this.camera.camera;
+    if (this.setBeforeMeta(o)) return Promise.resolve(true);
+    const from = this.view.camera;
     const to = this.target(o);
-    return this.camera.animate((t) => lerpCamera(from, to, t), { durationMs: o.duration ?? 500, easing: o.easing ?? easeInOut });
+    return this.view.animate((t) => lerpCamera(from, to, t), { durationMs: o.duration ?? 500, easing: o.easing ?? easeInOut });
   }
 
   /**
@@ -282,40 +157,39 @@ export class VarioMap extends Evented<VarioMapEvents> {
    * the chunks along it are fetched ahead of the view. Resolves true if it arrived.
    */
   flyTo(o: FlyToOptions): Promise<boolean> {
-    if (!this.ready(o)) return Promise.resolve(true);
-    const from = this.camera.camera;
+    if (this.setBeforeMeta(o)) return Promise.resolve(true);
+    const from = this.view.camera;
     const to = this.target(o);
-    const path = flyPath(from, to, this.cssSize()[0], this.pixelSizeMm(), o.rho ?? DEFAULT_RHO);
+    const path = flyPath(from, to, this.dom.cssSize()[0], this.view.pixelSizeMm, o.rho ?? DEFAULT_RHO);
     const durationMs = o.duration ?? path.durationMs(o.speed ?? 1.2);
     if (durationMs <= 0 || this.reducedMotion()) {
-      this.camera.jump(to);
+      this.view.jump(to);
       return Promise.resolve(true);
     }
     const samples = path.samples(FLIGHT_SAMPLES);
     let passed = -1;
     const ahead = (i: number): void => {
       passed = i;
-      this.engine.prefetch(samples.slice(i + 1).map((c) => this.prefetchView(c)));
+      this.engine.prefetch(samples.slice(i + 1));
     };
     ahead(0);
-    return this.camera
-      .animate(
-        (p) => {
-          const i = Math.floor(p * FLIGHT_SAMPLES);
-          if (i > passed) ahead(i);
-          return path.at(p);
-        },
-        { durationMs, easing: o.easing ?? easeInOut },
-      )
-      .finally(() => this.engine.prefetch([]));
+    const along = (p: number): Camera => {
+      const i = Math.floor(p * FLIGHT_SAMPLES);
+      if (i > passed) ahead(i);
+      return path.at(p);
+    };
+    return this.view.animate(along, { durationMs, easing: o.easing ?? easeInOut }).finally(() => this.engine.prefetch([]));
   }
 
-  /** Shows the box whole (with `padding` CSS px around it), eased over the zoom duration unless told otherwise. */
-  fitBounds(bbox: Bbox, o: AnimationOptions & { padding?: number } = {}): Promise<boolean> {
-    const [w, h] = this.cssSize();
-    const pad = o.padding ?? 0;
-    const res = Math.max((bbox[2] - bbox[0]) / Math.max(1, w - 2 * pad), (bbox[3] - bbox[1]) / Math.max(1, h - 2 * pad));
-    return this.easeTo({ center: [(bbox[0] + bbox[2]) / 2, (bbox[1] + bbox[3]) / 2], scaleDenominator: scaleAtResolution(res, this.pixelSizeMm()), duration: o.duration ?? this.settings.zoomDurationMs, ...(o.easing ? { easing: o.easing } : {}) });
+  /**
+   * Shows the box whole and centred, with `padding` CSS px around it: the box `ssc slice --bbox`
+   * shows on a canvas of this size when there is no padding. Eased over the zoom duration
+   * unless `duration` says otherwise (0: at once). Resolves true if it completed.
+   */
+  fitBounds(bbox: Bbox, o: AnimationOptions & { padding?: number; sliceZ?: number | null } = {}): Promise<boolean> {
+    const c = this.engine.fitCamera(bbox, o.padding ?? 0);
+    const sliceZ = o.sliceZ !== undefined ? { sliceZ: o.sliceZ } : {};
+    return this.easeTo({ center: [c.x, c.y], scaleDenominator: c.scale, ...sliceZ, duration: o.duration ?? this.settings.zoomDurationMs, ...(o.easing ? { easing: o.easing } : {}) });
   }
 
   /** One zoom step (the zoom step factor) in or out about the centre, as the + and - keys. */
@@ -329,24 +203,21 @@ export class VarioMap extends Evented<VarioMapEvents> {
 
   /** Pans by CSS px (the view's content moves the other way), over the pan duration. */
   panBy(offset: [number, number], o: AnimationOptions = {}): Promise<boolean> {
-    const from = this.camera.camera;
-    const res = resolutionAtScale(from.scale, this.pixelSizeMm());
+    const from = this.view.camera;
+    const res = resolutionAtScale(from.scale, this.view.pixelSizeMm);
     const to = { x: from.x + offset[0] * res, y: from.y - offset[1] * res, scale: from.scale };
-    return this.camera.animate((t) => lerpCamera(from, to, t), { durationMs: o.duration ?? this.settings.panDurationMs, easing: o.easing ?? easeInOut });
+    return this.view.animate((t) => lerpCamera(from, to, t), { durationMs: o.duration ?? this.settings.panDurationMs, easing: o.easing ?? easeInOut });
   }
 
   /** Stops a running animation where it is. */
   stop(): this {
-    this.camera.stop();
+    this.view.stop();
     return this;
   }
 
   /** CSS px in the map of a ground point. */
   project(ground: [number, number]): [number, number] {
-    const v = this.engine.getView();
-    const r = v.width / Math.max(1, this.cssSize()[0]);
-    const [px, py] = groundToPixel(v, ground[0], ground[1]);
-    return [px / r, py / r];
+    return this.engine.project(ground);
   }
 
   /** The ground point at CSS px in the map. */
@@ -356,13 +227,16 @@ export class VarioMap extends Evented<VarioMapEvents> {
 
   // ---- content ------------------------------------------------------------------------------------
 
+  /** The slicing surface around the slice's base z ('flat', 'lens', 'tilted', 'sine', 'idw'; or its text form). */
   setSlicingSurface(spec: SurfaceSpec | string): this {
-    this.engine.setSurface(spec);
+    const s = typeof spec === 'string' ? parseSurface(spec) : spec;
+    this.view.setSurface(s);
+    this.fire('surface', s);
     return this;
   }
 
   getSlicingSurface(): SurfaceSpec {
-    return this.engine.getSurface().spec;
+    return this.view.surface().spec;
   }
 
   setBlending(b: Partial<BlendingOptions>): this {
@@ -388,7 +262,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
   setSettings(s: Partial<VarioMapSettings>): this {
     if (s.zoomStep !== undefined && !(s.zoomStep > 1)) throw new Error('zoomStep must be > 1');
     this.settings = { ...this.settings, ...s };
-    if (s.comparisonMode !== undefined && this.meta) this.show(this.camera.camera);
+    if (s.comparisonMode !== undefined) this.view.setLevels(s.comparisonMode ? this.levels : null);
     this.fire('settings', this.getSettings());
     return this;
   }
@@ -400,7 +274,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
 
   /** The dataset's metadata (null until it has loaded). */
   getMetadata(): CubeMeta | null {
-    return this.meta;
+    return this.view.meta;
   }
 
   /** The faces under a CSS px point of the map. */
@@ -422,6 +296,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
     return this.engine.getLoadedUrls();
   }
 
+  /** Every chunk the view shows is drawn. */
   loaded(): boolean {
     return this.engine.loaded();
   }
@@ -434,31 +309,25 @@ export class VarioMap extends Evented<VarioMapEvents> {
   // ---- the page ----------------------------------------------------------------------------------
 
   getContainer(): HTMLElement {
-    return this.root;
+    return this.dom.root;
   }
 
   /** The focusable element around the canvas, where input is handled. */
   getCanvasContainer(): HTMLElement {
-    return this.canvasContainer;
+    return this.dom.canvasContainer;
   }
 
   getCanvas(): HTMLCanvasElement {
-    return this.engine.canvas;
+    return this.engine.canvas.element;
   }
 
   addControl(control: Control, position: ControlPosition = 'top-right'): this {
-    const el = control.onAdd(this);
-    this.controlCorners.get(position)!.appendChild(el);
-    this.controls.set(control, el);
+    this.dom.add(control, control.onAdd(this), position);
     return this;
   }
 
   removeControl(control: Control): this {
-    const el = this.controls.get(control);
-    if (!el) return this;
-    this.controls.delete(control);
-    control.onRemove(this);
-    el.remove();
+    if (this.dom.removeControl(control)) control.onRemove(this);
     return this;
   }
 
@@ -472,59 +341,38 @@ export class VarioMap extends Evented<VarioMapEvents> {
   remove(): void {
     if (this.removed) return;
     this.removed = true;
-    this.camera.stop();
+    this.view.stop();
     this.engine.prefetch([]);
-    for (const control of [...this.controls.keys()]) this.removeControl(control);
+    for (const control of this.dom.controls()) this.removeControl(control);
     this.hash?.remove();
     this.handlers?.destroy();
-    const cc = this.canvasContainer;
-    cc.removeEventListener('pointerdown', this.onPress);
-    cc.removeEventListener('click', this.onClick);
-    cc.removeEventListener('pointermove', this.onPointerMove);
-    this.engine.removeFrameHook(this.tick);
+    this.features.remove();
     this.engine.remove();
-    cc.remove();
-    this.root.querySelector(':scope > .vario-map-control-container')?.remove();
-    this.root.classList.remove('vario-map');
+    this.dom.remove();
     this.fire('remove', {});
     this.removeAllListeners();
   }
 
   // ---- internals ---------------------------------------------------------------------------------
 
-  private readonly tick = (now: number): void => this.camera.tick(now);
+  /** Before the cube is known there is nothing to animate over: the view is just set (true). */
+  private setBeforeMeta(o: CameraOptions): boolean {
+    if (this.view.meta) return false;
+    this.jumpTo(o);
+    return true;
+  }
 
   private reducedMotion(): boolean {
     return this.options.reduceMotion ?? this.motionQuery?.matches ?? false;
   }
 
-  private pixelSizeMm(): number {
-    return this.meta?.pixelSizeMm ?? PIXEL_SIZE_MM;
-  }
-
-  private cssSize(): [number, number] {
-    const r = this.canvasContainer.getBoundingClientRect();
-    return [Math.max(1, r.width), Math.max(1, r.height)];
-  }
-
-  private localPoint(ev: { clientX: number; clientY: number }): [number, number] {
-    const r = this.canvasContainer.getBoundingClientRect();
-    return [ev.clientX - r.left, ev.clientY - r.top];
-  }
-
-  /** Before the cube's metadata the engine takes the view as it is (no camera, no events). */
-  private ready(o: CameraOptions): boolean {
-    if (this.meta) return true;
-    const scale = o.scaleDenominator ?? (o.zoom !== undefined ? scaleAtZoom(o.zoom) : undefined);
-    this.engine.jumpTo({ ...(o.center ? { center: o.center } : {}), ...(scale !== undefined ? { scaleDenominator: scale } : {}) });
-    return false;
-  }
-
+  /** The camera the options ask for (pinning or freeing the slice's z at once). */
   private target(o: CameraOptions): Camera {
-    const c = this.camera.camera;
-    const scale = o.scaleDenominator ?? (o.zoom !== undefined ? scaleAtZoom(o.zoom) : c.scale);
-    if (!(scale > 0)) throw new Error('scaleDenominator must be > 0');
-    return { x: o.center?.[0] ?? c.x, y: o.center?.[1] ?? c.y, scale: this.camera.clamp(scale) };
+    const c = this.view.camera;
+    const scale = o.scaleDenominator ?? (o.zoom !== undefined ? scaleAtZoom(o.zoom) : undefined);
+    if (scale !== undefined && !(scale > 0)) throw new Error('scaleDenominator must be > 0');
+    if (o.sliceZ !== undefined) this.view.pinZ(o.sliceZ);
+    return { x: o.center?.[0] ?? c.x, y: o.center?.[1] ?? c.y, scale: scale ?? c.scale };
   }
 
   private zoomSteps(n: number): Promise<boolean> {
@@ -532,35 +380,15 @@ export class VarioMap extends Evented<VarioMapEvents> {
     return this.stepZoom.by(n * Math.log2(s.zoomStep), [0, 0], { durationMs: s.zoomDurationMs, minFrames: s.minZoomFrames });
   }
 
-  /** The slice's base z for a camera: following the scale, or snapped in the comparison mode. */
-  private sliceZ(scale: number): number | null {
-    if (!this.settings.comparisonMode || !this.scaleInfo || this.levels.length === 0) return null;
-    return zAtScale(this.scaleInfo, levelFor(this.levels, scale));
-  }
-
-  private show(c: Camera): void {
-    this.engine.jumpTo({ center: [c.x, c.y], scaleDenominator: c.scale, z: this.sliceZ(c.scale) });
-  }
-
-  private prefetchView(c: Camera): PrefetchView {
-    return { center: [c.x, c.y], scaleDenominator: c.scale, z: this.sliceZ(c.scale) };
-  }
-
-  private emitMove(type: MoveEventType, originalEvent: Event | undefined): void {
-    this.fire(type, originalEvent ? { originalEvent } : {});
-  }
-
+  /** The cube is known (the view has fitted itself): the scale limits and the comparison scales. */
   private onMeta(meta: CubeMeta): void {
-    this.meta = meta;
-    this.scaleInfo = { baseScale: meta.baseScale, baseFaces: meta.baseFaces, scaleTable: meta.scaleTable, zMax: meta.zMax };
-    const [w, h] = this.cssSize();
+    const [w, h] = this.dom.cssSize();
     const extentScale = scaleAtResolution(Math.max((meta.extent[2] - meta.extent[0]) / w, (meta.extent[3] - meta.extent[1]) / h), meta.pixelSizeMm);
-    this.camera.minScale = this.options.minScale ?? meta.baseScale / 4;
-    this.camera.maxScale = this.options.maxScale ?? extentScale * 4;
-    this.levels = discreteLevels(meta.baseScale, extentScale, this.comparisonFactor);
-    const [x, y] = this.engine.getCenter();
-    this.camera.reset({ x, y, scale: this.engine.getScale() });
-    this.show(this.camera.camera);
+    this.view.minScale = this.options.minScale ?? meta.baseScale / 4;
+    this.view.maxScale = this.options.maxScale ?? extentScale * 4;
+    this.levels = discreteLevels(meta.baseScale, extentScale, this.options.comparisonFactor ?? 2);
+    if (this.settings.comparisonMode) this.view.setLevels(this.levels);
+    this.view.place({ scale: this.view.clamp(this.view.camera.scale) });
     this.fire('meta', meta);
     this.hash?.apply();
   }
@@ -569,54 +397,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
     const e = this.engine;
     // The map's own state follows the metadata before anyone else hears of it.
     e.on('meta', (m) => this.onMeta(m));
-    for (const type of ENGINE_EVENTS) if (type !== 'meta') this.forward(type);
-    e.on('render', (st) => this.fire('render', { frame: st.frame, z: e.getZ(), scaleDenominator: e.getScale(), triangles: st.triangles }));
-  }
-
-  private forward<K extends keyof EngineEvents>(type: K): void {
-    this.engine.on(type, (ev) => this.fire(type, ev as VarioMapEvents[K]));
-  }
-
-  private readonly onPress = (ev: PointerEvent): void => {
-    this.pressed = { x: ev.clientX, y: ev.clientY };
-    if (document.activeElement !== this.canvasContainer) this.canvasContainer.focus({ preventScroll: true });
-  };
-
-  private readonly onClick = (ev: MouseEvent): void => {
-    const p = this.pressed;
-    this.pressed = null;
-    // The end of a drag is not a click.
-    if (p && Math.hypot(ev.clientX - p.x, ev.clientY - p.y) > CLICK_TOLERANCE_PX) return;
-    if (!this.listens('click')) return;
-    const point = this.localPoint(ev);
-    void this.pointerEvent('click', point, ev);
-  };
-
-  private readonly onPointerMove = (ev: PointerEvent): void => {
-    if (!this.listens('pointermove')) return;
-    // One lookup at a time; the latest position waits for it.
-    const q = this.pointerQuery;
-    if (q.busy) {
-      q.next = ev;
-      return;
-    }
-    q.busy = true;
-    void this.pointerEvent('pointermove', this.localPoint(ev), ev).finally(() => {
-      q.busy = false;
-      const next = q.next;
-      q.next = null;
-      if (next && !this.removed) this.onPointerMove(next);
-    });
-  };
-
-  private async pointerEvent(type: 'click' | 'pointermove', point: [number, number], originalEvent: MouseEvent): Promise<void> {
-    const ground = this.unproject(point);
-    let feature: Feature | null = null;
-    try {
-      feature = (await this.queryFeatures(point))[0] ?? null;
-    } catch {
-      // Removed meanwhile, or a failed page of attributes: the event goes without the face.
-    }
-    if (!this.removed) this.fire(type, { point, ground, feature, originalEvent });
+    for (const type of DATA_EVENTS) e.on(type, (ev) => this.fire(type, ev));
+    e.on('render', (st) => this.fire('render', { frame: st.frame, z: this.view.z(), scaleDenominator: this.getScaleDenominator(), triangles: st.triangles }));
   }
 }

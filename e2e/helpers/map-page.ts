@@ -1,44 +1,52 @@
-// Driving the demo page's map (window.map, a SliceMap) from the tests.
+// Driving the test page's map (index.html: window.map, a VarioMap, and window.engine, its
+// engine through the internal engineOf()) from the tests.
 import type { Page } from 'playwright-core';
 
-/** The part of SliceMap the tests use, as seen from the page (structural, no DOM types). */
+export interface PageCubeMeta {
+  zMax: number;
+  extent: [number, number, number, number];
+  baseScale: number;
+  baseFaces: number;
+  scaleTable: [number, number][];
+  pixelSizeMm: number;
+  style: { background: string; classes: { key: string; label: string; color: string; pattern?: { kind: string; color: string; maxScale?: number; minScale?: number } }[] };
+}
+
+/** The part of VarioMap the tests use, as seen from the page (structural, no DOM types). */
 export interface MapApi {
   whenIdle(): Promise<{ complete: boolean }>;
   loaded(): boolean;
-  fitBounds(b: [number, number, number, number], o?: { z?: number | null }): unknown;
-  jumpTo(v: { center?: [number, number]; scaleDenominator?: number; z?: number | null }): unknown;
-  getView(): { centerX: number; centerY: number; resolution: number; width: number; height: number };
-  getZ(): number;
-  getScale(): number;
-  getSurface(): { base: number; spec: { kind: string } & Record<string, unknown> };
-  setSurface(s: string | object): unknown;
+  fitBounds(b: [number, number, number, number], o?: { sliceZ?: number | null; duration?: number; padding?: number }): Promise<boolean>;
+  jumpTo(v: { center?: [number, number]; scaleDenominator?: number; sliceZ?: number | null }): unknown;
+  getCenter(): [number, number];
+  getSliceZ(): number;
+  getScaleDenominator(): number;
+  getSlicingSurface(): { kind: string } & Record<string, unknown>;
+  setSlicingSurface(s: string | object): unknown;
   setBlending(b: object): unknown;
   setBoundaries(b: object): unknown;
+  queryFeatures(p: [number, number]): Promise<unknown[]>;
+  getMetadata(): PageCubeMeta | null;
+  on(type: string, fn: (ev: unknown) => void): unknown;
+  once(type: string): Promise<unknown>;
+  getCanvas(): { getContext(t: string): unknown };
+}
+
+/** The map's engine, as the test page gives it (engineOf(map)): what no public method shows. */
+export interface EngineApi {
+  getView(): { centerX: number; centerY: number; resolution: number; width: number; height: number };
   setSupersampling(n: number): unknown;
   setGpuMemoryBudget(n: number): unknown;
   readIds(): { width: number; height: number; upper: Uint32Array; lower: Uint32Array; classes: Uint32Array; z: Float32Array; slice: Float32Array } | null;
-  queryFeatures(p: [number, number]): Promise<unknown[]>;
   chunkStatuses(): Map<string, string>;
   neededChunks(): { visible: string[]; margin: string[] };
   stats(): { frame: number; triangles: number; chunks: number; queryMs: number; gpuBytes: number };
-  cubeMeta: {
-    zMax: number;
-    extent: [number, number, number, number];
-    baseScale: number;
-    baseFaces: number;
-    scaleTable: [number, number][];
-    pixelSizeMm: number;
-    style: { background: string; classes: { key: string; label: string; color: string; pattern?: { kind: string; color: string; maxScale?: number; minScale?: number } }[] };
-  } | null;
-  on(type: string, fn: (ev: unknown) => void): unknown;
-  once(type: string): Promise<unknown>;
-  canvas: { getContext(t: string): unknown };
 }
 
 
 /** Waits until the map is idle (everything fetched and drawn); returns whether it is complete. */
 export async function waitIdle(page: Page): Promise<boolean> {
-  await page.waitForFunction(() => typeof map !== "undefined" && map.cubeMeta !== null);
+  await page.waitForFunction(() => typeof map !== "undefined" && map.getMetadata() !== null);
   // A map that never settles is a failure to report, not a test that hangs.
   const limitMs = 120_000;
   let timer: NodeJS.Timeout | undefined;
@@ -66,7 +74,7 @@ export interface PageIds {
 /** The map's ID buffer (upper and lower face, surface z and slice z per pixel). */
 export async function readIds(page: Page): Promise<PageIds> {
   const r = await page.evaluate(() => {
-    const ids = map.readIds();
+    const ids = engine.readIds();
     if (!ids) return null;
     const b64 = (a: ArrayBufferView): string => {
       const u8 = new Uint8Array(a.buffer, a.byteOffset, a.byteLength);

@@ -12,6 +12,7 @@ export interface VarioApi {
   getMetadata(): { zMax: number; baseScale: number; pixelSizeMm: number; extent: [number, number, number, number] } | null;
   getSettings(): { zoomStep: number; zoomDurationMs: number; panDurationMs: number; minZoomFrames: number; comparisonMode: boolean };
   setSettings(s: object): unknown;
+  getSlicingSurface(): { kind: string } & Record<string, unknown>;
   isMoving(): boolean;
   jumpTo(o: { center?: [number, number]; scaleDenominator?: number }): unknown;
   easeTo(o: { center?: [number, number]; scaleDenominator?: number; duration?: number }): Promise<boolean>;

@@ -2,8 +2,8 @@
 // takes over from wherever the running one has got to, so nothing jumps. `minFrames` makes a
 // zoom show at least that many content steps even where frames are slow: the animation then
 // takes longer rather than skipping slices (the seed paper's "many small steps per zoom").
-import type { Camera } from '../shared/camera.js';
-import type { Easing } from '../shared/easing.js';
+import type { Camera } from '../geometry/camera.js';
+import type { Easing } from '../motion/easing.js';
 
 export interface AnimationSpec {
   /** Camera at eased progress p in [0, 1]. */

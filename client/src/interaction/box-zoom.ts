@@ -1,5 +1,5 @@
 // Shift-drag a box: on release the map zooms to show it whole. Escape cancels.
-import { lerpCamera } from '../shared/camera.js';
+import { lerpCamera } from '../geometry/camera.js';
 import { InputHandler, type ListenerSpec } from './interaction-context.js';
 
 const MIN_BOX_PX = 3;
@@ -19,7 +19,7 @@ export class BoxZoom extends InputHandler {
   private readonly onDown = (ev: PointerEvent): void => {
     if (ev.pointerType !== 'mouse' || ev.button !== 0 || !ev.shiftKey) return;
     ev.preventDefault();
-    this.ctx.camera.stop(ev);
+    this.ctx.view.stop(ev);
     this.start = { id: ev.pointerId, p: this.ctx.point(ev) };
     try {
       this.ctx.element.setPointerCapture(ev.pointerId);
@@ -49,12 +49,12 @@ export class BoxZoom extends InputHandler {
     const w = Math.abs(p[0] - s.p[0]), h = Math.abs(p[1] - s.p[1]);
     if (w < MIN_BOX_PX || h < MIN_BOX_PX) return;
     const [W, H] = this.ctx.size();
-    const cam = this.ctx.camera;
+    const view = this.ctx.view;
     const centre: [number, number] = [(p[0] + s.p[0]) / 2, (p[1] + s.p[1]) / 2];
-    const target = cam.carry(this.ctx.offset(centre), [0, 0], cam.camera.scale * Math.max(w / W, h / H));
-    const from = cam.camera;
+    const target = view.carry(this.ctx.offset(centre), [0, 0], view.camera.scale * Math.max(w / W, h / H));
+    const from = view.camera;
     const st = this.ctx.settings();
-    void cam.animate((t) => lerpCamera(from, target, t), {
+    void view.animate((t) => lerpCamera(from, target, t), {
       durationMs: st.zoomDurationMs,
       minFrames: st.minZoomFrames,
       originalEvent: ev,

@@ -1,9 +1,9 @@
 // Drag to pan (mouse, one finger or a pen), gliding on after the release with MapLibre's
 // inertia. A second finger hands the gesture to the pinch; lifting it hands it back.
-import { inertiaEasing } from '../shared/easing.js';
-import { InertiaBuffer } from '../shared/inertia.js';
-import type { Camera } from '../shared/camera.js';
-import { resolutionAtScale } from '../shared/view.js';
+import { inertiaEasing } from '../motion/easing.js';
+import { InertiaBuffer } from '../motion/inertia.js';
+import type { Camera } from '../geometry/camera.js';
+import { resolutionAtScale } from '../geometry/view.js';
 import { InputHandler, type ListenerSpec } from './interaction-context.js';
 
 /** A mouse must move this far (CSS px) before a press becomes a drag (a click stays a click). */
@@ -25,7 +25,7 @@ export class DragPan extends InputHandler {
   }
 
   protected override reset(): void {
-    if (this.drag?.moved) this.ctx.camera.end();
+    if (this.drag?.moved) this.ctx.view.end();
     this.drag = null;
     this.inertia.clear();
   }
@@ -43,7 +43,7 @@ export class DragPan extends InputHandler {
       this.inertia.clear();
       return;
     }
-    this.ctx.camera.stop(ev);
+    this.ctx.view.stop(ev);
     this.begin(ev);
   };
 
@@ -72,8 +72,8 @@ export class DragPan extends InputHandler {
     const p = this.ctx.point(ev);
     if (!d.moved && ev.pointerType === 'mouse' && Math.hypot(p[0] - d.start[0], p[1] - d.start[1]) < CLICK_TOLERANCE_PX) return;
     d.moved = true;
-    const cam = this.ctx.camera;
-    cam.set(cam.carry(this.ctx.offset(d.last), this.ctx.offset(p), cam.camera.scale), ev);
+    const view = this.ctx.view;
+    view.set(view.carry(this.ctx.offset(d.last), this.ctx.offset(p), view.camera.scale), ev);
     this.inertia.push({ time: performance.now(), x: p[0], y: p[1] });
     d.last = p;
   };
@@ -85,13 +85,13 @@ export class DragPan extends InputHandler {
     if (!d.moved) return;
     const glide = ev.type === 'pointerup' && this.ctx.settings().panDurationMs > 0 ? this.inertia.release(performance.now()) : null;
     this.inertia.clear();
-    const cam = this.ctx.camera;
+    const view = this.ctx.view;
     if (!glide) {
-      cam.end(ev);
+      view.end(ev);
       return;
     }
-    const from: Camera = cam.camera;
+    const from: Camera = view.camera;
     const res = resolutionAtScale(from.scale, this.ctx.pixelSizeMm());
-    void cam.animate((t) => ({ x: from.x - glide.dx * t * res, y: from.y + glide.dy * t * res, scale: from.scale }), { durationMs: glide.durationMs, easing: inertiaEasing, originalEvent: ev });
+    void view.animate((t) => ({ x: from.x - glide.dx * t * res, y: from.y + glide.dy * t * res, scale: from.scale }), { durationMs: glide.durationMs, easing: inertiaEasing, originalEvent: ev });
   };
 }

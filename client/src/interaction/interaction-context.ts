@@ -1,7 +1,7 @@
-// What the input handlers get from the map: the element they listen on, the camera, the
+// What the input handlers get from the map: the element they listen on, the map's view, the
 // settings of the moment and pixel helpers. Each handler is one kind of input and can be
 // turned on and off on its own (map.handlers.scrollZoom.disable(), ...).
-import type { CameraController } from '../camera/camera-controller.js';
+import type { MapView } from '../camera/map-view.js';
 import type { StepZoom } from '../camera/step-zoom.js';
 import type { Pointers } from './pointers.js';
 
@@ -19,7 +19,7 @@ export interface InteractionSettings {
 export interface InteractionContext {
   /** The focusable element around the canvas; handlers listen on it. */
   readonly element: HTMLElement;
-  readonly camera: CameraController;
+  readonly view: MapView;
   readonly stepZoom: StepZoom;
   readonly pointers: Pointers;
   settings(): InteractionSettings;

@@ -1,8 +1,8 @@
 // Keys on the focused map: + and - zoom one step about the centre, the arrows pan about 100 px
 // (shift: three times as far), eased over the pan duration.
-import type { Camera } from '../shared/camera.js';
-import { easeInOut } from '../shared/easing.js';
-import { resolutionAtScale } from '../shared/view.js';
+import type { Camera } from '../geometry/camera.js';
+import { easeInOut } from '../motion/easing.js';
+import { resolutionAtScale } from '../geometry/view.js';
 import { InputHandler, type ListenerSpec } from './interaction-context.js';
 
 export const KEY_PAN_PX = 100;
@@ -47,10 +47,10 @@ export class Keyboard extends InputHandler {
     ev.preventDefault();
     if (!pan) return;
     // The view moves toward the arrow: the centre goes that many pixels that way.
-    const cam = this.ctx.camera;
-    const from: Camera = cam.camera;
+    const view = this.ctx.view;
+    const from: Camera = view.camera;
     const res = resolutionAtScale(from.scale, this.ctx.pixelSizeMm());
     const [dx, dy] = pan;
-    void cam.animate((t) => ({ x: from.x + dx * t * res, y: from.y - dy * t * res, scale: from.scale }), { durationMs: s.panDurationMs, easing: easeInOut, originalEvent: ev });
+    void view.animate((t) => ({ x: from.x + dx * t * res, y: from.y - dy * t * res, scale: from.scale }), { durationMs: s.panDurationMs, easing: easeInOut, originalEvent: ev });
   };
 }

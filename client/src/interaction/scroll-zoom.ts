@@ -1,6 +1,6 @@
 // Wheel zoom about the cursor. A mouse wheel click is one zoom step (eased, many slices); a
 // trackpad's stream of small deltas zooms continuously, as it comes.
-import { CLASSIFY_WAIT_MS, WheelClassifier, wheelDeltaPx, wheelZoomLevels, type WheelInput } from '../shared/wheel.js';
+import { CLASSIFY_WAIT_MS, WheelClassifier, wheelDeltaPx, wheelZoomLevels, type WheelInput } from '../motion/wheel.js';
 import { InputHandler, type ListenerSpec } from './interaction-context.js';
 
 /** A trackpad gesture ends after this long without an event. */
@@ -35,7 +35,7 @@ export class ScrollZoom extends InputHandler {
       return;
     }
     // Not yet known as wheel or trackpad, but input all the same: a running animation stops now.
-    this.ctx.camera.stop(ev);
+    this.ctx.view.stop(ev);
     this.waiting = setTimeout(() => {
       const first = this.classifier.flush();
       if (first) this.zoom(first, offset, ev);
@@ -45,12 +45,12 @@ export class ScrollZoom extends InputHandler {
   private zoom(input: WheelInput, offset: [number, number], ev: WheelEvent): void {
     const s = this.ctx.settings();
     const levels = wheelZoomLevels(input, s.zoomStep);
-    const cam = this.ctx.camera;
+    const view = this.ctx.view;
     if (input.kind === 'trackpad') {
-      cam.stop(ev);
-      cam.set(cam.around(cam.camera.scale * Math.pow(2, levels), offset), ev);
+      view.stop(ev);
+      view.set(view.around(view.camera.scale * Math.pow(2, levels), offset), ev);
       clearTimeout(this.trackpadEnd);
-      this.trackpadEnd = setTimeout(() => cam.end(), TRACKPAD_END_MS);
+      this.trackpadEnd = setTimeout(() => view.end(), TRACKPAD_END_MS);
       return;
     }
     void this.ctx.stepZoom.by(levels, offset, { durationMs: s.zoomDurationMs, minFrames: s.minZoomFrames, originalEvent: ev });

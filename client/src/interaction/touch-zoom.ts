@@ -30,7 +30,7 @@ export class TouchZoom extends InputHandler {
     if (ev.pointerType !== 'touch') return;
     const m = this.measure();
     if (!m) return;
-    this.ctx.camera.stop(ev);
+    this.ctx.view.stop(ev);
     this.pinch = m;
   };
 
@@ -38,9 +38,9 @@ export class TouchZoom extends InputHandler {
     if (!this.pinch || ev.pointerType !== 'touch') return;
     const m = this.measure();
     if (!m) return;
-    const cam = this.ctx.camera;
-    const scale = (cam.camera.scale * this.pinch.dist) / m.dist;
-    cam.set(cam.carry(this.ctx.offset(this.pinch.mid), this.ctx.offset(m.mid), scale), ev);
+    const view = this.ctx.view;
+    const scale = (view.camera.scale * this.pinch.dist) / m.dist;
+    view.set(view.carry(this.ctx.offset(this.pinch.mid), this.ctx.offset(m.mid), scale), ev);
     this.pinch = m;
   };
 
@@ -56,6 +56,6 @@ export class TouchZoom extends InputHandler {
   private finish(ev?: Event): void {
     if (!this.pinch) return;
     this.pinch = null;
-    this.ctx.camera.end(ev);
+    this.ctx.view.end(ev);
   }
 }

@@ -28,8 +28,10 @@ export type {
 export type { Handler } from '../interaction/interaction-context.js';
 export type { CubeMeta } from '../../../format/cube-index.js';
 export { AttributionControl } from '../ui/attribution-control.js';
+export { IdwControl, type IdwPoint } from '../ui/idw-control.js';
+export { LensControl, type LensOptions } from '../ui/lens-control.js';
 export { ScaleBar } from '../ui/scale-bar.js';
 export { SettingsPanel, type SurfaceMode } from '../ui/settings-panel.js';
 export { ZoomControl } from '../ui/zoom-control.js';
 export { InteractionLog, type LogEntry } from '../research/interaction-log.js';
-export { scaleAtZoom, zoomAtScale } from '../shared/zoom-levels.js';
+export { scaleAtZoom, zoomAtScale } from '../geometry/zoom-levels.js';

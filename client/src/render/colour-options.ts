@@ -1,7 +1,7 @@
 // The look of the map the user chooses (blending, boundaries) turned into the colour pass's
 // parameters for one frame: device pixel sizes, the blend distance while it applies, and the
 // pattern anchored to the ground so that it moves with the map.
-import type { ViewGeometry } from '../shared/view.js';
+import type { ViewGeometry } from '../geometry/view.js';
 import type { ColourParams } from './colour-pass.js';
 import { parseColour } from './style-texture.js';
 

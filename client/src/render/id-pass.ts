@@ -3,7 +3,7 @@
 import { mat4 } from 'gl-matrix';
 import idFrag from '../../shaders/id.frag?raw';
 import idVert from '../../shaders/id.vert?raw';
-import type { ViewGeometry } from '../shared/view.js';
+import type { ViewGeometry } from '../geometry/view.js';
 import type { GpuChunk } from './gpu-chunk.js';
 import { Program } from './program.js';
 import type { Targets } from './targets.js';

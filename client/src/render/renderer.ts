@@ -3,7 +3,7 @@
 // context is given up quietly and rebuilt on restore; the chunks then have to be uploaded again.
 import type { CubeMeta } from '../../../format/cube-index.js';
 import type { Surface } from '../../../format/slicing-surface.js';
-import type { ViewGeometry } from '../shared/view.js';
+import type { ViewGeometry } from '../geometry/view.js';
 import type { ChunkPayload } from '../source/worker-protocol.js';
 import { ChunkStore } from './chunk-store.js';
 import { ColourPass, type ColourParams } from './colour-pass.js';

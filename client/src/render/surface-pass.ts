@@ -2,9 +2,9 @@
 // or, where float targets cannot be rendered to, on the CPU with the shared definitions.
 import fullscreenVert from '../../shaders/fullscreen.vert?raw';
 import surfaceFrag from '../../shaders/surface.frag?raw';
-import { surfaceParams, MAX_IDW_POINTS } from '../shared/surface-params.js';
+import { surfaceParams, MAX_IDW_POINTS } from './surface-params.js';
 import { surfaceZ, type Surface } from '../../../format/slicing-surface.js';
-import type { ViewGeometry } from '../shared/view.js';
+import type { ViewGeometry } from '../geometry/view.js';
 import { Program } from './program.js';
 import type { Targets } from './targets.js';
 

@@ -2,9 +2,9 @@
 // is still gzip, decode and check it, and compare its SHA-256 with the index.
 import type { ChunkLeaf } from '../../../format/cube-index.js';
 import { ChunkFormatError, decodeChunk } from '../../../format/chunk.js';
-import { gunzipIfNeeded } from '../shared/gunzip.js';
-import { sha256Hex } from '../shared/sha256.js';
-import { keepUpwardTriangles } from '../shared/upward-triangles.js';
+import { gunzipIfNeeded } from './gunzip.js';
+import { sha256Hex } from './sha256.js';
+import { keepUpwardTriangles } from './upward-triangles.js';
 import { fetchBytes, type RetryOptions } from './fetch-retry.js';
 import type { ChunkPayload } from './worker-protocol.js';
 

@@ -3,7 +3,7 @@
 import { decodeAttributePage, featureAttributes, type AttributePage } from '../../../format/attribute-page.js';
 import type { PageList } from '../../../format/cube-index.js';
 import { decodeFacePage, faceRecord, type FacePage } from '../../../format/face-page.js';
-import { gunzipIfNeeded } from '../shared/gunzip.js';
+import { gunzipIfNeeded } from './gunzip.js';
 import { fetchBytes, fetchJson, type RetryOptions } from './fetch-retry.js';
 import type { FeatureInfo } from './worker-protocol.js';
 

@@ -1,6 +1,6 @@
 // fetch with retries: server errors (5xx) and network failures are retried with exponential
 // backoff, since they are usually passing; client errors (4xx) are not, they will not change.
-import { gunzipIfNeeded } from '../shared/gunzip.js';
+import { gunzipIfNeeded } from './gunzip.js';
 
 export interface RetryOptions {
   /** Retries after the first attempt. */

@@ -1,9 +1,9 @@
 // Control points of an inverse-distance-weighted slicing surface, placed and dragged by the
 // user: a click on the map places a point (with more detail than the view: a quarter of its
 // scale), dragging moves it, the wheel over it changes its z, a double click removes it.
-import type { SliceMap } from '../slice-map.js';
 import { scaleAtZ, zAtScale } from '../../../format/scale.js';
-import { groundToPixel } from '../shared/view.js';
+import type { VarioMap } from '../vario-map.js';
+import { SurfaceTool } from './surface-tool.js';
 
 export interface IdwPoint {
   x: number;
@@ -13,40 +13,20 @@ export interface IdwPoint {
 
 const CLICK_SLOP_PX = 4;
 
-export class IdwControl {
+export class IdwControl extends SurfaceTool {
   readonly points: IdwPoint[] = [];
   private readonly markers: HTMLElement[] = [];
-  private enabled = false;
   private down: { x: number; y: number; id: number } | null = null;
 
-  constructor(
-    private readonly map: SliceMap,
-    public power = 2,
-  ) {}
-
-  enable(): this {
-    if (this.enabled) return this;
-    this.enabled = true;
-    this.map.canvas.addEventListener('pointerdown', this.onDown);
-    this.map.canvas.addEventListener('pointerup', this.onUp);
-    this.map.on('move', this.place);
-    return this;
-  }
-
-  disable(): this {
-    this.enabled = false;
-    this.map.canvas.removeEventListener('pointerdown', this.onDown);
-    this.map.canvas.removeEventListener('pointerup', this.onUp);
-    this.map.off('move', this.place);
-    return this;
+  constructor(public power = 2) {
+    super('idw', 'Place control points of detail', '\u2022');
   }
 
   /** z given to a new point: the view's base z at a quarter of its scale (more detail). */
   newPointZ(): number {
-    const meta = this.map.cubeMeta;
-    if (!meta) return 0;
-    const info = { baseScale: meta.baseScale, baseFaces: meta.baseFaces, scaleTable: meta.scaleTable, zMax: meta.zMax };
-    return zAtScale(info, scaleAtZ(info, this.map.getZ()) / 4);
+    const meta = this.map?.getMetadata();
+    if (!this.map || !meta) return 0;
+    return zAtScale(meta, scaleAtZ(meta, this.map.getSliceZ()) / 4);
   }
 
   add(point: IdwPoint): void {
@@ -60,38 +40,58 @@ export class IdwControl {
       ev.stopPropagation();
       this.removeAt(this.markers.indexOf(m));
     });
-    this.map.container.appendChild(m);
     this.markers.push(m);
+    if (this.map && this.enabled) this.map.getCanvasContainer().appendChild(m);
     this.update();
   }
 
   removeAt(i: number): void {
     if (i < 0 || i >= this.points.length) return;
     this.points.splice(i, 1);
-    this.markers.splice(i, 1)[0]!.remove();
+    this.markers.splice(i, 1)[0]?.remove();
     this.update();
   }
 
+  protected start(map: VarioMap): void {
+    const cc = map.getCanvasContainer();
+    cc.addEventListener('pointerdown', this.onDown);
+    cc.addEventListener('pointerup', this.onUp);
+    // Markers follow every frame drawn: moves, resizes and surface changes alike.
+    map.on('render', this.place);
+    for (const m of this.markers) cc.appendChild(m);
+    if (this.points.length > 0) this.update();
+  }
+
+  protected stop(map: VarioMap): void {
+    const cc = map.getCanvasContainer();
+    cc.removeEventListener('pointerdown', this.onDown);
+    cc.removeEventListener('pointerup', this.onUp);
+    map.off('render', this.place);
+    for (const m of this.markers) m.remove();
+  }
+
   private update(): void {
-    this.map.setSurface({ kind: 'idw', power: this.power, points: this.points.map((p) => ({ ...p })) });
+    if (!this.map || !this.enabled) return;
+    this.map.setSlicingSurface({ kind: 'idw', power: this.power, points: this.points.map((p) => ({ ...p })) });
     this.place();
   }
 
   private readonly place = (): void => {
-    const view = this.map.getView();
-    const ratio = view.width / Math.max(1, this.map.container.getBoundingClientRect().width);
+    const map = this.map;
+    if (!map) return;
     this.points.forEach((p, i) => {
-      const [px, py] = groundToPixel(view, p.x, p.y);
-      const m = this.markers[i]!;
-      m.style.left = `${px / ratio}px`;
-      m.style.top = `${py / ratio}px`;
+      const m = this.markers[i];
+      if (!m) return;
+      const [x, y] = map.project([p.x, p.y]);
+      m.style.left = `${x}px`;
+      m.style.top = `${y}px`;
       m.title = `z ${p.z.toFixed(1)}`;
     });
   };
 
   private local(ev: MouseEvent): [number, number] {
-    const rect = this.map.container.getBoundingClientRect();
-    return [ev.clientX - rect.left, ev.clientY - rect.top];
+    const r = this.map?.getCanvasContainer().getBoundingClientRect();
+    return r ? [ev.clientX - r.left, ev.clientY - r.top] : [ev.clientX, ev.clientY];
   }
 
   private readonly onDown = (ev: PointerEvent): void => {
@@ -103,7 +103,7 @@ export class IdwControl {
   private readonly onUp = (ev: PointerEvent): void => {
     const d = this.down;
     this.down = null;
-    if (!d || d.id !== ev.pointerId) return;
+    if (!d || d.id !== ev.pointerId || !this.map) return;
     const [x, y] = this.local(ev);
     if (Math.hypot(x - d.x, y - d.y) > CLICK_SLOP_PX) return; // a drag, not a click
     const [gx, gy] = this.map.unproject([x, y]);
@@ -116,11 +116,11 @@ export class IdwControl {
     ev.stopPropagation();
     m.setPointerCapture(ev.pointerId);
     const move = (e: PointerEvent): void => {
-      const i = this.markers.indexOf(m);
-      if (i < 0) return;
-      const [gx, gy] = this.map.unproject(this.local(e));
-      this.points[i]!.x = gx;
-      this.points[i]!.y = gy;
+      // The map's handlers do not see a point's drag.
+      e.stopPropagation();
+      const p = this.points[this.markers.indexOf(m)];
+      if (!p || !this.map) return;
+      [p.x, p.y] = this.map.unproject(this.local(e));
       this.update();
     };
     const up = (e: PointerEvent): void => {
@@ -136,13 +136,11 @@ export class IdwControl {
   private onWheel(ev: WheelEvent, m: HTMLElement): void {
     ev.preventDefault();
     ev.stopPropagation();
-    const i = this.markers.indexOf(m);
-    const meta = this.map.cubeMeta;
-    if (i < 0 || !meta) return;
+    const p = this.points[this.markers.indexOf(m)];
+    const meta = this.map?.getMetadata();
+    if (!p || !meta) return;
     // One wheel click changes the point's scale by a factor sqrt(2): up is more detail.
-    const info = { baseScale: meta.baseScale, baseFaces: meta.baseFaces, scaleTable: meta.scaleTable, zMax: meta.zMax };
-    const factor = Math.SQRT2 ** Math.sign(ev.deltaY);
-    this.points[i]!.z = zAtScale(info, scaleAtZ(info, this.points[i]!.z) * factor);
+    p.z = zAtScale(meta, scaleAtZ(meta, p.z) * Math.SQRT2 ** Math.sign(ev.deltaY));
     this.update();
   }
 }

@@ -1,8 +1,8 @@
 // A lens of more detail that follows the pointer: the slicing surface dips (toward the base of
-// the cube) around the ground point under the pointer.
-import type { SliceMap } from '../slice-map.js';
-import { resolutionAtScale } from '../shared/view.js';
-import { PIXEL_SIZE_MM } from '../../../format/pixel-size.js';
+// the cube) around the ground point under the pointer, and stays under it as the map moves.
+import { resolutionAtScale } from '../geometry/view.js';
+import type { VarioMap } from '../vario-map.js';
+import { SurfaceTool } from './surface-tool.js';
 
 export interface LensOptions {
   /** Radius in CSS pixels (turned into ground units at the scale of the moment). */
@@ -11,37 +11,48 @@ export interface LensOptions {
   depth: number;
 }
 
-export class LensControl {
-  private enabled = false;
+export class LensControl extends SurfaceTool {
+  readonly options: LensOptions;
+  /** CSS px of the pointer in the map (null: not seen yet; the lens sits at the centre). */
+  private pointer: [number, number] | null = null;
 
-  constructor(
-    private readonly map: SliceMap,
-    public options: LensOptions = { radiusPx: 120, depth: 200 },
-  ) {}
-
-  enable(): this {
-    if (this.enabled) return this;
-    this.enabled = true;
-    this.map.canvas.addEventListener('pointermove', this.onMove);
-    return this;
+  constructor(options: Partial<LensOptions> = {}) {
+    super('lens', 'Lens of more detail at the pointer', '\u25ce');
+    this.options = { radiusPx: 120, depth: 200, ...options };
   }
 
-  disable(): this {
-    this.enabled = false;
-    this.map.canvas.removeEventListener('pointermove', this.onMove);
-    return this;
-  }
-
-  /** Puts the lens under a CSS pixel position of the container. */
+  /** Puts the lens under a CSS pixel position of the map. */
   moveTo(point: [number, number]): void {
-    const [cx, cy] = this.map.unproject(point);
-    const pixelSizeMm = this.map.cubeMeta?.pixelSizeMm ?? PIXEL_SIZE_MM;
-    const radius = this.options.radiusPx * resolutionAtScale(this.map.getScale(), pixelSizeMm);
-    this.map.setSurface({ kind: 'lens', cx, cy, radius, depth: this.options.depth });
+    this.pointer = point;
+    const map = this.map;
+    const meta = map?.getMetadata();
+    if (!map || !meta || !this.enabled) return;
+    const [cx, cy] = map.unproject(point);
+    const radius = this.options.radiusPx * resolutionAtScale(map.getScaleDenominator(), meta.pixelSizeMm);
+    map.setSlicingSurface({ kind: 'lens', cx, cy, radius, depth: this.options.depth });
   }
 
-  private readonly onMove = (ev: PointerEvent): void => {
-    const rect = this.map.container.getBoundingClientRect();
-    this.moveTo([ev.clientX - rect.left, ev.clientY - rect.top]);
+  protected start(map: VarioMap): void {
+    map.getCanvasContainer().addEventListener('pointermove', this.onPointer);
+    map.on('move', this.follow);
+    // Shown at once when the pointer has been seen or the map is known; else at the first move.
+    if (this.pointer || map.getMetadata()) this.follow();
+  }
+
+  protected stop(map: VarioMap): void {
+    map.getCanvasContainer().removeEventListener('pointermove', this.onPointer);
+    map.off('move', this.follow);
+  }
+
+  private readonly follow = (): void => {
+    const map = this.map;
+    if (!map) return;
+    const r = map.getCanvasContainer().getBoundingClientRect();
+    this.moveTo(this.pointer ?? [r.width / 2, r.height / 2]);
+  };
+
+  private readonly onPointer = (ev: PointerEvent): void => {
+    const r = this.map?.getCanvasContainer().getBoundingClientRect();
+    if (r) this.moveTo([ev.clientX - r.left, ev.clientY - r.top]);
   };
 }

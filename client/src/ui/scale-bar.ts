@@ -1,6 +1,6 @@
 // The scale: "1:25 000" and a bar of a round ground length.
-import { formatDistance, formatScale, scaleBarLength } from '../shared/scale-bar-length.js';
-import { resolutionAtScale } from '../shared/view.js';
+import { formatDistance, formatScale, scaleBarLength } from '../geometry/scale-bar-length.js';
+import { resolutionAtScale } from '../geometry/view.js';
 import type { Control, VarioMap } from '../vario-map.js';
 
 export class ScaleBar implements Control {

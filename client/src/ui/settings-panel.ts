@@ -1,14 +1,17 @@
 // The seed paper's interaction parameters in a panel, changeable while the map runs: the zoom
 // step factor, the zoom and pan animation durations (0: none), blending and its distance, the
-// slicing surface, the comparison mode (discrete scales), and the interaction log's export.
+// slicing surface (flat, tilted, sine waves, or the lens and control point tools, driven through
+// their controls), the comparison mode (discrete scales), and the interaction log's export.
 // Native, labelled form controls, so the panel works from the keyboard and with screen readers.
 import { InteractionLog } from '../research/interaction-log.js';
 import type { SurfaceSpec } from '../../../format/slicing-surface.js';
-import { resolutionAtScale } from '../shared/view.js';
+import { resolutionAtScale } from '../geometry/view.js';
 import type { BlendMode, Control, VarioMap } from '../vario-map.js';
 import { controlButton, controlGroup, field, numberInput, select } from './control-dom.js';
+import { IdwControl } from './idw-control.js';
+import { LensControl } from './lens-control.js';
 
-export type SurfaceMode = 'flat' | 'lens' | 'tilted' | 'sine';
+export type SurfaceMode = 'flat' | 'lens' | 'idw' | 'tilted' | 'sine';
 
 let panels = 0;
 
@@ -16,14 +19,17 @@ export class SettingsPanel implements Control {
   /** The interaction log the panel records and exports (made on onAdd unless given). */
   log: InteractionLog | null = null;
   private map: VarioMap | null = null;
+  /** The tools the surface modes 'lens' and 'idw' turn on. */
+  readonly lens = new LensControl();
+  readonly idw = new IdwControl();
   private mode: SurfaceMode = 'flat';
-  private pointer: [number, number] | null = null;
-  private readonly cleanup: (() => void)[] = [];
 
   constructor(private readonly options: { log?: InteractionLog | boolean } = {}) {}
 
   onAdd(map: VarioMap): HTMLElement {
     this.map = map;
+    this.lens.attach(map);
+    this.idw.attach(map);
     const log = this.options.log ?? true;
     this.log = log instanceof InteractionLog ? log : log ? new InteractionLog(map) : null;
     const n = ++panels;
@@ -56,7 +62,7 @@ export class SettingsPanel implements Control {
     const panMs = numberInput(0, 5000, 50, s.panDurationMs);
     const blend = select([['off', 'Off'], ['moving', 'While moving'], ['always', 'Always']], b.mode);
     const blendDist = numberInput(0.1, 50, 0.1, b.distance);
-    const surface = select([['flat', 'Flat (one scale)'], ['lens', 'Lens at the pointer'], ['tilted', 'Tilted (detail at the bottom)'], ['sine', 'Sine waves']], this.mode);
+    const surface = select([['flat', 'Flat (one scale)'], ['lens', 'Lens at the pointer'], ['idw', 'Control points (click to place)'], ['tilted', 'Tilted (detail at the bottom)'], ['sine', 'Sine waves']], this.mode);
     const comparison = document.createElement('input');
     comparison.type = 'checkbox';
     comparison.checked = s.comparisonMode;
@@ -101,20 +107,13 @@ export class SettingsPanel implements Control {
     group.append(toggle, panel);
 
     map.on('move', this.onMove);
-    const cc = map.getCanvasContainer();
-    const onPointer = (ev: PointerEvent): void => {
-      const r = cc.getBoundingClientRect();
-      this.pointer = [ev.clientX - r.left, ev.clientY - r.top];
-      if (this.mode === 'lens') this.applySurface();
-    };
-    cc.addEventListener('pointermove', onPointer);
-    this.cleanup.push(() => cc.removeEventListener('pointermove', onPointer));
     return group;
   }
 
   onRemove(map: VarioMap): void {
     map.off('move', this.onMove);
-    for (const f of this.cleanup.splice(0)) f();
+    this.lens.detach();
+    this.idw.detach();
     this.log?.stop();
     this.map = null;
   }
@@ -145,7 +144,7 @@ export class SettingsPanel implements Control {
   }
 
   private readonly onMove = (): void => {
-    if (this.mode === 'tilted' || this.mode === 'lens') this.applySurface();
+    if (this.mode === 'tilted') this.applySurface();
   };
 
   /** The surface for the mode, sized to the view (its ground size and the cube's z range). */
@@ -153,6 +152,13 @@ export class SettingsPanel implements Control {
     const map = this.map;
     const meta = map?.getMetadata();
     if (!map || !meta) return;
+    // The tools own the surface in their modes.
+    if (this.mode !== 'lens') this.lens.disable();
+    if (this.mode !== 'idw') this.idw.disable();
+    if (this.mode === 'lens' || this.mode === 'idw') {
+      this[this.mode].enable();
+      return;
+    }
     const res = resolutionAtScale(map.getScaleDenominator(), meta.pixelSizeMm);
     const [cx, cy] = map.getCenter();
     const rect = map.getCanvasContainer().getBoundingClientRect();
@@ -161,11 +167,6 @@ export class SettingsPanel implements Control {
       case 'flat':
         spec = { kind: 'flat' };
         break;
-      case 'lens': {
-        const [gx, gy] = map.unproject(this.pointer ?? [rect.width / 2, rect.height / 2]);
-        spec = { kind: 'lens', cx: gx, cy: gy, radius: 120 * res, depth: meta.zMax * 0.25 };
-        break;
-      }
       case 'tilted':
         // More detail toward the bottom of the screen, as a landscape seen at an angle.
         spec = { kind: 'tilted', cx, cy, dzdx: 0, dzdy: (meta.zMax * 0.15) / Math.max(1, (rect.height / 2) * res) };

@@ -1,7 +1,7 @@
 // The view in the URL's hash, #x/y/scale (ground coordinates to about a pixel, the scale
 // denominator rounded): a link shows the same place, and back/forward or an edited hash move
 // the map there.
-import { formatHash, parseHash } from '../shared/hash-text.js';
+import { formatHash, parseHash } from './hash-text.js';
 import type { VarioMap } from '../vario-map.js';
 import { PIXEL_SIZE_MM } from '../../../format/pixel-size.js';
 

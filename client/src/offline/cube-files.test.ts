@@ -2,7 +2,7 @@
 // build leaves unused (hand-made indexes and URL lists).
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { isSubIndex, referencedFiles, unusedCubeFiles } from '../src/shared/cube-files.js';
+import { isSubIndex, referencedFiles, unusedCubeFiles } from './cube-files.js';
 
 describe('cube files named by an index', () => {
   test('chunks, pages and sub-indexes are found, nothing else', () => {

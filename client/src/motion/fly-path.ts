@@ -2,8 +2,8 @@
 // in), from d3-interpolate's interpolateZoom. The whole path is known before the flight starts,
 // so the chunks along it can be fetched ahead of the view.
 import { interpolateZoom } from 'd3-interpolate';
-import type { Camera } from './camera.js';
-import { resolutionAtScale, scaleAtResolution } from './view.js';
+import type { Camera } from '../geometry/camera.js';
+import { resolutionAtScale, scaleAtResolution } from '../geometry/view.js';
 
 export const DEFAULT_RHO = 1.42;
 

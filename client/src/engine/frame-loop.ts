@@ -1,0 +1,186 @@
+// The frame loop: at most one frame per animation frame, and only when something asked for one.
+// A frame advances the view's animation, reads the view, sends it to the worker, uploads the
+// chunks that came, draws (accumulating jittered frames while the view is still) and reports
+// the first complete map ('load') and the moment nothing more is to come ('idle').
+import { boxMeets } from '../../../format/index-query.js';
+import type { MapView } from '../camera/map-view.js';
+import { colourParams, type BlendingOptions, type BoundaryOptions } from '../render/colour-options.js';
+import type { GpuChunk } from '../render/gpu-chunk.js';
+import type { Renderer } from '../render/renderer.js';
+import { jitter, weight } from '../render/supersampling.js';
+import { queryView, type ChunkResidency } from './chunk-residency.js';
+import type { MapCanvas } from './map-canvas.js';
+
+/** Blending in the 'moving' mode stays on this long after the slice last moved (ms). */
+const MOVING_MS = 300;
+
+export interface RenderSettings {
+  blending: BlendingOptions;
+  boundaries: BoundaryOptions;
+  /** Frames accumulated (jittered) while the view is still; 1: off. */
+  supersampling: number;
+  /** Chunks are also fetched this fraction of the view's size around it. */
+  prefetchMargin: number;
+}
+
+export interface RenderStats {
+  frame: number;
+  triangles: number;
+  chunks: number;
+  /** Last index query in the worker. */
+  queryMs: number;
+  gpuBytes: number;
+  jittered: boolean;
+}
+
+/** What the loop reports. */
+export interface FrameSink {
+  render(stats: RenderStats): void;
+  load(): void;
+  idle(complete: boolean): void;
+}
+
+export class FrameLoop {
+  /** performance.now() (ms since the page's navigation) of the first complete map, or null. */
+  firstCompleteAt: number | null = null;
+  private raf = 0;
+  private frameNo = 0;
+  private accumulated = 0;
+  /** Bumped on every change of the view: the worker's answers and loaded() name the view they are for. */
+  private viewSeq = 0;
+  private lastSliceMove = -Infinity;
+  private blendingWasOn = false;
+  private idleFired = false;
+  private stopped = false;
+  private lastStats: RenderStats = { frame: 0, triangles: 0, chunks: 0, queryMs: 0, gpuBytes: 0, jittered: false };
+
+  constructor(
+    private readonly view: MapView,
+    private readonly canvas: MapCanvas,
+    private readonly renderer: Renderer,
+    private readonly residency: ChunkResidency,
+    private readonly settings: RenderSettings,
+    private readonly sink: FrameSink,
+  ) {}
+
+  /** The view changed: a new view for the worker, and the image starts again. */
+  viewChanged(sliceMoved: boolean): void {
+    this.viewSeq++;
+    if (sliceMoved) this.lastSliceMove = performance.now();
+    this.redraw();
+  }
+
+  /** Draws again from the first frame (a setting changed). */
+  redraw(): void {
+    this.accumulated = 0;
+    this.idleFired = false;
+    this.schedule();
+  }
+
+  /** The GPU lost its chunks (a lost context): the map is not idle until they are back. */
+  lost(): void {
+    this.idleFired = false;
+  }
+
+  schedule(): void {
+    if (this.raf || this.stopped) return;
+    this.raf = requestAnimationFrame(() => {
+      this.raf = 0;
+      this.frame();
+    });
+  }
+
+  /** Draws the frame that is due now, so that what is read back is the current view. */
+  renderNowIfDirty(): void {
+    if (!this.raf) return;
+    cancelAnimationFrame(this.raf);
+    this.raf = 0;
+    this.frame();
+  }
+
+  loaded(): boolean {
+    return this.residency.loaded(this.viewSeq);
+  }
+
+  /** Resolves at the next idle, or now when the map is idle. */
+  whenIdle(once: () => Promise<{ complete: boolean }>): Promise<{ complete: boolean }> {
+    if (!this.idleFired) return once();
+    if (!this.raf) return Promise.resolve({ complete: this.loaded() });
+    // Settled, with one more frame due (a late answer, a failed chunk): 'idle' is not fired
+    // again for the same view, so look again after that frame (rAF callbacks run in order).
+    return new Promise((resolve) => requestAnimationFrame(() => resolve(this.whenIdle(once))));
+  }
+
+  stats(): RenderStats {
+    return { ...this.lastStats, queryMs: this.residency.queryMs };
+  }
+
+  stop(): void {
+    this.stopped = true;
+    if (this.raf) cancelAnimationFrame(this.raf);
+    this.raf = 0;
+  }
+
+  private frame(): void {
+    const r = this.renderer;
+    const meta = this.view.meta;
+    if (!meta || this.stopped) return;
+    const now = performance.now();
+    this.view.tick(now);
+    const margin = this.settings.prefetchMargin;
+    const q = queryView(this.view, this.canvas.geometry(this.view), margin);
+    this.residency.request(this.viewSeq, q, (c) => queryView(this.view, this.canvas.geometry(this.view, c), margin, this.view.zAt(c.scale)));
+    if (r.lost) return; // contextrestored schedules the next frame
+    this.frameNo++;
+    // Draw the chunks on the GPU that meet the view (whatever the worker says is needed: until
+    // its answer comes, the map keeps drawing what it has). Only a chunk among those changes
+    // the picture; one for the margin or a flight ahead leaves a finished image as it is.
+    const drawn = { ground: q.visible, zMin: q.zMin, zMax: q.zMax };
+    if (this.residency.upload(this.frameNo, this.viewSeq, drawn)) this.accumulated = 0;
+    this.residency.evict();
+    const chunks: GpuChunk[] = [];
+    for (const c of r.store.values()) {
+      if (!boxMeets(c.bbox, drawn)) continue;
+      c.lastUsed = this.frameNo;
+      chunks.push(c);
+    }
+    // The depth test keeps the first of two equal depths: drawn in a fixed order (not the order
+    // they arrived in), the same chunks give the same picture after a reload or a lost context.
+    chunks.sort((a, b) => (a.file < b.file ? -1 : a.file > b.file ? 1 : 0));
+    const { blending, boundaries, supersampling } = this.settings;
+    const blendOn = blending.mode === 'always' || (blending.mode === 'moving' && now - this.lastSliceMove < MOVING_MS);
+    if (blendOn !== this.blendingWasOn) this.accumulated = 0;
+    this.blendingWasOn = blendOn;
+    // Once the accumulation is complete the finished image stays on screen: a frame asked for
+    // without a change (a late answer, a failed or dropped chunk) draws nothing, since one more
+    // jittered frame averaged in would blur its edges. Every change resets `accumulated`.
+    if (this.accumulated < supersampling) {
+      const n = this.accumulated;
+      const colour = colourParams({ view: q.view, ratio: this.canvas.deviceRatio(), background: meta.style.background, boundaries, blendDistance: blendOn ? blending.distance : 0, weight: weight(n) });
+      const triangles = r.render({ view: q.view, surface: this.view.surface(), zMax: meta.zMax, jitter: jitter(n), colour }, chunks);
+      this.accumulated = n + 1;
+      this.lastStats = { frame: this.frameNo, triangles, chunks: chunks.length, queryMs: this.residency.queryMs, gpuBytes: r.store.bytes, jittered: n > 0 };
+      this.sink.render(this.stats());
+    }
+    this.settle(blendOn && blending.mode === 'moving');
+  }
+
+  /** After a frame: the next one, or 'load' and 'idle' when nothing more is to come. */
+  private settle(blendingToEnd: boolean): void {
+    const complete = this.loaded();
+    if (complete && this.firstCompleteAt === null) {
+      this.firstCompleteAt = performance.now();
+      this.sink.load();
+    }
+    // While the slice moves, blending is on for a moment: keep drawing until it ends, and only
+    // then accumulate.
+    const accumulating = complete && this.accumulated < this.settings.supersampling && !blendingToEnd;
+    if (this.residency.hasPending || accumulating || blendingToEnd) {
+      this.schedule();
+    } else if (!this.idleFired && this.residency.settled(this.viewSeq)) {
+      // Settled: everything is drawn, or what is missing will not come (failed chunks).
+      this.idleFired = true;
+      this.sink.idle(complete);
+    }
+  }
+}

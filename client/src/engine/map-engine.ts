@@ -1,0 +1,270 @@
+// The engine beneath VarioMap (internal, not exported from the library): the chunk source
+// (worker), the renderer (WebGL2), the canvas, which chunks stay on the GPU, and the frame loop
+// that reads the map's view and draws it. Its events are VarioMap's data and render events.
+import type { CubeMeta } from '../../../format/cube-index.js';
+import type { MapView } from '../camera/map-view.js';
+import { Evented } from '../events.js';
+import type { BlendingOptions, BoundaryOptions } from '../render/colour-options.js';
+import { Renderer, type IdBuffer } from '../render/renderer.js';
+import type { Camera } from '../geometry/camera.js';
+import { groundToPixel, pixelToGround, type Bbox, type ViewGeometry } from '../geometry/view.js';
+import { ChunkSource } from '../source/chunk-source.js';
+import type { ChunkStatus, SourceErrorInfo, SourceOptions } from '../source/worker-protocol.js';
+import { showWebGl2Missing } from '../ui/webgl-missing.js';
+import { ChunkResidency } from './chunk-residency.js';
+import { FrameLoop, type RenderSettings, type RenderStats } from './frame-loop.js';
+import { MapCanvas } from './map-canvas.js';
+import { featuresAt, type Feature } from './picking.js';
+
+export interface EngineOptions {
+  /** URL of the cube directory (ending in /) or of its index.json. */
+  source: string;
+  /** Instead of the whole extent: the ground box the first view shows whole. */
+  bounds?: Bbox;
+  blending?: Partial<BlendingOptions>;
+  boundaries?: Partial<BoundaryOptions>;
+  /** Frames accumulated (jittered) while the view is still; 1: off. */
+  supersampling?: number;
+  /** GPU memory for chunks, bytes. */
+  gpuMemoryBudget?: number;
+  /** Chunks are also fetched this fraction of the view's size around it. */
+  prefetchMargin?: number;
+  /** Per frame, at most this many bytes of chunks go to the GPU (the rest wait a frame). */
+  uploadBytesPerFrame?: number;
+  sourceOptions?: Partial<SourceOptions>;
+  /** Overrides window.devicePixelRatio. */
+  pixelRatio?: number;
+}
+
+export interface EngineEvents {
+  /** The first complete map. */
+  load: { timeMs: number };
+  /** Nothing more to fetch, draw or accumulate. `complete`: every chunk on screen is drawn. */
+  idle: { complete: boolean };
+  render: RenderStats;
+  error: SourceErrorInfo;
+  meta: CubeMeta;
+  contextlost: Record<string, never>;
+  contextrestored: Record<string, never>;
+  /** A chunk request went out (`file`), and a chunk went to the GPU. */
+  dataloading: { file: string };
+  data: { file: string };
+}
+
+const DEFAULT_BUDGET = 256 * 1024 * 1024;
+
+export class MapEngine extends Evented<EngineEvents> {
+  readonly canvas: MapCanvas;
+  private readonly source: ChunkSource;
+  private readonly renderer: Renderer | null;
+  private readonly residency: ChunkResidency | null = null;
+  private readonly loop: FrameLoop | null = null;
+  private readonly settings: RenderSettings;
+  private readonly startTime = performance.now();
+
+  constructor(
+    container: HTMLElement,
+    private readonly view: MapView,
+    options: EngineOptions,
+  ) {
+    super();
+    this.canvas = new MapCanvas(container, options.pixelRatio, () => this.loop?.viewChanged(false));
+    this.settings = {
+      blending: { mode: 'moving', distance: 0.5, ...options.blending },
+      boundaries: { enabled: false, width: 1, color: '#000000', opacity: 0.35, ...options.boundaries },
+      supersampling: Math.max(1, Math.floor(options.supersampling ?? 16)),
+      prefetchMargin: options.prefetchMargin ?? 0.25,
+    };
+    this.renderer = Renderer.create(this.canvas.element, options.gpuMemoryBudget ?? DEFAULT_BUDGET, (files) => this.contextLost(files), () => this.contextRestored());
+    this.source = new ChunkSource(options.source, options.sourceOptions);
+    if (this.renderer) {
+      const residency = new ChunkResidency(this.source, this.renderer, options.uploadBytesPerFrame ?? 16 * 1024 * 1024, (file) => this.fire('data', { file }));
+      this.residency = residency;
+      this.loop = new FrameLoop(view, this.canvas, this.renderer, residency, this.settings, {
+        render: (stats) => this.fire('render', stats),
+        load: () => this.fire('load', { timeMs: performance.now() - this.startTime }),
+        idle: (complete) => this.fire('idle', { complete }),
+      });
+      view.onChange((sliceMoved) => this.loop?.viewChanged(sliceMoved));
+    } else {
+      showWebGl2Missing(container);
+    }
+    const bounds = options.bounds;
+    this.source.on('meta', (meta) => {
+      const g = this.canvas.deviceSize();
+      view.setMeta(meta, () => view.fitCamera(bounds ?? meta.extent, g.width, g.height, this.canvas.deviceRatio()));
+      this.renderer?.setMeta(meta);
+      this.fire('meta', meta);
+    });
+    this.source.on('needed', (n) => {
+      this.residency?.answer(n);
+      this.loop?.schedule();
+    });
+    this.source.on('chunk', (ch) => {
+      this.residency?.arrived(ch);
+      this.loop?.schedule();
+    });
+    this.source.on('status', (s) => {
+      if (s.status === 'requested') this.fire('dataloading', { file: s.file });
+    });
+    this.source.on('error', (e) => {
+      this.fire('error', e);
+      // A failed chunk may be all that kept the map from idling.
+      this.loop?.schedule();
+    });
+    this.canvas.measure();
+  }
+
+  // ---- the view on the canvas --------------------------------------------------------------------
+
+  /** The view in device pixels (what the GPU draws). */
+  getView(): ViewGeometry {
+    return this.canvas.geometry(this.view);
+  }
+
+  /** The ground point at CSS px in the container. */
+  unproject(point: [number, number]): [number, number] {
+    const r = this.canvas.deviceRatio();
+    return pixelToGround(this.getView(), point[0] * r, point[1] * r);
+  }
+
+  /** CSS px in the container of a ground point. */
+  project(ground: [number, number]): [number, number] {
+    const r = this.canvas.deviceRatio();
+    const [px, py] = groundToPixel(this.getView(), ground[0], ground[1]);
+    return [px / r, py / r];
+  }
+
+  /** The camera that shows `bbox` whole on this canvas, `padding` CSS px around it. */
+  fitCamera(bbox: Bbox, padding = 0): Camera {
+    const g = this.canvas.deviceSize(), r = this.canvas.deviceRatio();
+    return this.view.fitCamera(bbox, g.width, g.height, r, padding * r);
+  }
+
+  /**
+   * Views the map will show soon, in order (a flight's path): their chunks are fetched after
+   * those of the current view and its margin, and kept when they arrive. [] forgets them.
+   */
+  prefetch(cameras: Camera[]): void {
+    this.residency?.prefetch(cameras);
+    this.loop?.schedule();
+  }
+
+  // ---- rendering options -----------------------------------------------------------------------
+
+  setBlending(b: Partial<BlendingOptions>): void {
+    this.settings.blending = { ...this.settings.blending, ...b };
+    this.redraw();
+  }
+
+  getBlending(): BlendingOptions {
+    return { ...this.settings.blending };
+  }
+
+  setBoundaries(b: Partial<BoundaryOptions>): void {
+    this.settings.boundaries = { ...this.settings.boundaries, ...b };
+    this.redraw();
+  }
+
+  setSupersampling(frames: number): void {
+    this.settings.supersampling = Math.max(1, Math.floor(frames));
+    this.redraw();
+  }
+
+  setGpuMemoryBudget(bytes: number): void {
+    if (this.renderer) this.renderer.store.budgetBytes = bytes;
+    this.redraw();
+  }
+
+  /** Asks for a frame (in which the view's animation advances). */
+  requestFrame(): void {
+    this.loop?.schedule();
+  }
+
+  /** Renders again from the first frame (e.g. after a style change). */
+  redraw(): void {
+    this.loop?.redraw();
+  }
+
+  // ---- state -------------------------------------------------------------------------------------
+
+  /** Every chunk the view shows is on the GPU: the map is complete. */
+  loaded(): boolean {
+    return this.loop?.loaded() ?? false;
+  }
+
+  /** Resolves at the next idle, or now when the map is idle. */
+  whenIdle(): Promise<{ complete: boolean }> {
+    return this.loop ? this.loop.whenIdle(() => this.once('idle')) : this.once('idle');
+  }
+
+  /** performance.now() of the first complete map, or null. */
+  get firstCompleteAt(): number | null {
+    return this.loop?.firstCompleteAt ?? null;
+  }
+
+  chunkStatuses(): Map<string, ChunkStatus> {
+    return this.source.allStatuses();
+  }
+
+  /** The chunks the current view needs: on screen, in the prefetch margin and ahead. */
+  neededChunks(): { visible: string[]; margin: string[]; ahead: string[] } {
+    return this.residency?.neededChunks() ?? { visible: [], margin: [], ahead: [] };
+  }
+
+  stats(): RenderStats {
+    return this.loop?.stats() ?? { frame: 0, triangles: 0, chunks: 0, queryMs: 0, gpuBytes: 0, jittered: false };
+  }
+
+  /** The ID buffer of the current view (device pixels, rows from the top). */
+  readIds(): IdBuffer | null {
+    this.loop?.renderNowIfDirty();
+    return this.renderer?.readIds() ?? null;
+  }
+
+  /** The face under a CSS px point of the container, with its class, attributes and steps. */
+  async queryFeatures(point: [number, number]): Promise<Feature[]> {
+    const meta = this.view.meta;
+    if (!this.renderer || !meta) return [];
+    this.loop?.renderNowIfDirty();
+    const r = this.canvas.deviceRatio();
+    const x = Math.floor(point[0] * r), y = Math.floor(point[1] * r);
+    const g = this.canvas.deviceSize();
+    if (x < 0 || y < 0 || x >= g.width || y >= g.height) return [];
+    return featuresAt(this.renderer, this.source, meta, x, y);
+  }
+
+  /** The absolute URL of the cube's index.json. */
+  getSourceUrl(): string {
+    return this.source.url;
+  }
+
+  /** Absolute URLs of the cube's files received so far, oldest first. */
+  getLoadedUrls(): Promise<string[]> {
+    return this.source.loadedUrls();
+  }
+
+  resize(): void {
+    this.canvas.measure();
+  }
+
+  remove(): void {
+    this.loop?.stop();
+    this.source.destroy();
+    this.renderer?.destroy();
+    this.canvas.remove();
+    this.removeAllListeners();
+  }
+
+  private contextLost(files: string[]): void {
+    this.source.evicted(files);
+    this.loop?.lost();
+    this.fire('contextlost', {});
+  }
+
+  private contextRestored(): void {
+    if (this.view.meta) this.renderer?.setMeta(this.view.meta);
+    this.fire('contextrestored', {});
+    this.loop?.redraw();
+  }
+}

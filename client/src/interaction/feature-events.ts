@@ -1,0 +1,85 @@
+// The map's click and pointermove events, with the ground point and the face under the pointer.
+// A face is looked up only when someone listens, one lookup at a time (the latest position
+// waits for it), and the end of a drag is not a click.
+import type { Feature } from '../engine/picking.js';
+
+export interface MapPointerEvent {
+  /** CSS px in the map. */
+  point: [number, number];
+  ground: [number, number];
+  /** The face under the pointer (null: none, or not drawn yet). */
+  feature: Feature | null;
+  originalEvent: MouseEvent;
+}
+
+export interface FeatureEventHost {
+  listens(type: 'click' | 'pointermove'): boolean;
+  fire(type: 'click' | 'pointermove', ev: MapPointerEvent): void;
+  point(ev: { clientX: number; clientY: number }): [number, number];
+  unproject(point: [number, number]): [number, number];
+  queryFeatures(point: [number, number]): Promise<Feature[]>;
+}
+
+const CLICK_TOLERANCE_PX = 3;
+
+export class FeatureEvents {
+  private pressed: { x: number; y: number } | null = null;
+  private readonly query: { busy: boolean; next: PointerEvent | null } = { busy: false, next: null };
+  private removed = false;
+
+  constructor(
+    private readonly element: HTMLElement,
+    private readonly host: FeatureEventHost,
+  ) {
+    element.addEventListener('pointerdown', this.onPress);
+    element.addEventListener('click', this.onClick);
+    element.addEventListener('pointermove', this.onPointerMove);
+  }
+
+  remove(): void {
+    this.removed = true;
+    this.element.removeEventListener('pointerdown', this.onPress);
+    this.element.removeEventListener('click', this.onClick);
+    this.element.removeEventListener('pointermove', this.onPointerMove);
+  }
+
+  private readonly onPress = (ev: PointerEvent): void => {
+    this.pressed = { x: ev.clientX, y: ev.clientY };
+    if (document.activeElement !== this.element) this.element.focus({ preventScroll: true });
+  };
+
+  private readonly onClick = (ev: MouseEvent): void => {
+    const p = this.pressed;
+    this.pressed = null;
+    if (p && Math.hypot(ev.clientX - p.x, ev.clientY - p.y) > CLICK_TOLERANCE_PX) return;
+    if (this.host.listens('click')) void this.send('click', ev);
+  };
+
+  private readonly onPointerMove = (ev: PointerEvent): void => {
+    if (!this.host.listens('pointermove')) return;
+    const q = this.query;
+    if (q.busy) {
+      q.next = ev;
+      return;
+    }
+    q.busy = true;
+    void this.send('pointermove', ev).finally(() => {
+      q.busy = false;
+      const next = q.next;
+      q.next = null;
+      if (next && !this.removed) this.onPointerMove(next);
+    });
+  };
+
+  private async send(type: 'click' | 'pointermove', originalEvent: MouseEvent): Promise<void> {
+    const point = this.host.point(originalEvent);
+    const ground = this.host.unproject(point);
+    let feature: Feature | null = null;
+    try {
+      feature = (await this.host.queryFeatures(point))[0] ?? null;
+    } catch {
+      // Removed meanwhile, or a failed page of attributes: the event goes without the face.
+    }
+    if (!this.removed) this.host.fire(type, { point, ground, feature, originalEvent });
+  }
+}

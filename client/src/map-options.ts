@@ -1,0 +1,100 @@
+// The types of VarioMap's public API: its options, events and camera options.
+import type { SurfaceSpec } from '../../format/slicing-surface.js';
+import type { EngineEvents, EngineOptions } from './engine/map-engine.js';
+import type { MapPointerEvent } from './interaction/feature-events.js';
+import type { HandlerFlags } from './interaction/handlers.js';
+import type { InteractionSettings } from './interaction/interaction-context.js';
+import type { Easing } from './motion/easing.js';
+
+export interface VarioMapOptions extends Partial<HandlerFlags>, Omit<EngineOptions, 'source' | 'uploadBytesPerFrame'> {
+  container: HTMLElement | string;
+  /** URL of the cube's index.json (or its directory, ending in /). */
+  source: string;
+  /** Ground coordinates of the centre (default: the centre of `bounds`, or of the extent). */
+  center?: [number, number];
+  /** Scale denominator; or `zoom` (web map levels: 1:559082264 / 2^zoom). Default: `bounds` (or the extent) fits. */
+  scaleDenominator?: number;
+  zoom?: number;
+  /** Pins the slice's base z (steps) instead of following the scale. */
+  sliceZ?: number | null;
+  /** The slicing surface (default flat). */
+  surface?: SurfaceSpec | string;
+  /** Smallest scale denominator (most detail) and largest; defaults: a quarter of the base scale, 4x the extent. */
+  minScale?: number;
+  maxScale?: number;
+  /** false turns every input handler off. */
+  interactive?: boolean;
+  /** Keeps centre and scale in the URL's hash (#x/y/scale). */
+  hash?: boolean;
+  /** Replace animations with jumps; default: the user's prefers-reduced-motion. */
+  reduceMotion?: boolean;
+  /** Factor of the scale per zoom step (default 2). */
+  zoomStep?: number;
+  /** ms of a zoom step's animation (default 300; 0: none). */
+  zoomDuration?: number;
+  /** ms of keyboard pans (default 300; 0: none, and no inertia). */
+  panDuration?: number;
+  /** A zoom step shows at least this many slices, however slow the frames (default 12). */
+  minZoomFrames?: number;
+  /** The comparison mode: content only at a few discrete scales, as a classic multi-scale map. */
+  comparisonMode?: boolean;
+  /** Factor between the comparison mode's scales (default 2). */
+  comparisonFactor?: number;
+  /** The canvas container's accessible name (default "Map"). */
+  ariaLabel?: string;
+  /** Shows the dataset's attribution (default true). */
+  attributionControl?: boolean;
+}
+
+export interface MapMoveEvent {
+  /** The input that caused it, when one did. */
+  originalEvent?: Event;
+}
+
+export interface VarioMapSettings extends InteractionSettings {
+  comparisonMode: boolean;
+}
+
+/** Passed on from the engine as they are. */
+export type DataEvents = Pick<EngineEvents, 'load' | 'idle' | 'error' | 'contextlost' | 'contextrestored' | 'dataloading' | 'data' | 'meta'>;
+
+export interface VarioMapEvents extends DataEvents {
+  movestart: MapMoveEvent;
+  move: MapMoveEvent;
+  moveend: MapMoveEvent;
+  zoomstart: MapMoveEvent;
+  zoom: MapMoveEvent;
+  zoomend: MapMoveEvent;
+  click: MapPointerEvent;
+  pointermove: MapPointerEvent;
+  /** Every frame drawn: its slice's base z and scale. */
+  render: { frame: number; z: number; scaleDenominator: number; triangles: number };
+  /** The settings changed (setSettings, setBlending). */
+  settings: VarioMapSettings;
+  /** The slicing surface changed. */
+  surface: SurfaceSpec;
+  remove: Record<string, never>;
+}
+
+export interface CameraOptions {
+  center?: [number, number];
+  scaleDenominator?: number;
+  zoom?: number;
+  /** Pins the slice's base z (steps); null: it follows the scale again. Taken at the start. */
+  sliceZ?: number | null;
+}
+
+export interface AnimationOptions {
+  /** ms; 0 jumps (at once, before the call returns). */
+  duration?: number;
+  easing?: Easing;
+}
+
+export interface FlyToOptions extends CameraOptions {
+  /** Path length per second (default 1.2, as MapLibre); `duration` wins when given. */
+  speed?: number;
+  duration?: number;
+  /** Curvature of the path (default 1.42). */
+  rho?: number;
+  easing?: Easing;
+}
