@@ -104,6 +104,16 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     return mp;
   }
 
+  /** Records the map's error events from now on; the function returned reads them back. */
+  async function recordErrors(p: MapPage): Promise<() => Promise<{ kind: string; status?: number; file?: string; message: string }[]>> {
+    await p.page.evaluate(() => {
+      const errors: unknown[] = [];
+      (globalThis as unknown as { errors: unknown[] }).errors = errors;
+      map.on('error', (e) => errors.push(e));
+    });
+    return () => p.page.evaluate(() => (globalThis as unknown as { errors: { kind: string; status?: number; file?: string; message: string }[] }).errors);
+  }
+
   async function goTo(p: MapPage, bbox: Bbox, z: number): Promise<void> {
     await p.page.evaluate(([b, zz]) => map.fitBounds(b, { sliceZ: zz, duration: 0 }), [bbox, z] as const);
   }
@@ -282,14 +292,10 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     const p = await open(start, z, { retries: 3, backoff: 10 });
     p.expect(/Failed to load resource: the server responded with a status of 404/);
     assert.equal(await waitIdle(p.page), true);
-    await p.page.evaluate(() => {
-      const errors: unknown[] = [];
-      (globalThis as unknown as { errors: unknown[] }).errors = errors;
-      map.on('error', (e) => errors.push(e));
-    });
+    const errorsSeen = await recordErrors(p);
     await goTo(p, target, z);
     assert.equal(await waitIdle(p.page), false, 'idle, but not complete');
-    const errors = await p.page.evaluate(() => (globalThis as unknown as { errors: { kind: string; status?: number; file?: string }[] }).errors);
+    const errors = await errorsSeen();
     assert.deepEqual(errors.map((e) => [e.kind, e.status, e.file]), [['http', 404, missing.file]]);
     assert.equal(countBy(chunkRequests()).get(missing.file), 1, '4xx is not retried');
     const status = await p.page.evaluate((f) => engine.chunkStatuses().get(f), missing.file);
@@ -304,14 +310,10 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     const p = await open(start, z, { retries: 3, backoff: 10 });
     p.expect(/Failed to load resource: the server responded with a status of 503/);
     assert.equal(await waitIdle(p.page), true);
-    await p.page.evaluate(() => {
-      const errors: unknown[] = [];
-      (globalThis as unknown as { errors: unknown[] }).errors = errors;
-      map.on('error', (e) => errors.push(e));
-    });
+    const errorsSeen = await recordErrors(p);
     await goTo(p, target, z);
     assert.equal(await waitIdle(p.page), false);
-    const errors = await p.page.evaluate(() => (globalThis as unknown as { errors: { kind: string; status?: number; file?: string }[] }).errors);
+    const errors = await errorsSeen();
     assert.deepEqual(errors.map((e) => [e.kind, e.status, e.file]), [['http', 503, down.file]]);
     assert.equal(countBy(chunkRequests()).get(down.file), 4, 'the first attempt and 3 retries');
   });
@@ -343,14 +345,10 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     });
     const p = await open(start, z);
     assert.equal(await waitIdle(p.page), true);
-    await p.page.evaluate(() => {
-      const errors: unknown[] = [];
-      (globalThis as unknown as { errors: unknown[] }).errors = errors;
-      map.on('error', (e) => errors.push(e));
-    });
+    const errorsSeen = await recordErrors(p);
     await goTo(p, target, z);
     assert.equal(await waitIdle(p.page), false);
-    const errors = await p.page.evaluate(() => (globalThis as unknown as { errors: { kind: string; file?: string; message: string }[] }).errors);
+    const errors = await errorsSeen();
     const byFile = new Map(errors.map((e) => [e.file, e]));
     assert.equal(byFile.get(badHash.file)?.kind, 'corrupt');
     assert.match(byFile.get(badHash.file)!.message, /SHA-256/);

@@ -1,6 +1,7 @@
 // Driving the test page's map (index.html: window.map, a VarioMap, and window.engine, its
 // engine through the internal engineOf()) from the tests.
 import type { Page } from 'playwright-core';
+import type { IdBuffer as PageIds } from '../../client/src/render/id-buffer.js';
 
 export interface PageCubeMeta {
   zMax: number;
@@ -60,16 +61,7 @@ export async function waitIdle(page: Page): Promise<boolean> {
   }
 }
 
-export interface PageIds {
-  width: number;
-  height: number;
-  upper: Uint32Array;
-  lower: Uint32Array;
-  /** upper class | lower class << 16 */
-  classes: Uint32Array;
-  z: Float32Array;
-  slice: Float32Array;
-}
+export type { PageIds };
 
 /** The map's ID buffer (upper and lower face, surface z and slice z per pixel). */
 export async function readIds(page: Page): Promise<PageIds> {

@@ -8,6 +8,7 @@ import type { ChunkPayload } from '../source/worker-protocol.js';
 import { ChunkStore } from './chunk-store.js';
 import { ColourPass, type ColourParams } from './colour-pass.js';
 import type { GpuChunk } from './gpu-chunk.js';
+import type { IdBuffer } from './id-buffer.js';
 import { IdPass } from './id-pass.js';
 import { PresentPass } from './present-pass.js';
 import { createStyleTexture } from './style-texture.js';
@@ -21,18 +22,6 @@ export interface FrameParams {
   /** Sub-pixel offset of this frame (device pixels); [0, 0] for the plain image. */
   jitter: [number, number];
   colour: Omit<ColourParams, 'style' | 'classCount'>;
-}
-
-export interface IdBuffer {
-  width: number;
-  height: number;
-  /** Per pixel, rows from the top: upper face (0: none), lower face, classes, surface z. */
-  upper: Uint32Array;
-  lower: Uint32Array;
-  classes: Uint32Array;
-  z: Float32Array;
-  /** z of the slicing surface per pixel. */
-  slice: Float32Array;
 }
 
 interface Gpu {
