@@ -1,13 +1,14 @@
 // ssc slice <dir> (--step s | --scale n) --size WxH [--bbox] [--surface spec] --out slice.png [--ids ids.bin]
 import { parseArgs } from 'node:util';
 import { zAtScale } from '../../format/scale.js';
-import { parseSurface, surfaceRange, surfaceZ, type Surface } from '../../format/slicing-surface.js';
+import { parseSurface, type Surface } from '../../format/slicing-surface.js';
 import { writeFileAtomic } from '../io/atomic-write.js';
 import { fitView } from '../map/rasterize.js';
 import { idsToPng } from '../map/render-png.js';
-import { CpuSlicer, sliceChunk } from '../ssc/cpu-slicer.js';
+import type { CpuSlicer } from '../ssc/cpu-slicer.js';
 import { CubeReader } from '../ssc/read-cube.js';
 import { UsageError, viewArgs, viewOptionSpecs } from './args.js';
+import { sliceCube } from './slice-cube.js';
 
 export const usage = `ssc slice <cube dir> (--step <z> | --scale <denominator>) --size WxH --out slice.png [options]
   --bbox x0,y0,x1,y1   ground area (default: the whole extent), widened to the image's shape
@@ -32,18 +33,10 @@ export async function run(argv: string[]): Promise<void> {
     throw new UsageError(`--surface: ${(err as Error).message}`);
   }
   const view = fitView(meta.extent, v.width, v.height, v.bbox);
-  const [zMin, zMax] = surfaceRange(surface, view.bbox, meta.zMax);
-  const leaves = await cube.query({ ground: view.bbox, zMin, zMax });
-  const slicer = new CpuSlicer(view, (x, y) => surfaceZ(surface, x, y, meta.zMax));
-  let triangles = 0;
-  for (const leaf of leaves) {
-    const c = await cube.chunk(leaf);
-    sliceChunk(slicer, c);
-    triangles += c.triangleCount;
-  }
+  const { slicer, zMin, zMax, chunks, triangles } = await sliceCube(cube, meta.zMax, view, surface);
   await writeFileAtomic(v.out, pngByClass(slicer, meta.style.classes.map((c) => c.color)));
   if (values.ids) await writeFileAtomic(values.ids, new Uint8Array(slicer.ids.buffer));
-  process.stdout.write(`z ${base.toFixed(3)} (${surface.spec.kind}, ${zMin.toFixed(2)}..${zMax.toFixed(2)}): ${leaves.length} chunks, ${triangles} triangles, ${v.width}x${v.height} px\n`);
+  process.stdout.write(`z ${base.toFixed(3)} (${surface.spec.kind}, ${zMin.toFixed(2)}..${zMax.toFixed(2)}): ${chunks} chunks, ${triangles} triangles, ${v.width}x${v.height} px\n`);
 }
 
 /** Colours by the class each pixel's surface carries (the chunks hold it; no face table needed). */
