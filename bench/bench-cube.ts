@@ -17,14 +17,36 @@ export interface BenchCube {
   leaves: ChunkLeaf[];
 }
 
-/** Builds `d` into `dir` (no .gz/.br copies: nothing here serves them). */
-export function buildBenchCube(d: Dataset, dir: string, chunkBytes?: number): BenchCube {
-  const label = chunkBytes ? `${d.name} ${chunkBytes / 1024} KiB` : d.name;
+export interface BenchBuild {
+  /** Target chunk size (the build's default when not given). */
+  chunkBytes?: number;
+  /** More `ssc build` options, and the words they add to the label. */
+  args?: string[];
+  variant?: string;
+  /** Also write the .gz and .br copies (only a benchmark that weighs them needs them). */
+  precompress?: boolean;
+}
+
+/** The build failed; `stderr` says why (a caller may accept some failures, e.g. an unknown option). */
+export class BenchBuildError extends Error {
+  constructor(readonly label: string, readonly code: number, readonly stderr: string) {
+    super(`ssc build ${label} failed (exit ${code}): ${stderr}`);
+  }
+}
+
+/** Builds `d` into `dir`. */
+export function buildBenchCube(d: Dataset, dir: string, o: BenchBuild = {}): BenchCube {
+  const label = [d.name, o.variant, o.chunkBytes ? `${o.chunkBytes / 1024} KiB` : undefined].filter((w) => w !== undefined).join(' ');
   process.stderr.write(`building ${label}... `);
   const t0 = performance.now();
-  const args = ['build', d.file, '--style', d.style, '--out', dir, '--no-precompress', '--quiet'];
-  const r = runSsc(chunkBytes ? [...args, '--chunk-bytes', String(chunkBytes)] : args);
-  if (r.code !== 0) throw new Error(`ssc build ${d.name} failed (exit ${r.code}): ${r.stderr}`);
+  const args = ['build', d.file, '--style', d.style, '--out', dir, '--quiet', ...(o.args ?? [])];
+  if (!o.precompress) args.push('--no-precompress');
+  if (o.chunkBytes) args.push('--chunk-bytes', String(o.chunkBytes));
+  const r = runSsc(args);
+  if (r.code !== 0) {
+    process.stderr.write('failed\n');
+    throw new BenchBuildError(label, r.code, r.stderr);
+  }
   process.stderr.write(`${((performance.now() - t0) / 1000).toFixed(1)} s\n`);
   const json = (file: string): unknown => JSON.parse(readFileSync(path.join(dir, file), 'utf8'));
   const index = parseIndex(json('index.json'));

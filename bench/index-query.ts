@@ -78,7 +78,7 @@ const rows: string[][] = [['cube', 'chunks', 'sub-indexes', 'view', 'scale', 'z'
 try {
   for (const d of sets) {
     for (const chunkBytes of [undefined, SMALL_CHUNKS]) {
-      const cube = buildBenchCube(d, path.join(dir, `${d.name}-${chunkBytes ?? 'default'}`), chunkBytes);
+      const cube = buildBenchCube(d, path.join(dir, `${d.name}-${chunkBytes ?? 'default'}`), { chunkBytes });
       const meta = cube.index.meta;
       const [x0, y0, x1, y1] = meta.extent;
       for (const [w, h] of VIEWS) {
