@@ -44,7 +44,7 @@ export function buildBenchCube(d: Dataset, dir: string, o: BenchBuild = {}): Ben
   if (o.chunkBytes) args.push('--chunk-bytes', String(o.chunkBytes));
   const r = runSsc(args);
   if (r.code !== 0) {
-    process.stderr.write('failed\n');
+    process.stderr.write(`failed (exit ${r.code})\n`);
     throw new BenchBuildError(label, r.code, r.stderr);
   }
   process.stderr.write(`${((performance.now() - t0) / 1000).toFixed(1)} s\n`);
