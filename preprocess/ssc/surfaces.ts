@@ -3,36 +3,58 @@
 // new one (upper), at the z of the step's phase (docs/FORMAT.md):
 // - the floor (z = 0): every input face, nothing below;
 // - a merge: the loser's area (and, when the winner is replaced by a new face, the winner's);
+//   with `smooth`, tilted instead: rising from the boundary the loser shares with the winner,
+//   from the loser's last change to the merge (smooth-merge.ts);
 // - a split: the triangles the split gave each receiving face;
 // - simplification: each removed vertex's triangle, between the faces on either side.
 import { orient } from '../geom/predicates.js';
 import { EventKind, faceEndZ, LAST_REMOVAL_PHASE, phaseZ, REEMIT_PHASE, resolveFace, resolveFaceAt, type Tgap } from '../../format/tgap-model.js';
+import { smoothMergeZ } from './smooth-merge.js';
 import { triangulateFace, type FaceEdge, type TriangulateStats } from './triangulate-face.js';
 
 export class Surfaces {
   count = 0;
   /** tGAP vertex ids, 3 per triangle, counterclockwise. */
   v = new Int32Array(3 * 1024);
-  z = new Float64Array(1024);
+  /** z of each vertex of each triangle (3 per triangle): equal on a horizontal one. */
+  z = new Float64Array(3 * 1024);
+  /** The triangle's lowest z: from there on it can be seen (chunk boxes, culling). */
+  zMin = new Float64Array(1024);
   upper = new Int32Array(1024);
   lower = new Int32Array(1024);
   /** z from which newer surfaces cover the triangle (its upper face ended). */
   zEnd = new Float64Array(1024);
   /**
-   * Triangles with the same z, upper and lower face form a piece: only within a piece can they
-   * share vertices (a vertex carries z and both faces).
+   * Horizontal triangles with the same z, upper and lower face form a piece, and so do a
+   * tilted merge's triangles: only within a piece can they share vertices (a vertex carries z
+   * and both faces).
    */
   piece = new Int32Array(1024);
   pieces = 0;
   private readonly pieceIds = new Map<string, number>();
+  private lastFlat = false;
 
+  /** A horizontal triangle at z. */
   add(a: number, b: number, c: number, z: number, upper: number, lower: number): void {
-    if (this.count === this.z.length) this.grow();
+    const i = this.count;
+    const same = i > 0 && this.lastFlat && this.zMin[i - 1] === z && this.upper[i - 1] === upper && this.lower[i - 1] === lower;
+    this.push(a, b, c, z, z, z, upper, lower, same ? null : `${z} ${upper} ${lower}`);
+    this.lastFlat = true;
+  }
+
+  /** A tilted triangle of the piece named `key` (each vertex with one z throughout the piece). */
+  addTilted(a: number, b: number, c: number, za: number, zb: number, zc: number, upper: number, lower: number, key: string): void {
+    this.push(a, b, c, za, zb, zc, upper, lower, key);
+    this.lastFlat = false;
+  }
+
+  /** key null: the previous triangle's piece. */
+  private push(a: number, b: number, c: number, za: number, zb: number, zc: number, upper: number, lower: number, key: string | null): void {
+    if (this.count === this.zMin.length) this.grow();
     const i = this.count++;
-    if (i > 0 && this.z[i - 1] === z && this.upper[i - 1] === upper && this.lower[i - 1] === lower) {
+    if (key === null) {
       this.piece[i] = this.piece[i - 1]!;
     } else {
-      const key = `${z} ${upper} ${lower}`;
       let id = this.pieceIds.get(key);
       if (id === undefined) this.pieceIds.set(key, (id = this.pieces++));
       this.piece[i] = id;
@@ -40,17 +62,23 @@ export class Surfaces {
     this.v[3 * i] = a;
     this.v[3 * i + 1] = b;
     this.v[3 * i + 2] = c;
-    this.z[i] = z;
+    this.z[3 * i] = za;
+    this.z[3 * i + 1] = zb;
+    this.z[3 * i + 2] = zc;
+    this.zMin[i] = Math.min(za, zb, zc);
     this.upper[i] = upper;
     this.lower[i] = lower;
   }
 
   private grow(): void {
-    const n = this.z.length * 2;
+    const n = this.zMin.length * 2;
     const v = new Int32Array(3 * n);
     v.set(this.v);
     this.v = v;
-    for (const k of ['z', 'zEnd'] as const) {
+    const z = new Float64Array(3 * n);
+    z.set(this.z);
+    this.z = z;
+    for (const k of ['zMin', 'zEnd'] as const) {
       const a = new Float64Array(n);
       a.set(this[k]);
       this[k] = a;
@@ -69,13 +97,32 @@ export interface SurfaceStats extends TriangulateStats {
   split: number;
   simplify: number;
   reemit: number;
+  /** Merges drawn tilted (smooth), of `merge`'s triangles' events. */
+  tiltedMerges: number;
 }
 
-export function buildSurfaces(t: Tgap): { surfaces: Surfaces; stats: SurfaceStats } {
+export interface SurfaceOptions {
+  /** Smooth merges: the loser's area tilted over its transition (docs/FORMAT.md, "Smooth cube"). */
+  smooth?: boolean;
+}
+
+/**
+ * A merge's transition: from zStart, the last change of the loser, of its boundary or the
+ * winner's creation, to zMerge, the merge's z (zStart = zMerge: no room, drawn horizontal).
+ */
+export interface MergeTransition {
+  step: number;
+  loser: number;
+  into: number;
+  zStart: number;
+  zMerge: number;
+}
+
+export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: Surfaces; stats: SurfaceStats; transitions: MergeTransition[] } {
   const steps = t.meta.steps;
   const zTop = steps + 1;
   const out = new Surfaces();
-  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0 };
+  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0 };
   const { xs, ys, faces, edges } = t;
   // Edges by the state they start and end in.
   const born: number[][] = Array.from({ length: steps + 2 }, () => []);
@@ -94,9 +141,25 @@ export function buildSurfaces(t: Tgap): { surfaces: Surfaces; stats: SurfaceStat
       set.add(e);
     }
   };
+  // Per face: the z of its creation, and of the last change of its area or of an edge's faces.
+  // A smooth merge's transition may start only after both (see MergeTransition).
+  const createdZ = new Float64Array(faces.length);
+  const lastChange = new Float64Array(faces.length);
+  const touch = (f: number, z: number): void => {
+    if (f > 0) lastChange[f] = Math.max(lastChange[f]!, z);
+  };
+  /** f and every face across one of its edges (state s) changed at z. */
+  const touchAround = (f: number, s: number, z: number): void => {
+    touch(f, z);
+    for (const e of faceEdges.get(f) ?? []) {
+      touch(resolveFace(faces, edges[e]!.left, s), z);
+      touch(resolveFace(faces, edges[e]!.right, s), z);
+    }
+  };
   const tris: number[] = [];
-  /** Triangulates face f's current area and adds it at z with the given upper and lower faces. */
-  const emitFace = (f: number, s: number, z: number, upper: number, lower: number): number => {
+  /** Triangulates face f's area at state s into `tris`; returns the triangle count. */
+  const triangulate = (f: number, s: number): number => {
+    tris.length = 0;
     const set = faceEdges.get(f);
     if (!set) return 0;
     const fe: FaceEdge[] = [];
@@ -107,11 +170,34 @@ export function buildSurfaces(t: Tgap): { surfaces: Surfaces; stats: SurfaceStat
       if (l === f && r === f) continue;
       fe.push({ verts: edge.verts, forward: l === f });
     }
-    tris.length = 0;
-    const n = triangulateFace(fe, xs, ys, tris, stats);
+    return triangulateFace(fe, xs, ys, tris, stats);
+  };
+  /** Triangulates face f's current area and adds it at z with the given upper and lower faces. */
+  const emitFace = (f: number, s: number, z: number, upper: number, lower: number): number => {
+    const n = triangulate(f, s);
     for (let i = 0; i < tris.length; i += 3) out.add(tris[i]!, tris[i + 1]!, tris[i + 2]!, z, upper, lower);
     return n;
   };
+  /** The loser's area (state s) tilted from its boundary with the winner (zStart) to zMerge. */
+  const emitSmoothMerge = (loser: number, into: number, s: number, zStart: number, zMerge: number, key: string): number => {
+    const n = triangulate(loser, s);
+    const shared = new Set<number>();
+    for (const e of faceEdges.get(loser) ?? []) {
+      const edge = edges[e]!;
+      const l = resolveFace(faces, edge.left, s);
+      const r = resolveFace(faces, edge.right, s);
+      if ((l === loser && r === into) || (l === into && r === loser)) for (const v of edge.verts) shared.add(v);
+    }
+    const z = smoothMergeZ(tris, xs, ys, shared, zStart, zMerge);
+    const zOf = (v: number): number => z.get(v) ?? zMerge;
+    for (let i = 0; i < tris.length; i += 3) {
+      const a = tris[i]!, b = tris[i + 1]!, c = tris[i + 2]!;
+      out.addTilted(a, b, c, zOf(a), zOf(b), zOf(c), into, loser, key);
+    }
+    stats.tiltedMerges++;
+    return n;
+  };
+  const transitions: MergeTransition[] = [];
 
   for (const e of born[0]!) if (edges[e]!.stepHigh > 0) attach(e, 0);
   for (let f = 1; f < faces.length; f++) {
@@ -126,14 +212,28 @@ export function buildSurfaces(t: Tgap): { surfaces: Surfaces; stats: SurfaceStat
     for (; ev < t.events.length && t.events[ev]!.step === k; ev++) {
       const e = t.events[ev]!;
       if (e.kind === EventKind.Merge) {
-        stats.merge += emitFace(e.loser, k - 1, z0, e.into, e.loser);
+        const zStart = Math.max(lastChange[e.loser]!, createdZ[e.into]!);
+        transitions.push({ step: k, loser: e.loser, into: e.into, zStart, zMerge: z0 });
+        stats.merge += opts.smooth && zStart < z0
+          ? emitSmoothMerge(e.loser, e.into, k - 1, zStart, z0, `m${ev}`)
+          : emitFace(e.loser, k - 1, z0, e.into, e.loser);
+        // The winner grows; the loser's neighbours now border the winner.
+        touchAround(e.loser, k - 1, z0);
         handOn.push([e.loser, e.into]);
       } else if (e.kind === EventKind.Split) {
         const tv = e.tris!, tf = e.triFaces!;
-        for (let i = 0; i < tf.length; i++) out.add(tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!, z0, tf[i]!, e.loser);
+        for (let i = 0; i < tf.length; i++) {
+          out.add(tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!, z0, tf[i]!, e.loser);
+          touch(tf[i]!, z0);
+        }
         stats.split += tf.length;
+        touchAround(e.loser, k - 1, z0);
         faceEdges.delete(e.loser);
       } else {
+        const zRe = phaseZ(k, REEMIT_PHASE);
+        touchAround(e.loser, k - 1, zRe);
+        createdZ[e.into] = zRe;
+        touch(e.into, zRe);
         handOn.push([e.loser, e.into]);
         reemits.push([e.loser, e.into]);
       }
@@ -141,7 +241,10 @@ export function buildSurfaces(t: Tgap): { surfaces: Surfaces; stats: SurfaceStat
     // The edges that end here leave their faces (as they were before the step) ...
     for (const e of died[k]!) {
       const edge = edges[e]!;
-      for (const f of [resolveFace(faces, edge.left, k - 1), resolveFace(faces, edge.right, k - 1)]) faceEdges.get(f)?.delete(e);
+      for (const f of [resolveFace(faces, edge.left, k - 1), resolveFace(faces, edge.right, k - 1)]) {
+        faceEdges.get(f)?.delete(e);
+        touch(f, z0);
+      }
     }
     // ... merged and replaced faces hand their edges on ...
     for (const [f, into] of handOn) {
@@ -153,7 +256,12 @@ export function buildSurfaces(t: Tgap): { surfaces: Surfaces; stats: SurfaceStat
       for (const e of set) target.add(e);
     }
     // ... and the new edges join theirs.
-    for (const e of born[k]!) if (edges[e]!.stepHigh > k) attach(e, k);
+    for (const e of born[k]!) {
+      if (edges[e]!.stepHigh <= k) continue;
+      attach(e, k);
+      touch(resolveFace(faces, edges[e]!.left, k), z0);
+      touch(resolveFace(faces, edges[e]!.right, k), z0);
+    }
     // Simplification: replay each new version's removals on its parent's chain.
     for (const e of born[k]!) {
       const edge = edges[e]!;
@@ -181,6 +289,8 @@ export function buildSurfaces(t: Tgap): { surfaces: Surfaces; stats: SurfaceStat
         const z = phaseZ(k, edge.removedPhase[r]!);
         if (o > 0) out.add(a, b, v, z, left, right);
         else out.add(a, v, b, z, right, left);
+        touch(left, z);
+        touch(right, z);
         stats.simplify++;
       }
     }
@@ -192,5 +302,5 @@ export function buildSurfaces(t: Tgap): { surfaces: Surfaces; stats: SurfaceStat
     const u = out.upper[i]!;
     out.zEnd[i] = u > 0 ? Math.min(zTop, faceEndZ(faces[u]!, steps)) : zTop;
   }
-  return { surfaces: out, stats };
+  return { surfaces: out, stats, transitions };
 }
