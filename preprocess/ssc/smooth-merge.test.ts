@@ -32,12 +32,18 @@ test('vertices no source reaches get the largest distance', () => {
 test('z rises with the distance from just above zStart to zMerge', () => {
   // zStart 0, zMerge 16: the ramp starts a 16th of the way up, at 1, and climbs 15 over d = 4.
   const z = smoothMergeZ(TRIS, xs, ys, [1, 2], 0, 16);
-  assert.deepEqual([0, 1, 2, 3, 4, 5].map((v) => z.get(v)), [1 + 7.5, 1, 1, 1 + 3.75, 1 + 11.25, 16]);
+  assert.deepEqual([0, 1, 2, 3, 4, 5].map((v) => z?.get(v)), [1 + 7.5, 1, 1, 1 + 3.75, 1 + 11.25, 16]);
 });
 
-test('without a shared boundary or room in z the surface is flat at zMerge', () => {
-  const none = smoothMergeZ(TRIS, xs, ys, [], 0, 16);
-  assert.deepEqual([...none.values()], [16, 16, 16, 16, 16, 16]);
-  const noRoom = smoothMergeZ(TRIS, xs, ys, [1, 2], 16, 16);
-  assert.deepEqual([...noRoom.values()], [16, 16, 16, 16, 16, 16]);
+test('a face all on the shared boundary is swept from one end of its longest path', () => {
+  // From vertex 0 (the first) the farthest is 4 (sqrt 10, straight). From 4: d5 = 1, d3 = 2,
+  // d2 = 3, d0 = sqrt 10 and d1 = 4, the largest: z = 1 + 15 d / 4.
+  const z = smoothMergeZ(TRIS, xs, ys, [0, 1, 2, 3, 4, 5], 0, 16);
+  const want = [1 + 3.75 * Math.sqrt(10), 16, 12.25, 8.5, 1, 4.75];
+  want.forEach((w, v) => assert.ok(Math.abs((z?.get(v) ?? NaN) - w) < 1e-12, `vertex ${v}: ${z?.get(v)}, expected ${w}`));
+});
+
+test('without a shared boundary or room in z it does not tilt', () => {
+  assert.equal(smoothMergeZ(TRIS, xs, ys, [], 0, 16), null);
+  assert.equal(smoothMergeZ(TRIS, xs, ys, [1, 2], 16, 16), null);
 });

@@ -56,19 +56,34 @@ export function meshDistances(tris: ArrayLike<number>, xs: Float64Array, ys: Flo
  */
 const START_GAP = 1 / 16;
 
+const largest = (d: Map<number, number>): [vertex: number, d: number] => {
+  let best: [number, number] = [-1, 0];
+  for (const [v, x] of d) if (x > best[1]) best = [v, x];
+  return best;
+};
+
 /**
  * z of every vertex of a smooth merge: just above zStart on the shared boundary, rising with the
- * distance to zMerge at the farthest vertex. Without a shared boundary (or room in z) it is flat
- * at zMerge.
+ * distance to zMerge at the farthest vertex. When every vertex lies on the shared boundary (an
+ * enclave in the winner, or a sliver), the distance is taken from one end of the face's longest
+ * path instead (two sweeps): the winner then sweeps across it from that vertex, still attached.
+ * null when it cannot tilt: no room in z, or no shared boundary.
  */
 export function smoothMergeZ(
   tris: ArrayLike<number>, xs: Float64Array, ys: Float64Array, shared: Iterable<number>, zStart: number, zMerge: number,
-): Map<number, number> {
-  const d = meshDistances(tris, xs, ys, shared);
-  let dMax = 0;
-  for (const x of d.values()) dMax = Math.max(dMax, x);
+): Map<number, number> | null {
+  if (!(zStart < zMerge) || tris.length === 0) return null;
+  let d = meshDistances(tris, xs, ys, shared);
+  let [, dMax] = largest(d);
+  if (dMax === 0) {
+    if (![...shared].some((v) => d.has(v))) return null;
+    const [end] = largest(meshDistances(tris, xs, ys, [tris[0]!]));
+    if (end < 0) return null;
+    d = meshDistances(tris, xs, ys, [end]);
+    [, dMax] = largest(d);
+  }
   const z = new Map<number, number>();
   const z0 = zStart + (zMerge - zStart) * START_GAP;
-  for (const [v, dv] of d) z.set(v, dMax > 0 && zStart < zMerge && dv < dMax ? z0 + ((zMerge - z0) * dv) / dMax : zMerge);
+  for (const [v, dv] of d) z.set(v, dv < dMax ? z0 + ((zMerge - z0) * dv) / dMax : zMerge);
   return z;
 }

@@ -116,6 +116,8 @@ export interface MergeTransition {
   into: number;
   zStart: number;
   zMerge: number;
+  /** Drawn tilted (with --smooth, room in z and a vertex off the shared boundary). */
+  tilted: boolean;
 }
 
 export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: Surfaces; stats: SurfaceStats; transitions: MergeTransition[] } {
@@ -178,9 +180,12 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
     for (let i = 0; i < tris.length; i += 3) out.add(tris[i]!, tris[i + 1]!, tris[i + 2]!, z, upper, lower);
     return n;
   };
-  /** The loser's area (state s) tilted from its boundary with the winner (zStart) to zMerge. */
-  const emitSmoothMerge = (loser: number, into: number, s: number, zStart: number, zMerge: number, key: string): number => {
-    const n = triangulate(loser, s);
+  /**
+   * The loser's area (state s) tilted from its boundary with the winner (zStart) to zMerge, or
+   * flat at zMerge when it cannot tilt; returns whether it tilted.
+   */
+  const emitSmoothMerge = (loser: number, into: number, s: number, zStart: number, zMerge: number, key: string): boolean => {
+    stats.merge += triangulate(loser, s);
     const shared = new Set<number>();
     for (const e of faceEdges.get(loser) ?? []) {
       const edge = edges[e]!;
@@ -189,13 +194,14 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
       if ((l === loser && r === into) || (l === into && r === loser)) for (const v of edge.verts) shared.add(v);
     }
     const z = smoothMergeZ(tris, xs, ys, shared, zStart, zMerge);
-    const zOf = (v: number): number => z.get(v) ?? zMerge;
+    const zOf = (v: number): number => z?.get(v) ?? zMerge;
     for (let i = 0; i < tris.length; i += 3) {
       const a = tris[i]!, b = tris[i + 1]!, c = tris[i + 2]!;
-      out.addTilted(a, b, c, zOf(a), zOf(b), zOf(c), into, loser, key);
+      if (z) out.addTilted(a, b, c, zOf(a), zOf(b), zOf(c), into, loser, key);
+      else out.add(a, b, c, zMerge, into, loser);
     }
-    stats.tiltedMerges++;
-    return n;
+    if (z) stats.tiltedMerges++;
+    return z !== null;
   };
   const transitions: MergeTransition[] = [];
 
@@ -213,10 +219,10 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
       const e = t.events[ev]!;
       if (e.kind === EventKind.Merge) {
         const zStart = Math.max(lastChange[e.loser]!, createdZ[e.into]!);
-        transitions.push({ step: k, loser: e.loser, into: e.into, zStart, zMerge: z0 });
-        stats.merge += opts.smooth && zStart < z0
-          ? emitSmoothMerge(e.loser, e.into, k - 1, zStart, z0, `m${ev}`)
-          : emitFace(e.loser, k - 1, z0, e.into, e.loser);
+        let tilted = false;
+        if (opts.smooth) tilted = emitSmoothMerge(e.loser, e.into, k - 1, zStart, z0, `m${ev}`);
+        else stats.merge += emitFace(e.loser, k - 1, z0, e.into, e.loser);
+        transitions.push({ step: k, loser: e.loser, into: e.into, zStart, zMerge: z0, tilted });
         // The winner grows; the loser's neighbours now border the winner.
         touchAround(e.loser, k - 1, z0);
         handOn.push([e.loser, e.into]);
