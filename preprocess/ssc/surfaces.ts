@@ -143,20 +143,32 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
       set.add(e);
     }
   };
-  // Per face: the z of its creation, and of the last change of its area or of an edge's faces.
-  // A smooth merge's transition may start only after both (see MergeTransition).
+  // What bounds a smooth merge's start (MergeTransition): per face, the z of its creation and of
+  // the last change of its area (no other surface may lie in the loser's area during the
+  // transition); per edge, the z of its birth or of the last change of a face on its sides (a
+  // boundary the loser came to share with the winner when a neighbour merged into the winner:
+  // the winner's side must be the winner's, the neighbour's transition over, so that what the
+  // winner gains stays attached to it).
   const createdZ = new Float64Array(faces.length);
-  const lastChange = new Float64Array(faces.length);
+  const areaChange = new Float64Array(faces.length);
+  const sideChange = Float64Array.from(edges, (e) => (e.stepLow > 0 ? phaseZ(e.stepLow, 0) : 0));
   const touch = (f: number, z: number): void => {
-    if (f > 0) lastChange[f] = Math.max(lastChange[f]!, z);
+    if (f > 0) areaChange[f] = Math.max(areaChange[f]!, z);
   };
-  /** f and every face across one of its edges (state s) changed at z. */
-  const touchAround = (f: number, s: number, z: number): void => {
-    touch(f, z);
-    for (const e of faceEdges.get(f) ?? []) {
-      touch(resolveFace(faces, edges[e]!.left, s), z);
-      touch(resolveFace(faces, edges[e]!.right, s), z);
+  /** The faces on f's edges changed at z (f merged, split or was replaced). */
+  const relabel = (f: number, z: number): void => {
+    for (const e of faceEdges.get(f) ?? []) sideChange[e] = Math.max(sideChange[e]!, z);
+  };
+  /** The loser's edges shared with the winner at state s. */
+  const sharedEdges = (loser: number, into: number, s: number): number[] => {
+    const out: number[] = [];
+    for (const e of faceEdges.get(loser) ?? []) {
+      const edge = edges[e]!;
+      const l = resolveFace(faces, edge.left, s);
+      const r = resolveFace(faces, edge.right, s);
+      if ((l === loser && r === into) || (l === into && r === loser)) out.push(e);
     }
+    return out;
   };
   const tris: number[] = [];
   /** Triangulates face f's area at state s into `tris`; returns the triangle count. */
@@ -187,12 +199,7 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
   const emitSmoothMerge = (loser: number, into: number, s: number, zStart: number, zMerge: number, key: string): boolean => {
     stats.merge += triangulate(loser, s);
     const shared = new Set<number>();
-    for (const e of faceEdges.get(loser) ?? []) {
-      const edge = edges[e]!;
-      const l = resolveFace(faces, edge.left, s);
-      const r = resolveFace(faces, edge.right, s);
-      if ((l === loser && r === into) || (l === into && r === loser)) for (const v of edge.verts) shared.add(v);
-    }
+    for (const e of sharedEdges(loser, into, s)) for (const v of edges[e]!.verts) shared.add(v);
     const z = smoothMergeZ(tris, xs, ys, shared, zStart, zMerge);
     const zOf = (v: number): number => z?.get(v) ?? zMerge;
     for (let i = 0; i < tris.length; i += 3) {
@@ -218,13 +225,15 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
     for (; ev < t.events.length && t.events[ev]!.step === k; ev++) {
       const e = t.events[ev]!;
       if (e.kind === EventKind.Merge) {
-        const zStart = Math.max(lastChange[e.loser]!, createdZ[e.into]!);
+        let zStart = Math.max(areaChange[e.loser]!, createdZ[e.into]!);
+        for (const se of sharedEdges(e.loser, e.into, k - 1)) zStart = Math.max(zStart, sideChange[se]!);
         let tilted = false;
         if (opts.smooth) tilted = emitSmoothMerge(e.loser, e.into, k - 1, zStart, z0, `m${ev}`);
         else stats.merge += emitFace(e.loser, k - 1, z0, e.into, e.loser);
         transitions.push({ step: k, loser: e.loser, into: e.into, zStart, zMerge: z0, tilted });
         // The winner grows; the loser's neighbours now border the winner.
-        touchAround(e.loser, k - 1, z0);
+        touch(e.into, z0);
+        relabel(e.loser, z0);
         handOn.push([e.loser, e.into]);
       } else if (e.kind === EventKind.Split) {
         const tv = e.tris!, tf = e.triFaces!;
@@ -233,11 +242,11 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
           touch(tf[i]!, z0);
         }
         stats.split += tf.length;
-        touchAround(e.loser, k - 1, z0);
+        relabel(e.loser, z0);
         faceEdges.delete(e.loser);
       } else {
         const zRe = phaseZ(k, REEMIT_PHASE);
-        touchAround(e.loser, k - 1, zRe);
+        relabel(e.loser, zRe);
         createdZ[e.into] = zRe;
         touch(e.into, zRe);
         handOn.push([e.loser, e.into]);
@@ -247,10 +256,7 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
     // The edges that end here leave their faces (as they were before the step) ...
     for (const e of died[k]!) {
       const edge = edges[e]!;
-      for (const f of [resolveFace(faces, edge.left, k - 1), resolveFace(faces, edge.right, k - 1)]) {
-        faceEdges.get(f)?.delete(e);
-        touch(f, z0);
-      }
+      for (const f of [resolveFace(faces, edge.left, k - 1), resolveFace(faces, edge.right, k - 1)]) faceEdges.get(f)?.delete(e);
     }
     // ... merged and replaced faces hand their edges on ...
     for (const [f, into] of handOn) {
@@ -262,12 +268,7 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
       for (const e of set) target.add(e);
     }
     // ... and the new edges join theirs.
-    for (const e of born[k]!) {
-      if (edges[e]!.stepHigh <= k) continue;
-      attach(e, k);
-      touch(resolveFace(faces, edges[e]!.left, k), z0);
-      touch(resolveFace(faces, edges[e]!.right, k), z0);
-    }
+    for (const e of born[k]!) if (edges[e]!.stepHigh > k) attach(e, k);
     // Simplification: replay each new version's removals on its parent's chain.
     for (const e of born[k]!) {
       const edge = edges[e]!;
