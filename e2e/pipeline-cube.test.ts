@@ -213,6 +213,31 @@ test('bgt_otterlo_400m cube', async (t) => {
   });
 });
 
+/** Pixels showing `winner` where `before` showed `loser`, not connected to the winner's other pixels. */
+function detachedGain(ids: Uint32Array, before: Uint32Array, loser: number, winner: number, w: number, h: number): number {
+  const seen = new Uint8Array(ids.length);
+  const stack: number[] = [];
+  for (let p = 0; p < ids.length; p++) {
+    if (ids[p] === winner && before[p] !== loser) {
+      seen[p] = 1;
+      stack.push(p);
+    }
+  }
+  while (stack.length > 0) {
+    const p = stack.pop()!;
+    const i = p % w, j = Math.floor(p / w);
+    for (let dj = -1; dj <= 1; dj++) for (let di = -1; di <= 1; di++) {
+      const ii = i + di, jj = j + dj, q = jj * w + ii;
+      if (ii < 0 || jj < 0 || ii >= w || jj >= h || seen[q] || ids[q] !== winner) continue;
+      seen[q] = 1;
+      stack.push(q);
+    }
+  }
+  let stray = 0;
+  for (let p = 0; p < ids.length; p++) if (ids[p] === winner && !seen[p]) stray++;
+  return stray;
+}
+
 /** z from which face f is shown: the floor, or its re-emit. */
 const faceStartZ = (t: Tgap, f: number): number => (t.faces[f]!.stepLow === 0 ? 0 : phaseZ(t.faces[f]!.stepLow, REEMIT_PHASE));
 
@@ -258,7 +283,7 @@ test('bgt_otterlo_400m smooth cube (ssc build --smooth)', async (t) => {
     for (const z of [0, zMax]) assert.deepEqual(smooth(view, z).ids, classic(view, z).ids, `z ${z}: smooth and classic differ`);
   });
 
-  await t.test('in a merge the loser\'s share falls monotonically from all to none, taken by the winner', () => {
+  await t.test('in every merge the loser\'s share falls monotonically from all to none, taken by the winner and attached to it', (t) => {
     const { surfaces: s, transitions } = buildSurfaces(tgap, { smooth: true });
     // The loser's ground box from its tilted triangles.
     const boxes = new Map<number, [number, number, number, number]>();
@@ -274,12 +299,17 @@ test('bgt_otterlo_400m smooth cube (ssc build --smooth)', async (t) => {
     }
     const tilted = transitions.filter((m) => m.tilted);
     assert.ok(tilted.length > 0.5 * transitions.length, `${tilted.length} of ${transitions.length} merges tilted`);
-    // Twelve merges spread over the generalization.
-    const picks = Array.from({ length: 12 }, (_, i) => tilted[Math.floor((i * (tilted.length - 1)) / 11)]!);
+    const picks = tilted;
+    let partWay = 0;
+    const detached: string[] = [];
     for (const m of picks) {
-      const view = fitView(tgap.meta.extent, 64, 64, boxes.get(m.loser));
-      // The last at the merge as the chunk stores it (float32).
-      const zs = Array.from({ length: 8 }, (_, i) => (i < 7 ? m.zStart + ((m.zMerge - m.zStart) * i) / 7 : Math.max(m.zMerge, Math.fround(m.zMerge))));
+      // The loser's box with a margin, so that the winner around it shows.
+      const [bx0, by0, bx1, by1] = boxes.get(m.loser)!;
+      const pad = Math.max(bx1 - bx0, by1 - by0) / 8;
+      const view = fitView(tgap.meta.extent, 64, 64, [bx0 - pad, by0 - pad, bx1 + pad, by1 + pad]);
+      // The first and last at the start and the merge as the chunks store them (float32).
+      const stored = (z: number): number => Math.max(z, Math.fround(z));
+      const zs = Array.from({ length: 8 }, (_, i) => (i === 0 ? stored(m.zStart) : i < 7 ? m.zStart + ((m.zMerge - m.zStart) * i) / 7 : stored(m.zMerge)));
       const at = zs.map((z) => smooth(view, z).ids);
       const footprint = at[0]!.reduce((n, f) => n + (f === m.loser ? 1 : 0), 0);
       assert.ok(footprint > 0, `merge of ${m.loser}: no pixel shows it`);
@@ -293,8 +323,21 @@ test('bgt_otterlo_400m smooth cube (ssc build --smooth)', async (t) => {
         return n / footprint;
       });
       assert.equal(shares[7], 0, `merge of ${m.loser}: shares ${shares.join(' ')}`);
+      // What the winner gained is attached to it: the winner's pixels in the footprint connect
+      // (8-neighbours) to a winner pixel outside it. Along the mesh it always is; a pixel can
+      // still come apart where the gain reaches the winner through a needle of a long, thin
+      // triangle (the front follows the triangulation's vertices).
+      const stray = at.map((ids) => detachedGain(ids, at[0]!, m.loser, m.into, 64, 64));
+      if (stray.some((n) => n > 0)) detached.push(`${m.loser}: ${stray.join(' ')}`);
       for (let i = 1; i < 8; i++) assert.ok(shares[i]! <= shares[i - 1]!, `merge of ${m.loser}: shares ${shares.join(' ')} rise`);
-      assert.ok(shares.slice(1, 7).some((x) => x > 0 && x < 1), `merge of ${m.loser}: the transition shows part-way (${shares.join(' ')})`);
+      if (shares.slice(1, 7).some((x) => x > 0 && x < 1)) partWay++;
     }
+    // Not all: where most of a loser's area lies in triangles with every corner on the shared
+    // boundary, it goes at the ramp's foot, before the second sample.
+    t.diagnostic(`${partWay} of ${picks.length} merges show part-way at 6 z inside the transition`);
+    assert.ok(partWay >= 0.8 * picks.length, `only ${partWay} of ${picks.length} merges show part-way`);
+    t.diagnostic(`${detached.length} merges with gained pixels apart from the winner (loser: pixels at the 8 z): ${detached.join('; ')}`);
+    // Measured: 2 of 337, a few pixels each (the needle of a sliver along a boundary with a third face).
+    assert.ok(detached.length <= 0.01 * picks.length, `${detached.length} merges with gained pixels apart from the winner: ${detached.join('; ')}`);
   });
 });
