@@ -78,6 +78,12 @@ test('a smooth merge tilts the loser from the shared boundary (hand-worked z and
     if (classic.lower[i] === L) assert.deepEqual(Array.from(classic.z.subarray(3 * i, 3 * i + 3)), [1 / 9, 1 / 9, 1 / 9]);
   }
 
+  // A chunk of merge 2's triangles alone: its box starts at their lowest vertex, the ramp's foot.
+  const merge2 = Uint32Array.from({ length: s.count }, (_, i) => i).filter((i) => s.lower[i] === Z && s.upper[i] === W);
+  const box = assembleChunk(s, merge2, t.xs, t.ys, () => 0).bbox;
+  assert.equal(box[2], 25 / 144);
+  assert.equal(box[5], s.zEnd[merge2[0]!]);
+
   // 100 x 40 pixels of 0.1: column c has its centre at x = 0.05 + 0.1 c.
   const view = fitView(t.meta.extent, 100, 40);
   const slice = slicer(t, s, view);
