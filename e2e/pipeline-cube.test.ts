@@ -1,15 +1,19 @@
 // ssc build / slice / inspect on bgt_otterlo_400m: the cube sliced through its chunks gives
 // the 2D maps of the tGAP (the oracle), chunking loses nothing, files round-trip bit-exactly,
-// builds are deterministic and damaged chunks are named.
+// builds are deterministic and damaged chunks are named; the smooth cube (--smooth) is a
+// partition at every z and its merges are gradual.
 import test from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, mkdirSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
-import { decodeChunk, encodeChunk } from '../format/chunk.js';
+import { decodeChunk, encodeChunk, type DecodedChunk } from '../format/chunk.js';
 import { parseSurface, surfaceZ } from '../format/slicing-surface.js';
-import { fitView, rasterizeAt } from '../preprocess/map/rasterize.js';
+import { fitView, rasterizeAt, type View } from '../preprocess/map/rasterize.js';
+import { CpuSlicer, sliceChunk } from '../preprocess/ssc/cpu-slicer.js';
+import { CubeReader } from '../preprocess/ssc/read-cube.js';
+import { buildSurfaces } from '../preprocess/ssc/surfaces.js';
 import { decodeTgap, encodeTgap, readTgap } from '../format/tgap.js';
-import { resolveFace } from '../format/tgap-model.js';
+import { faceEndZ, phaseZ, REEMIT_PHASE, resolveFace, type Tgap } from '../format/tgap-model.js';
 import { dataset, styleFile } from '../testing/paths.js';
 import { readIds } from '../testing/ids-file.js';
 import { runSsc } from '../testing/run-ssc.js';
@@ -206,5 +210,134 @@ test('bgt_otterlo_400m cube', async (t) => {
     assert.ok(rep.bytes.cv <= 0.25, `chunk sizes vary too much (CV ${rep.bytes.cv})`);
     assert.ok(rep.overhead <= 1.05, `chunking costs ${rep.overhead}`);
     assert.equal(rep.views.length, 8);
+  });
+});
+
+/** Pixels showing `winner` where `before` showed `loser`, not connected to the winner's other pixels. */
+function detachedGain(ids: Uint32Array, before: Uint32Array, loser: number, winner: number, w: number, h: number): number {
+  const seen = new Uint8Array(ids.length);
+  const stack: number[] = [];
+  for (let p = 0; p < ids.length; p++) {
+    if (ids[p] === winner && before[p] !== loser) {
+      seen[p] = 1;
+      stack.push(p);
+    }
+  }
+  while (stack.length > 0) {
+    const p = stack.pop()!;
+    const i = p % w, j = Math.floor(p / w);
+    for (let dj = -1; dj <= 1; dj++) for (let di = -1; di <= 1; di++) {
+      const ii = i + di, jj = j + dj, q = jj * w + ii;
+      if (ii < 0 || jj < 0 || ii >= w || jj >= h || seen[q] || ids[q] !== winner) continue;
+      seen[q] = 1;
+      stack.push(q);
+    }
+  }
+  let stray = 0;
+  for (let p = 0; p < ids.length; p++) if (ids[p] === winner && !seen[p]) stray++;
+  return stray;
+}
+
+/** z from which face f is shown: the floor, or its re-emit. */
+const faceStartZ = (t: Tgap, f: number): number => (t.faces[f]!.stepLow === 0 ? 0 : phaseZ(t.faces[f]!.stepLow, REEMIT_PHASE));
+
+test('bgt_otterlo_400m smooth cube (ssc build --smooth)', async (t) => {
+  const dir = tempDir(t);
+  const tgapFile = path.join(dir, 'o.tgap');
+  assert.equal(runSsc(['generalize', dataset('bgt_otterlo_400m.geojson'), '--style', styleFile('bgt.json'), '--out', tgapFile, '--quiet']).code, 0);
+  const cubes = { smooth: path.join(dir, 'smooth'), classic: path.join(dir, 'classic') };
+  for (const [name, out] of Object.entries(cubes)) {
+    const b = runSsc(['build', tgapFile, '--out', out, '--quiet', '--no-precompress', ...(name === 'smooth' ? ['--smooth'] : [])]);
+    assert.equal(b.code, 0, b.stderr);
+  }
+  const tgap = await readTgap(tgapFile);
+  const zMax = tgap.meta.steps;
+  /** A cube's slicer at a constant z, through the index (its z boxes cull) and the chunks. */
+  const openSlicer = async (dirName: string): Promise<(view: View, z: number) => CpuSlicer> => {
+    const reader = await CubeReader.open(dirName);
+    const chunks = new Map<string, DecodedChunk>();
+    for (const leaf of await reader.loadAll()) chunks.set(leaf.file, await reader.chunk(leaf));
+    return (view, z) => {
+      const sl = new CpuSlicer(view, () => z);
+      for (const leaf of reader.queryLoaded({ ground: view.bbox, zMin: z, zMax: z })) sliceChunk(sl, chunks.get(leaf.file)!);
+      return sl;
+    };
+  };
+  const smooth = await openSlicer(cubes.smooth), classic = await openSlicer(cubes.classic);
+  assert.equal((JSON.parse(readFileSync(path.join(cubes.smooth, 'index.json'), 'utf8')) as { meta: { smooth?: boolean } }).meta.smooth, true);
+
+  await t.test('every domain pixel shows exactly one face, alive, at 200 z', () => {
+    const view = fitView(tgap.meta.extent, W, H);
+    const domain = rasterizeAt(tgap, 0, view).ids;
+    for (let k = 0; k < 200; k++) {
+      const z = (zMax * k) / 199;
+      const ids = smooth(view, z).ids;
+      let bad = 0, first = '';
+      for (let p = 0; p < ids.length; p++) {
+        const f = ids[p]!;
+        const ok = domain[p] === 0 ? f === 0 : f > 0 && faceStartZ(tgap, f) <= z && z < faceEndZ(tgap.faces[f]!, zMax);
+        if (!ok && bad++ === 0) first = `pixel ${p} shows face ${f}`;
+      }
+      assert.equal(bad, 0, `z ${z}: ${bad} pixels wrong, first ${first}`);
+    }
+    for (const z of [0, zMax]) assert.deepEqual(smooth(view, z).ids, classic(view, z).ids, `z ${z}: smooth and classic differ`);
+  });
+
+  await t.test('in every merge the loser\'s share falls monotonically from all to none, taken by the winner and attached to it', (t) => {
+    const { surfaces: s, transitions } = buildSurfaces(tgap, { smooth: true });
+    // The loser's ground box from its tilted triangles.
+    const boxes = new Map<number, [number, number, number, number]>();
+    for (let i = 0; i < s.count; i++) {
+      const f = s.lower[i]!;
+      const b = boxes.get(f) ?? [Infinity, Infinity, -Infinity, -Infinity];
+      for (let j = 0; j < 3; j++) {
+        const v = s.v[3 * i + j]!;
+        b[0] = Math.min(b[0], tgap.xs[v]!); b[1] = Math.min(b[1], tgap.ys[v]!);
+        b[2] = Math.max(b[2], tgap.xs[v]!); b[3] = Math.max(b[3], tgap.ys[v]!);
+      }
+      boxes.set(f, b);
+    }
+    const tilted = transitions.filter((m) => m.tilted);
+    assert.ok(tilted.length > 0.5 * transitions.length, `${tilted.length} of ${transitions.length} merges tilted`);
+    const picks = tilted;
+    let partWay = 0;
+    const detached: string[] = [];
+    for (const m of picks) {
+      // The loser's box with a margin, so that the winner around it shows.
+      const [bx0, by0, bx1, by1] = boxes.get(m.loser)!;
+      const pad = Math.max(bx1 - bx0, by1 - by0) / 8;
+      const view = fitView(tgap.meta.extent, 64, 64, [bx0 - pad, by0 - pad, bx1 + pad, by1 + pad]);
+      // The first and last at the start and the merge as the chunks store them (float32).
+      const stored = (z: number): number => Math.max(z, Math.fround(z));
+      const zs = Array.from({ length: 8 }, (_, i) => (i === 0 ? stored(m.zStart) : i < 7 ? m.zStart + ((m.zMerge - m.zStart) * i) / 7 : stored(m.zMerge)));
+      const at = zs.map((z) => smooth(view, z).ids);
+      const footprint = at[0]!.reduce((n, f) => n + (f === m.loser ? 1 : 0), 0);
+      assert.ok(footprint > 0, `merge of ${m.loser}: no pixel shows it`);
+      const shares = at.map((ids, i) => {
+        let n = 0;
+        for (let p = 0; p < ids.length; p++) {
+          if (ids[p] === m.loser) n++;
+          // What the loser gives up goes to the winner; nothing else changes there.
+          else if (at[0]![p] === m.loser) assert.equal(ids[p], m.into, `merge of ${m.loser} into ${m.into} at z ${zs[i]}: pixel ${p} shows ${ids[p]}`);
+        }
+        return n / footprint;
+      });
+      assert.equal(shares[7], 0, `merge of ${m.loser}: shares ${shares.join(' ')}`);
+      // What the winner gained is attached to it: the winner's pixels in the footprint connect
+      // (8-neighbours) to a winner pixel outside it. Along the mesh it always is; a pixel can
+      // still come apart where the gain reaches the winner through a needle of a long, thin
+      // triangle (the front follows the triangulation's vertices).
+      const stray = at.map((ids) => detachedGain(ids, at[0]!, m.loser, m.into, 64, 64));
+      if (stray.some((n) => n > 0)) detached.push(`${m.loser}: ${stray.join(' ')}`);
+      for (let i = 1; i < 8; i++) assert.ok(shares[i]! <= shares[i - 1]!, `merge of ${m.loser}: shares ${shares.join(' ')} rise`);
+      if (shares.slice(1, 7).some((x) => x > 0 && x < 1)) partWay++;
+    }
+    // Not all: where most of a loser's area lies in triangles with every corner on the shared
+    // boundary, it goes at the ramp's foot, before the second sample.
+    t.diagnostic(`${partWay} of ${picks.length} merges show part-way at 6 z inside the transition`);
+    assert.ok(partWay >= 0.8 * picks.length, `only ${partWay} of ${picks.length} merges show part-way`);
+    t.diagnostic(`${detached.length} merges with gained pixels apart from the winner (loser: pixels at the 8 z): ${detached.join('; ')}`);
+    // Measured: 2 of 337, a few pixels each (the needle of a sliver along a boundary with a third face).
+    assert.ok(detached.length <= 0.01 * picks.length, `${detached.length} merges with gained pixels apart from the winner: ${detached.join('; ')}`);
   });
 });

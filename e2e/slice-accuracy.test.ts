@@ -1,5 +1,5 @@
 // The GPU's ID buffer against the CPU reference slicer (`ssc slice --ids`) on a real cube of
-// bgt_otterlo_400m: at several scales and for every kind of slicing surface, at least 99.5% of
+// bgt_otterlo_400m, classic and smooth (`ssc build --smooth`, tilted merges): at several scales and for every kind of slicing surface, at least 99.5% of
 // the pixels must show the same face, and every difference must lie on a boundary: a face
 // boundary of the reference image, or (rarely) within 1/16 pixel of a triangle edge, where the
 // GPU decides at its sub-pixel precision (SwiftShader snaps vertices to 1/16 pixel, and even
@@ -18,7 +18,7 @@ const W = 640, H = 480;
 /** At most this many differing pixels may be explained by sub-pixel precision alone. */
 const MAX_SUBPIXEL = Math.ceil(W * H * 1e-4);
 
-describe('GPU slicing equals the CPU reference slicer (bgt_otterlo_400m)', () => {
+for (const smooth of [false, true]) describe(`GPU slicing equals the CPU reference slicer (bgt_otterlo_400m${smooth ? ', smooth' : ''})`, () => {
   let cube: BuiltCube;
   let server: TestServer;
   let browser: Browser;
@@ -42,7 +42,7 @@ describe('GPU slicing equals the CPU reference slicer (bgt_otterlo_400m)', () =>
   }
 
   before(async () => {
-    cube = await buildCube(otterlo400, ['--no-precompress']);
+    cube = await buildCube(otterlo400, ['--no-precompress', ...(smooth ? ['--smooth'] : [])]);
     tris = await cubeTriangles(cube.dir);
     server = await startTestServer({ clientDir, cubeDir: cube.dir });
     browser = await launchChromium();

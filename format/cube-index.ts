@@ -82,6 +82,8 @@ const MetaSchema = v.object({
   baseScale: num(),
   baseFaces: num(),
   pixelSizeMm: v.optional(v.pipe(num(), v.gtValue(0, 'must be > 0')), PIXEL_SIZE_MM),
+  /** Built with smooth merges (tilted surfaces); absent in a classic cube. */
+  smooth: v.optional(v.boolean('must be true or false')),
   /** [step, facesAlive] knots in increasing step order. */
   scaleTable: v.pipe(v.array(v.tuple([num(), num()]), 'must be [step, facesAlive] pairs'), v.minLength(1, 'must not be empty')),
   style: StyleSchema,

@@ -4,6 +4,9 @@
 import assert from 'node:assert/strict';
 import type { InputFeature } from '../preprocess/io/read-input.js';
 import type { ClassStyle, Style } from '../preprocess/style.js';
+import { TGAP_VERSION } from '../format/tgap.js';
+import type { Tgap } from '../format/tgap-model.js';
+import { generalize } from '../preprocess/tgap/generalize.js';
 import { PlanarState } from '../preprocess/tgap/planar-state.js';
 import { buildTopology, type Topology } from '../preprocess/topology/build-topology.js';
 
@@ -87,4 +90,23 @@ export function fixtureStyle(classes: { key: string; weight?: number; linear?: b
 /** Equal up to rounding (areas summed from float coordinates). */
 export function assertNear(actual: number, expected: number, what: string): void {
   assert.ok(Math.abs(actual - expected) < 1e-9, `${what}: ${actual}, expected ${expected}`);
+}
+
+/** The fixture generalized (equal weights unless `style` says otherwise) into a whole tGAP. */
+export function fixtureTgap(faces: FixtureFace[], classes: string[], style: Style = fixtureStyle(classes.map((key) => ({ key })))): Tgap {
+  const topo = topologyOf(faces);
+  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+  for (let v = 0; v < topo.vertexCount; v++) {
+    x0 = Math.min(x0, topo.xs[v]!); x1 = Math.max(x1, topo.xs[v]!);
+    y0 = Math.min(y0, topo.ys[v]!); y1 = Math.max(y1, topo.ys[v]!);
+  }
+  const g = generalize(topo, classIndexOf(faces, classes), style, { baseScale: style.baseScale, resolutionMm: style.resolutionMm });
+  const steps = g.events.length === 0 ? 0 : g.events[g.events.length - 1]!.step;
+  return {
+    meta: {
+      version: TGAP_VERSION, crs: 'EPSG:28992', extent: [x0, y0, x1, y1], baseScale: style.baseScale, resolutionMm: style.resolutionMm,
+      baseFaces: topo.faceCount - 1, steps, facesAlive: g.facesAlive, holes: [], repairs: {}, source: 'fixture', style: {}, attributes: [], options: {},
+    },
+    xs: g.xs, ys: g.ys, faces: g.faces, edges: g.edges, events: g.events,
+  };
 }

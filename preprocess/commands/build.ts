@@ -13,6 +13,7 @@ export const usage = `ssc build <input.geojson|file.tgap> --out <dir> [options]
   --chunk-bytes <n>         target chunk size (default 262144)
   --sub-index-bytes <n>     largest index file before subtrees move to sub-index files (default 131072)
   --no-precompress          do not write the .gz and .br copies
+  --smooth                  smooth merges: the winner takes the loser's area gradually (tilted surfaces)
   --quiet                   no progress on stderr
 Other ssc generalize options (--class-property, --crs, --layer, --precision, --base-scale,
 --allow-holes, --group) apply to polygon input. The directory is replaced only when the build succeeds.`;
@@ -41,6 +42,7 @@ export async function run(argv: string[]): Promise<void> {
       'chunk-bytes': { type: 'string' },
       'sub-index-bytes': { type: 'string' },
       'no-precompress': { type: 'boolean' },
+      smooth: { type: 'boolean' },
       ...generalizeOptionSpecs,
     },
   });
@@ -56,6 +58,7 @@ export async function run(argv: string[]): Promise<void> {
     ...(chunkBytes !== undefined ? { chunkBytes } : {}),
     ...(subIndexBytes !== undefined ? { subIndexBytes } : {}),
     precompress: !values['no-precompress'],
+    smooth: values.smooth ?? false,
     ...(options.log ? { log: options.log } : {}),
   });
   options.log?.(`build timings (ms): ${Object.entries(r.timings).map(([k, v]) => `${k} ${v}`).join(', ')}`);

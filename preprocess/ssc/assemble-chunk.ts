@@ -16,7 +16,7 @@ export function assembleChunk(
   s: Surfaces, tris: ArrayLike<number>, xs: Float64Array, ys: Float64Array, classOf: (face: number) => number,
 ): AssembledChunk {
   const local = new Map<number, number>();
-  const verts: number[] = []; // [vertex id, triangle it came from] pairs
+  const verts: number[] = []; // [vertex id, its corner (3 * triangle + j) it came from] pairs
   const indices: number[] = [];
   let x0 = Infinity, y0 = Infinity, z0 = Infinity, x1 = -Infinity, y1 = -Infinity, z1 = -Infinity;
   for (let k = 0; k < tris.length; k++) {
@@ -29,13 +29,13 @@ export function assembleChunk(
       if (li === undefined) {
         li = verts.length / 2;
         local.set(key, li);
-        verts.push(v, i);
+        verts.push(v, 3 * i + j);
         x0 = Math.min(x0, xs[v]!); x1 = Math.max(x1, xs[v]!);
         y0 = Math.min(y0, ys[v]!); y1 = Math.max(y1, ys[v]!);
       }
       indices.push(li);
     }
-    z0 = Math.min(z0, s.z[i]!);
+    z0 = Math.min(z0, s.zMin[i]!);
     z1 = Math.max(z1, s.zEnd[i]!);
   }
   const V = verts.length / 2;
@@ -45,10 +45,10 @@ export function assembleChunk(
   const upper = new Uint32Array(V), lower = new Uint32Array(V);
   const upperClass = new Uint16Array(V), lowerClass = new Uint16Array(V);
   for (let k = 0; k < V; k++) {
-    const v = verts[2 * k]!, i = verts[2 * k + 1]!;
+    const v = verts[2 * k]!, corner = verts[2 * k + 1]!, i = Math.floor(corner / 3);
     positions[3 * k] = xs[v]! - ox;
     positions[3 * k + 1] = ys[v]! - oy;
-    positions[3 * k + 2] = s.z[i]!;
+    positions[3 * k + 2] = s.z[corner]!;
     upper[k] = s.upper[i]!;
     lower[k] = s.lower[i]!;
     upperClass[k] = s.upper[i]! > 0 ? classOf(s.upper[i]!) : NO_CLASS;

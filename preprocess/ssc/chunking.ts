@@ -58,7 +58,7 @@ function triangleBoxes(s: Surfaces, xs: Float64Array, ys: Float64Array): Triangl
     b.x1[i] = Math.max(xs[p]!, xs[q]!, xs[r]!);
     b.y0[i] = Math.min(ys[p]!, ys[q]!, ys[r]!);
     b.y1[i] = Math.max(ys[p]!, ys[q]!, ys[r]!);
-    b.z0[i] = s.z[i]!;
+    b.z0[i] = s.zMin[i]!;
     // Already capped at the top of the cube by buildSurfaces.
     b.z1[i] = s.zEnd[i]!;
   }

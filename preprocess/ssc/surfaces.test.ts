@@ -1,0 +1,127 @@
+// Smooth merges on hand-made partitions, sliced through a real chunk by the CPU slicer.
+//
+//   +--------+----+--------+     W = [0,4] x [0,4]   area 16 (face 1)
+//   |        |    |        |     L = [4,6] x [0,4]   area 8  (face 2)
+//   |   W    | L  |   Z    |     Z = [6,10] x [0,4]  area 16 (face 3)
+//   |        |    |        |
+//   +--------+----+--------+
+//
+// Equal weights: L goes first (step 1), into W (a tie of shared lengths, 4 and 4, goes to the
+// lower id); then Z (16 against 24) into W (step 2).
+// Merge 1: L was made at the floor and W too: zStart = 0, zMerge = phaseZ(1, 0) = 1/9. The ramp
+// starts a 16th of the way up, at 1/144, on the shared side x = 4, and reaches 1/9 at x = 6
+// (distance 2 along L's edges): z = 1/144 + (1/9 - 1/144) (x - 4) / 2.
+// Merge 2: L's merge relabelled Z's west side (L|Z became W|Z) at 1/9, so zStart = 1/9,
+// zMerge = phaseZ(2, 0) = 10/9; the ramp starts at 1/9 + 1/16 = 25/144 at x = 6 and reaches
+// 10/9 at x = 10.
+import test from 'node:test';
+import assert from 'node:assert/strict';
+import { decodeChunk } from '../../format/chunk.js';
+import { EventKind, faceEndZ, phaseZ, REEMIT_PHASE, type Tgap } from '../../format/tgap-model.js';
+import { fixtureTgap, rect, type FixtureFace } from '../../testing/planar-fixtures.js';
+import { fitView, type View } from '../map/rasterize.js';
+import { assembleChunk } from './assemble-chunk.js';
+import { CpuSlicer, sliceChunk } from './cpu-slicer.js';
+import { buildSurfaces, type Surfaces } from './surfaces.js';
+
+const W = 1, L = 2, Z = 3;
+const THREE: FixtureFace[] = [
+  { cls: 'a', rings: [rect(0, 0, 4, 4)] },
+  { cls: 'a', rings: [rect(4, 0, 6, 4)] },
+  { cls: 'a', rings: [rect(6, 0, 10, 4)] },
+];
+
+/** Every surface triangle in one chunk, decoded: slices then see what the map would. */
+function slicer(t: Tgap, s: Surfaces, view: View): (z: number) => Uint32Array {
+  const all = Uint32Array.from({ length: s.count }, (_, i) => i);
+  const chunk = decodeChunk(assembleChunk(s, all, t.xs, t.ys, (f) => t.faces[f]!.classIndex).bytes);
+  return (z) => {
+    const sl = new CpuSlicer(view, () => z);
+    sliceChunk(sl, chunk);
+    return sl.ids;
+  };
+}
+
+/** Columns (pixel centre x) of the middle row, with the face at each. */
+function middleRow(ids: Uint32Array, view: View): number[] {
+  const j = Math.floor(view.height / 2);
+  return Array.from(ids.subarray(j * view.width, (j + 1) * view.width));
+}
+
+test('a smooth merge tilts the loser from the shared boundary (hand-worked z and split)', () => {
+  const t = fixtureTgap(THREE, ['a']);
+  assert.deepEqual(t.events.map((e) => [e.kind, e.step, e.loser, e.into]), [[EventKind.Merge, 1, L, W], [EventKind.Merge, 2, Z, W]]);
+  const { surfaces: s, transitions } = buildSurfaces(t, { smooth: true });
+  assert.deepEqual(transitions.map((m) => [m.loser, m.into, m.zStart, m.zMerge]), [[L, W, 0, phaseZ(1, 0)], [Z, W, phaseZ(1, 0), phaseZ(2, 0)]]);
+  const ramps: Record<number, { x0: number; z0: number; x1: number; z1: number }> = {
+    [L]: { x0: 4, z0: 1 / 144, x1: 6, z1: 1 / 9 },
+    [Z]: { x0: 6, z0: 25 / 144, x1: 10, z1: 10 / 9 },
+  };
+  let tilted = 0;
+  for (let i = 0; i < s.count; i++) {
+    const r = ramps[s.lower[i]!];
+    if (!r) continue;
+    tilted++;
+    assert.equal(s.upper[i], W);
+    for (let j = 0; j < 3; j++) {
+      const x = t.xs[s.v[3 * i + j]!]!;
+      const want = r.z0 + ((r.z1 - r.z0) * (x - r.x0)) / (r.x1 - r.x0);
+      assert.ok(Math.abs(s.z[3 * i + j]! - want) < 1e-12, `triangle ${i} vertex at x = ${x}: z ${s.z[3 * i + j]}, expected ${want}`);
+    }
+    assert.equal(s.zMin[i], Math.min(s.z[3 * i]!, s.z[3 * i + 1]!, s.z[3 * i + 2]!));
+  }
+  assert.equal(tilted, 4, 'two triangles per rectangle');
+  // Without --smooth the same triangles lie flat at the merge.
+  const classic = buildSurfaces(t).surfaces;
+  assert.deepEqual(Array.from(classic.v.subarray(0, 3 * classic.count)), Array.from(s.v.subarray(0, 3 * s.count)));
+  for (let i = 0; i < classic.count; i++) {
+    if (classic.lower[i] === L) assert.deepEqual(Array.from(classic.z.subarray(3 * i, 3 * i + 3)), [1 / 9, 1 / 9, 1 / 9]);
+  }
+
+  // A chunk of merge 2's triangles alone: its box starts at their lowest vertex, the ramp's foot.
+  const merge2 = Uint32Array.from({ length: s.count }, (_, i) => i).filter((i) => s.lower[i] === Z && s.upper[i] === W);
+  const box = assembleChunk(s, merge2, t.xs, t.ys, () => 0).bbox;
+  assert.equal(box[2], 25 / 144);
+  assert.equal(box[5], s.zEnd[merge2[0]!]);
+
+  // 100 x 40 pixels of 0.1: column c has its centre at x = 0.05 + 0.1 c.
+  const view = fitView(t.meta.extent, 100, 40);
+  const slice = slicer(t, s, view);
+  const faceAt = (row: number[], x: number): number => row[Math.round((x - 0.05) / 0.1)]!;
+  // A quarter of the way up merge 1's ramp: W has taken L up to x = 4 + 2/4 = 4.5.
+  const row1 = middleRow(slice(1 / 144 + (1 / 9 - 1 / 144) / 4), view);
+  for (const [x, f] of [[0.05, W], [3.95, W], [4.45, W], [4.55, L], [5.95, L], [6.05, Z], [9.95, Z]] as const) assert.equal(faceAt(row1, x), f, `x = ${x}`);
+  // Half way up merge 2's ramp: W has taken Z up to x = 6 + 4/2 = 8.
+  const row2 = middleRow(slice(25 / 144 + (10 / 9 - 25 / 144) / 2), view);
+  for (const [x, f] of [[5.05, W], [7.95, W], [8.05, Z], [9.95, Z]] as const) assert.equal(faceAt(row2, x), f, `x = ${x}`);
+});
+
+/** z from which face f is shown: the floor, or its re-emit. */
+const faceStartZ = (t: Tgap, f: number): number => (t.faces[f]!.stepLow === 0 ? 0 : phaseZ(t.faces[f]!.stepLow, REEMIT_PHASE));
+
+test('a smooth cube is a partition at every z and equals the classic one at the floor and the top', () => {
+  // A 4 x 3 grid of rectangles of uneven sizes and two classes.
+  const xsCut = [0, 3, 4, 8, 9], ysCut = [0, 2, 5, 6];
+  const faces: FixtureFace[] = [];
+  for (let j = 0; j < 3; j++) {
+    for (let i = 0; i < 4; i++) faces.push({ cls: (i + j) % 2 ? 'a' : 'b', rings: [rect(xsCut[i]!, ysCut[j]!, xsCut[i + 1]!, ysCut[j + 1]!)] });
+  }
+  const t = fixtureTgap(faces, ['a', 'b']);
+  const smooth = buildSurfaces(t, { smooth: true });
+  assert.ok(smooth.stats.tiltedMerges >= 5, `${smooth.stats.tiltedMerges} merges tilted`);
+  const view = fitView(t.meta.extent, 90, 60);
+  const slice = slicer(t, smooth.surfaces, view);
+  const zMax = t.meta.steps;
+  for (let k = 0; k < 200; k++) {
+    const z = (zMax * k) / 199;
+    const ids = slice(z);
+    for (let p = 0; p < ids.length; p++) {
+      const f = ids[p]!;
+      assert.ok(f > 0, `z ${z}: pixel ${p} shows no face`);
+      assert.ok(faceStartZ(t, f) <= z && z < faceEndZ(t.faces[f]!, zMax), `z ${z}: pixel ${p} shows face ${f}, not alive`);
+    }
+  }
+  const classic = slicer(t, buildSurfaces(t).surfaces, view);
+  assert.deepEqual(slice(0), classic(0));
+  assert.deepEqual(slice(zMax), classic(zMax));
+});
