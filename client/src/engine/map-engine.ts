@@ -11,6 +11,7 @@ import type { Camera } from '../geometry/camera.js';
 import { groundToPixel, pixelToGround, type Bbox, type ViewGeometry } from '../geometry/view.js';
 import { ChunkSource } from '../source/chunk-source.js';
 import type { ChunkStatus, SourceErrorInfo, SourceOptions } from '../source/worker-protocol.js';
+import { showLoadError } from '../ui/load-error.js';
 import { showWebGl2Missing } from '../ui/webgl-missing.js';
 import { ChunkResidency } from './chunk-residency.js';
 import { FrameLoop, type RenderSettings, type RenderStats } from './frame-loop.js';
@@ -18,7 +19,7 @@ import { MapCanvas } from './map-canvas.js';
 import { featuresAt, type Feature } from './picking.js';
 
 export interface EngineOptions {
-  /** URL of the cube directory (ending in /) or of its index.json. */
+  /** URL of the cube's directory (with or without a trailing /) or of its index.json. */
   source: string;
   /** Instead of the whole extent: the ground box the first view shows whole. */
   bounds?: Bbox;
@@ -113,6 +114,7 @@ export class MapEngine extends Evented<EngineEvents> {
       // A failed chunk may be all that kept the map from idling.
       this.loop?.schedule();
     });
+    this.source.on('failed', (e) => showLoadError(container, e));
     this.canvas.measure();
   }
 
