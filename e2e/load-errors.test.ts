@@ -78,6 +78,8 @@ describe('load errors in the container, and the source URL (bgt_otterlo_400m)', 
     await alert.waitFor({ state: 'visible', timeout: 30_000 });
     const text = await alert.innerText();
     const errors = await mp.page.evaluate(() => (globalThis as unknown as { errors: ErrorEvent[] }).errors);
+    // A page waiting for the map is not left waiting.
+    assert.equal(await mp.page.evaluate(() => (globalThis as unknown as VarioWindow).map.whenIdle().then((r) => r.complete)), false);
     return { text, errors };
   }
 

@@ -63,6 +63,8 @@ export class MapEngine extends Evented<EngineEvents> {
   private readonly loop: FrameLoop | null = null;
   private readonly settings: RenderSettings;
   private readonly startTime = performance.now();
+  /** The index could not be loaded: nothing will ever be drawn. */
+  private failed = false;
 
   constructor(
     container: HTMLElement,
@@ -114,7 +116,12 @@ export class MapEngine extends Evented<EngineEvents> {
       // A failed chunk may be all that kept the map from idling.
       this.loop?.schedule();
     });
-    this.source.on('failed', (e) => showLoadError(container, e));
+    this.source.on('failed', (e) => {
+      this.failed = true;
+      showLoadError(container, e);
+      // Nothing more will be fetched or drawn: a page waiting for the map learns it is over.
+      this.fire('idle', { complete: false });
+    });
     this.canvas.measure();
   }
 
@@ -198,6 +205,7 @@ export class MapEngine extends Evented<EngineEvents> {
 
   /** Resolves at the next idle, or now when the map is idle. */
   whenIdle(): Promise<{ complete: boolean }> {
+    if (this.failed) return Promise.resolve({ complete: false });
     return this.loop ? this.loop.whenIdle(() => this.once('idle')) : this.once('idle');
   }
 
