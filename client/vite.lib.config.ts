@@ -2,7 +2,8 @@
 // (vario-map.js, its worker a file beside it) and the stylesheet; `--mode umd` the script-tag
 // build (vario-map.umd.js, global `vario`) with the worker inlined, by swapping
 // create-worker.ts for create-worker-inline.ts. The type declarations come from
-// tsconfig.lib.json.
+// tsconfig.lib.json, and an empty one for the stylesheet (package.json's exports), so that
+// `import 'vario-scale-map/vario-map.css'` type-checks without a bundler's client types.
 import { rmSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vite';
@@ -32,7 +33,9 @@ export default defineConfig(({ mode }) => {
         cssFileName: 'vario-map',
       },
     },
-    worker: { format: umd ? 'iife' : 'es' },
+    // The worker is one file, its lazy import (pako) inlined: a page's bundler takes the
+    // prebuilt worker over as a single asset and does not follow that import, which would fail.
+    worker: { format: umd ? 'iife' : 'es', rolldownOptions: { output: { codeSplitting: false } } },
     plugins: [
       {
         name: 'clear-lib',
@@ -40,6 +43,11 @@ export default defineConfig(({ mode }) => {
         buildStart() {
           // The ES build runs first and starts from an empty folder (the types are written after).
           if (!umd) rmSync(outDir, { recursive: true, force: true });
+        },
+        generateBundle(_options, bundle) {
+          if (!umd) this.emitFile({ type: 'asset', fileName: 'vario-map.css.d.ts', source: '// The stylesheet: imported for its effect only.\nexport {};\n' });
+          // The inlined worker's source map has no file to belong to (and would be shipped).
+          else for (const name of Object.keys(bundle)) if (/^assets\/chunk-worker-[\w-]+\.js\.map$/.test(name)) delete bundle[name];
         },
       },
     ],

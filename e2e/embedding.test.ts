@@ -2,32 +2,17 @@
 // (UMD) build with its inlined worker, and the ES module build with its worker file; and
 // remove(), which must leave no worker, no GPU context and no listener behind.
 import assert from 'node:assert/strict';
-import { cp, mkdtemp, rm, writeFile } from 'node:fs/promises';
-import { tmpdir } from 'node:os';
-import path from 'node:path';
 import { after, afterEach, before, describe, test } from 'node:test';
-import type { Browser, Page } from 'playwright-core';
-import { launchChromium, openMap, type MapPage } from './helpers/browser.js';
-import { buildCube, otterlo400, readCube, repoRoot, type BuiltCube, type CubeContents } from './helpers/cube.js';
+import type { Page } from 'playwright-core';
+import { openMap, type MapPage } from './helpers/browser.js';
+import { readCube, type CubeContents } from './helpers/cube.js';
+import { LIB_PAGE_HEAD, startLibSite, type LibSite } from './helpers/lib-site.js';
 import { hexColour, pixel, screenshot } from './helpers/map-page.js';
 import { checkAndClose } from './helpers/test-bed.js';
-import { startTestServer, type TestServer } from './helpers/test-server.js';
 import { camera, idle, settle, type VarioWindow } from './helpers/vario-page.js';
 
-const HEAD = `<!doctype html>
-<html lang="en">
-<head>
-  <meta charset="utf-8">
-  <title>Map</title>
-  <link rel="icon" href="data:,">
-  <link rel="stylesheet" href="lib/vario-map.css">
-  <style>html, body { margin: 0; height: 100%; } #map { position: absolute; inset: 0; }</style>
-</head>
-<body>
-  <div id="map"></div>`;
-
 const PAGES: Record<string, string> = {
-  'script-tag.html': `${HEAD}
+  'script-tag.html': `${LIB_PAGE_HEAD}
   <script src="lib/vario-map.umd.js"></script>
   <script>
     var map = new vario.VarioMap({ container: 'map', source: 'cube/index.json' });
@@ -37,7 +22,7 @@ const PAGES: Record<string, string> = {
 </body>
 </html>
 `,
-  'module.html': `${HEAD}
+  'module.html': `${LIB_PAGE_HEAD}
   <script type="module">
     import { VarioMap, ZoomControl, ScaleBar } from './lib/vario-map.js';
     const map = new VarioMap({ container: 'map', source: 'cube/index.json' });
@@ -49,7 +34,7 @@ const PAGES: Record<string, string> = {
 </html>
 `,
   // The map is made and removed on the test's command, with every part that listens to something.
-  'remove.html': `${HEAD}
+  'remove.html': `${LIB_PAGE_HEAD}
   <script src="lib/vario-map.umd.js"></script>
   <script>
     window.create = function () {
@@ -65,21 +50,13 @@ const PAGES: Record<string, string> = {
 };
 
 describe('the library builds in plain pages (bgt_otterlo_400m)', () => {
-  let cube: BuiltCube;
+  let lib: LibSite;
   let contents: CubeContents;
-  let site: string;
-  let server: TestServer;
-  let browser: Browser;
   let mp: MapPage | null = null;
 
   before(async () => {
-    cube = await buildCube(otterlo400, ['--no-precompress']);
-    contents = await readCube(cube.dir);
-    site = await mkdtemp(path.join(tmpdir(), 'ssc-site-'));
-    await cp(path.join(repoRoot, 'dist/lib'), path.join(site, 'lib'), { recursive: true });
-    for (const [name, html] of Object.entries(PAGES)) await writeFile(path.join(site, name), html);
-    server = await startTestServer({ clientDir: site, cubeDir: cube.dir });
-    browser = await launchChromium();
+    lib = await startLibSite(PAGES);
+    contents = await readCube(lib.cube.dir);
   });
 
   afterEach(async () => {
@@ -88,14 +65,11 @@ describe('the library builds in plain pages (bgt_otterlo_400m)', () => {
   });
 
   after(async () => {
-    await browser?.close();
-    await server?.close();
-    await cube?.remove();
-    if (site) await rm(site, { recursive: true, force: true });
+    await lib?.close();
   });
 
   async function open(name: string): Promise<{ page: Page }> {
-    mp = await openMap(browser, server.url, {}, { page: name });
+    mp = await openMap(lib.browser, lib.server.url, {}, { page: name });
     return { page: mp.page };
   }
 

@@ -8,7 +8,7 @@ import type { Easing } from './motion/easing.js';
 
 export interface VarioMapOptions extends Partial<HandlerFlags>, Omit<EngineOptions, 'source' | 'uploadBytesPerFrame'> {
   container: HTMLElement | string;
-  /** URL of the cube's index.json (or its directory, ending in /). */
+  /** URL of the cube's index.json (a path ending in .json), or of its directory (with or without a trailing /). */
   source: string;
   /** Ground coordinates of the centre (default: the centre of `bounds`, or of the extent). */
   center?: [number, number];

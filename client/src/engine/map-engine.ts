@@ -11,6 +11,7 @@ import type { Camera } from '../geometry/camera.js';
 import { groundToPixel, pixelToGround, type Bbox, type ViewGeometry } from '../geometry/view.js';
 import { ChunkSource } from '../source/chunk-source.js';
 import type { ChunkStatus, SourceErrorInfo, SourceOptions } from '../source/worker-protocol.js';
+import { showLoadError } from '../ui/load-error.js';
 import { showWebGl2Missing } from '../ui/webgl-missing.js';
 import { ChunkResidency } from './chunk-residency.js';
 import { FrameLoop, type RenderSettings, type RenderStats } from './frame-loop.js';
@@ -18,7 +19,7 @@ import { MapCanvas } from './map-canvas.js';
 import { featuresAt, type Feature } from './picking.js';
 
 export interface EngineOptions {
-  /** URL of the cube directory (ending in /) or of its index.json. */
+  /** URL of the cube's directory (with or without a trailing /) or of its index.json. */
   source: string;
   /** Instead of the whole extent: the ground box the first view shows whole. */
   bounds?: Bbox;
@@ -62,6 +63,8 @@ export class MapEngine extends Evented<EngineEvents> {
   private readonly loop: FrameLoop | null = null;
   private readonly settings: RenderSettings;
   private readonly startTime = performance.now();
+  /** The index could not be loaded: nothing will ever be drawn. */
+  private failed = false;
 
   constructor(
     container: HTMLElement,
@@ -112,6 +115,12 @@ export class MapEngine extends Evented<EngineEvents> {
       this.fire('error', e);
       // A failed chunk may be all that kept the map from idling.
       this.loop?.schedule();
+    });
+    this.source.on('failed', (e) => {
+      this.failed = true;
+      showLoadError(container, e);
+      // Nothing more will be fetched or drawn: a page waiting for the map learns it is over.
+      this.fire('idle', { complete: false });
     });
     this.canvas.measure();
   }
@@ -196,6 +205,7 @@ export class MapEngine extends Evented<EngineEvents> {
 
   /** Resolves at the next idle, or now when the map is idle. */
   whenIdle(): Promise<{ complete: boolean }> {
+    if (this.failed) return Promise.resolve({ complete: false });
     return this.loop ? this.loop.whenIdle(() => this.once('idle')) : this.once('idle');
   }
 

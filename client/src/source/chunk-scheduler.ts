@@ -183,11 +183,12 @@ function chunkError(err: unknown, file: string, url: string): SourceErrorInfo {
   return { kind: 'network', message: `${file}: ${(err as Error).message}`, url, file };
 }
 
-export function indexError(err: unknown): SourceErrorInfo {
+export function indexError(err: unknown, url = ''): SourceErrorInfo {
   if (err instanceof FetchFailure) {
     const info: SourceErrorInfo = { kind: err.kind === 'http' ? 'http' : 'network', message: err.message, url: err.url };
     if (err.status !== undefined) info.status = err.status;
     return info;
   }
-  return { kind: 'index', message: (err as Error).message, url: '' };
+  // Not JSON, or JSON that is not an index: the file is not a cube's.
+  return { kind: 'index', message: err instanceof Error ? err.message : String(err), url };
 }

@@ -3,6 +3,7 @@
 import type { CubeMeta } from '../../../format/cube-index.js';
 import { Evented } from '../events.js';
 import { createChunkWorker } from './create-worker.js';
+import { indexUrl } from './index-url.js';
 import type { ChunkPayload, ChunkStatus, FeatureInfo, FromWorker, NeededChunks, SourceErrorInfo, SourceOptions, ToWorker, ViewRequest } from './worker-protocol.js';
 
 export interface ChunkSourceEvents {
@@ -11,6 +12,8 @@ export interface ChunkSourceEvents {
   needed: NeededChunks;
   status: { file: string; status: ChunkStatus };
   error: SourceErrorInfo;
+  /** The index could not be loaded (after 'error'): the map has nothing to show. */
+  failed: SourceErrorInfo;
 }
 
 export const defaultSourceOptions: SourceOptions = { concurrency: 6, retries: 5, backoffMs: 250, maxBackoffMs: 4000 };
@@ -26,8 +29,7 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
 
   constructor(url: string, options: Partial<SourceOptions> = {}) {
     super();
-    // The index URL: a cube directory (ending in /) means its index.json.
-    this.url = new URL(url.endsWith('/') ? `${url}index.json` : url, location.href).href;
+    this.url = indexUrl(url, location.href);
     this.worker = createChunkWorker();
     this.worker.addEventListener('message', (ev: MessageEvent<FromWorker>) => this.receive(ev.data));
     this.worker.addEventListener('error', (ev) => this.fire('error', { kind: 'index', message: `chunk worker failed: ${ev.message}`, url: this.url }));
@@ -112,6 +114,10 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
         break;
       case 'error':
         this.fire('error', msg.error);
+        break;
+      case 'index-failed':
+        this.fire('error', msg.error);
+        this.fire('failed', msg.error);
         break;
       case 'features':
         this.answer(msg.id, msg.features, msg.error);

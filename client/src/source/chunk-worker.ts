@@ -34,7 +34,7 @@ scope.addEventListener('message', (ev) => {
           pendingView = null;
         },
         (err: unknown) => {
-          post({ type: 'error', error: indexError(err) });
+          post({ type: 'index-failed', error: indexError(err, msg.url) });
           throw err;
         },
       );

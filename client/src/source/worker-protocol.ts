@@ -97,5 +97,7 @@ export type FromWorker =
   | { type: 'status'; file: string; status: ChunkStatus }
   | { type: 'chunk'; chunk: ChunkPayload }
   | { type: 'error'; error: SourceErrorInfo }
+  // The index could not be loaded: nothing will follow.
+  | { type: 'index-failed'; error: SourceErrorInfo }
   | { type: 'features'; id: number; features: (FeatureInfo | null)[]; error?: string }
   | { type: 'loaded-urls'; id: number; urls: string[] };
