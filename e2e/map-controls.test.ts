@@ -1,11 +1,39 @@
 // The map's controls and behaviour for keyboard, touch and screen-reader users, through the
-// demo page (the public API) with real input: the focus ring shows over the canvas.
+// demo page (the public API) with real input: the focus ring shows over the canvas, and on a
+// touch screen every control button is at least 44 x 44 CSS px.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import type { Page } from 'playwright-core';
 import { hexColour, pixel, screenshot } from './helpers/map-page.js';
 import { useTestBed } from './helpers/test-bed.js';
 import { openDemo, type PageWindow } from './helpers/vario-page.js';
+
+/** What the size test reads in the page (the Node build has no DOM types). */
+interface SizedButton {
+  getAttribute(name: string): string | null;
+  closest(selector: string): object | null;
+  getBoundingClientRect(): { width: number; height: number };
+}
+interface SizingWindow {
+  document: { querySelectorAll(selector: string): Iterable<SizedButton> };
+  matchMedia(query: string): { matches: boolean };
+}
+
+/** The label and CSS size of every shown button of the library's controls. */
+function controlButtons(page: Page): Promise<{ coarse: boolean; buttons: { label: string; width: number; height: number }[] }> {
+  return page.evaluate(() => {
+    const w = globalThis as unknown as SizingWindow;
+    const buttons = [...w.document.querySelectorAll('.vario-map-control-container button')]
+      // The demo's info box is the page's own, not a control of the library.
+      .filter((b) => b.closest('.demo-info') === null)
+      .map((b) => {
+        const r = b.getBoundingClientRect(); // a DOMRect's sizes are getters: not spreadable
+        return { label: b.getAttribute('aria-label') ?? '', width: r.width, height: r.height };
+      })
+      .filter((b) => b.width > 0);
+    return { coarse: w.matchMedia('(pointer: coarse)').matches, buttons };
+  });
+}
 
 describe('map controls (bgt_otterlo_400m)', () => {
   const bed = useTestBed(['--no-precompress']);
@@ -28,6 +56,26 @@ describe('map controls (bgt_otterlo_400m)', () => {
       const after = pixel(focused, i, j);
       assert.deepEqual(after, ring, `the ring at (${i}, ${j}): ${after}`);
       assert.notDeepEqual(before, ring, `no ring at (${i}, ${j}) without focus`);
+    }
+  });
+
+  test('on a touch screen every control button is at least 44 x 44 px; with a mouse, 30 x 30', async () => {
+    bed.page = await openDemo(bed.browser, bed.server.url, {}, { hasTouch: true, isMobile: true });
+    let page = bed.page.page;
+    await page.tap('.vario-map-settings-toggle'); // its panel's buttons too
+    const touch = await controlButtons(page);
+    assert.ok(touch.coarse, 'a coarse pointer');
+    for (const name of ['Zoom in', 'Zoom out', 'Settings', 'Clear the log']) assert.ok(touch.buttons.some((b) => b.label === name), `${name} measured`);
+    for (const b of touch.buttons) assert.ok(b.width >= 44 && b.height >= 44, `${b.label}: ${b.width} x ${b.height}`);
+    await bed.page.close();
+
+    bed.page = await openDemo(bed.browser, bed.server.url);
+    page = bed.page.page;
+    const mouse = await controlButtons(page);
+    assert.ok(!mouse.coarse, 'a fine pointer');
+    for (const name of ['Zoom in', 'Zoom out', 'Settings']) {
+      const b = mouse.buttons.find((x) => x.label === name);
+      assert.deepEqual(b && [b.width, b.height], [30, 30], `${name} keeps its size`);
     }
   });
 });

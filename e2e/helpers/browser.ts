@@ -37,6 +37,8 @@ export interface OpenOptions {
   page?: string;
   /** A touch screen (touch events and taps). */
   hasTouch?: boolean;
+  /** A phone: the meta viewport is honoured (with hasTouch, a coarse pointer). */
+  isMobile?: boolean;
   reducedMotion?: 'reduce' | 'no-preference';
   /** The URL's fragment, with its #. */
   hash?: string;
@@ -50,6 +52,7 @@ export async function openMap(browser: Browser, baseUrl: string, params: Record<
     viewport: { width: opts.width ?? 640, height: opts.height ?? 480 },
     deviceScaleFactor: opts.deviceScaleFactor ?? 1,
     hasTouch: opts.hasTouch ?? false,
+    isMobile: opts.isMobile ?? false,
     reducedMotion: opts.reducedMotion ?? 'no-preference',
   });
   const page = await context.newPage();
