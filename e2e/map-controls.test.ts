@@ -1,12 +1,39 @@
 // The map's controls and behaviour for keyboard, touch and screen-reader users, through the
 // demo page (the public API) with real input: the focus ring shows over the canvas, and on a
-// touch screen every control button is at least 44 x 44 CSS px.
+// touch screen every control button is at least 44 x 44 CSS px, and the scale is announced to
+// screen readers once a movement ends.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import type { Page } from 'playwright-core';
 import { hexColour, pixel, screenshot } from './helpers/map-page.js';
 import { useTestBed } from './helpers/test-bed.js';
-import { openDemo, type PageWindow } from './helpers/vario-page.js';
+import { spokenScale } from '../client/src/geometry/scale-bar-length.js';
+import { camera, openDemo, record, recorded, settle, type PageWindow, type VarioWindow } from './helpers/vario-page.js';
+
+/** A change of the scale's live region: when, its text, and whether the map was moving. */
+interface Announcement {
+  t: number;
+  text: string;
+  moving: boolean;
+}
+interface AnnouncingWindow extends VarioWindow {
+  announced: Announcement[];
+  document: { querySelector(selector: string): object | null };
+  MutationObserver: new (fn: () => void) => { observe(target: object, options: object): void };
+}
+
+/** Starts recording every change of the scale bar's live region into window.announced. */
+function recordAnnouncements(page: Page): Promise<void> {
+  return page.evaluate(() => {
+    const w = globalThis as unknown as AnnouncingWindow;
+    const region = w.document.querySelector('.vario-map-scale [aria-live="polite"]') as { textContent: string | null } | null;
+    if (!region) throw new Error('no polite live region in the scale bar');
+    w.announced = [];
+    new w.MutationObserver(() => {
+      w.announced.push({ t: performance.now(), text: region.textContent ?? '', moving: w.map.isMoving() });
+    }).observe(region, { childList: true, characterData: true, subtree: true });
+  });
+}
 
 /** What the size test reads in the page (the Node build has no DOM types). */
 interface SizedButton {
@@ -77,5 +104,27 @@ describe('map controls (bgt_otterlo_400m)', () => {
       const b = mouse.buttons.find((x) => x.label === name);
       assert.deepEqual(b && [b.width, b.height], [30, 30], `${name} keeps its size`);
     }
+  });
+
+  test('the scale is announced once when a wheel zoom ends, not during it', async () => {
+    bed.page = await openDemo(bed.browser, bed.server.url);
+    const page = bed.page.page;
+    const start = await camera(page);
+    await record(page);
+    await recordAnnouncements(page);
+    await page.mouse.move(320, 240);
+    await page.mouse.wheel(0, 100); // one notch: zoom out a step
+    await settle(page, `window.map.getScaleDenominator() > ${start.scale * 1.5}`);
+    await page.waitForTimeout(300); // nothing more follows
+    const end = await camera(page);
+    const announced = await page.evaluate(() => (globalThis as unknown as AnnouncingWindow).announced);
+    const moves = (await recorded(page)).filter((r) => r.type === 'move');
+    const moveEnd = (await recorded(page)).find((r) => r.type === 'moveend');
+    assert.ok(moves.length >= 5, `an animated zoom: ${moves.length} moves`);
+    assert.ok(moveEnd, 'the movement ended');
+    assert.equal(announced.length, 1, `announced once: ${JSON.stringify(announced)}`);
+    const [a] = announced;
+    assert.ok(a && !a.moving && a.t >= moveEnd.t, 'after the movement ended');
+    assert.equal(a.text, spokenScale(end.scale));
   });
 });

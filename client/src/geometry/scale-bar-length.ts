@@ -15,8 +15,17 @@ export function formatDistance(metres: number): string {
   return metres >= 1000 ? `${+(metres / 1000).toPrecision(3)} km` : `${+metres.toPrecision(3)} m`;
 }
 
+/** The denominator as written: rounded to three significant digits. */
+function roundScale(denominator: number): number {
+  return Math.round(Number(denominator.toPrecision(3)));
+}
+
 /** "1:25 000": digits grouped by thin spaces, rounded to three significant digits. */
 export function formatScale(denominator: number): string {
-  const d = Math.round(Number(denominator.toPrecision(3)));
-  return `1:${String(d).replace(/\B(?=(\d{3})+(?!\d))/g, '\u202f')}`;
+  return `1:${String(roundScale(denominator)).replace(/\B(?=(\d{3})+(?!\d))/g, '\u202f')}`;
+}
+
+/** "Scale 1:25,000" for screen readers: they read comma groups as one number, thin spaces not. */
+export function spokenScale(denominator: number): string {
+  return `Scale 1:${roundScale(denominator).toLocaleString('en-US')}`;
 }
