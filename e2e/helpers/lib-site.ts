@@ -14,13 +14,14 @@ export const LIB_PAGE_HEAD = `<!doctype html>
 <html lang="en">
 <head>
   <meta charset="utf-8">
+  <meta name="viewport" content="width=device-width, initial-scale=1">
   <title>Map</title>
   <link rel="icon" href="data:,">
   <link rel="stylesheet" href="lib/vario-map.css">
   <style>html, body { margin: 0; height: 100%; } #map { position: absolute; inset: 0; }</style>
 </head>
 <body>
-  <div id="map"></div>`;
+  <main><div id="map"></div></main>`;
 
 export interface LibSite {
   cube: BuiltCube;
