@@ -1,13 +1,13 @@
 // The map's controls and behaviour for keyboard, touch and screen-reader users, through the
 // demo page (the public API) with real input: the focus ring shows over the canvas, and on a
 // touch screen every control button is at least 44 x 44 CSS px, and the scale is announced to
-// screen readers once a movement ends.
+// screen readers once a movement ends; the fullscreen button puts the map on the whole screen.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import type { Page } from 'playwright-core';
-import { hexColour, pixel, screenshot } from './helpers/map-page.js';
-import { useTestBed } from './helpers/test-bed.js';
 import { spokenScale } from '../client/src/geometry/scale-bar-length.js';
+import { hexColour, pixel, screenshot } from './helpers/map-page.js';
+import { checkAndClose, useTestBed } from './helpers/test-bed.js';
 import { camera, openDemo, record, recorded, settle, type PageWindow, type VarioWindow } from './helpers/vario-page.js';
 
 /** A change of the scale's live region: when, its text, and whether the map was moving. */
@@ -32,6 +32,17 @@ function recordAnnouncements(page: Page): Promise<void> {
     new w.MutationObserver(() => {
       w.announced.push({ t: performance.now(), text: region.textContent ?? '', moving: w.map.isMoving() });
     }).observe(region, { childList: true, characterData: true, subtree: true });
+  });
+}
+
+/** Whether the map's container is the page's fullscreen element, and the button's label. */
+function fullscreenState(page: Page): Promise<{ fullscreen: boolean; label: string | null }> {
+  return page.evaluate(() => {
+    const w = globalThis as unknown as VarioWindow & { document: { fullscreenElement: object | null; querySelector(s: string): { getAttribute(n: string): string | null } | null } };
+    return {
+      fullscreen: w.document.fullscreenElement === w.map.getContainer(),
+      label: w.document.querySelector('.vario-map-fullscreen-toggle')?.getAttribute('aria-label') ?? null,
+    };
   });
 }
 
@@ -92,9 +103,9 @@ describe('map controls (bgt_otterlo_400m)', () => {
     await page.tap('.vario-map-settings-toggle'); // its panel's buttons too
     const touch = await controlButtons(page);
     assert.ok(touch.coarse, 'a coarse pointer');
-    for (const name of ['Zoom in', 'Zoom out', 'Settings', 'Clear the log']) assert.ok(touch.buttons.some((b) => b.label === name), `${name} measured`);
+    for (const name of ['Zoom in', 'Zoom out', 'Enter fullscreen', 'Settings', 'Clear the log']) assert.ok(touch.buttons.some((b) => b.label === name), `${name} measured`);
     for (const b of touch.buttons) assert.ok(b.width >= 44 && b.height >= 44, `${b.label}: ${b.width} x ${b.height}`);
-    await bed.page.close();
+    await checkAndClose(bed.page);
 
     bed.page = await openDemo(bed.browser, bed.server.url);
     page = bed.page.page;
@@ -118,13 +129,27 @@ describe('map controls (bgt_otterlo_400m)', () => {
     await page.waitForTimeout(300); // nothing more follows
     const end = await camera(page);
     const announced = await page.evaluate(() => (globalThis as unknown as AnnouncingWindow).announced);
-    const moves = (await recorded(page)).filter((r) => r.type === 'move');
-    const moveEnd = (await recorded(page)).find((r) => r.type === 'moveend');
+    const rec = await recorded(page);
+    const moves = rec.filter((r) => r.type === 'move');
+    const moveEnd = rec.find((r) => r.type === 'moveend');
     assert.ok(moves.length >= 5, `an animated zoom: ${moves.length} moves`);
     assert.ok(moveEnd, 'the movement ended');
     assert.equal(announced.length, 1, `announced once: ${JSON.stringify(announced)}`);
     const [a] = announced;
     assert.ok(a && !a.moving && a.t >= moveEnd.t, 'after the movement ended');
     assert.equal(a.text, spokenScale(end.scale));
+  });
+
+  test('the fullscreen button puts the map container on the whole screen and takes it back', async () => {
+    bed.page = await openDemo(bed.browser, bed.server.url);
+    const page = bed.page.page;
+    assert.deepEqual(await fullscreenState(page), { fullscreen: false, label: 'Enter fullscreen' });
+    await page.click('.vario-map-fullscreen-toggle');
+    // The element changes first; fullscreenchange (and so the label) follows a frame later.
+    await page.waitForSelector('.vario-map-fullscreen-toggle[aria-label="Exit fullscreen"]');
+    assert.deepEqual(await fullscreenState(page), { fullscreen: true, label: 'Exit fullscreen' });
+    await page.click('.vario-map-fullscreen-toggle');
+    await page.waitForSelector('.vario-map-fullscreen-toggle[aria-label="Enter fullscreen"]');
+    assert.deepEqual(await fullscreenState(page), { fullscreen: false, label: 'Enter fullscreen' });
   });
 });

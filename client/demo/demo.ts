@@ -3,7 +3,7 @@
 // ?source=<index.json or directory> picks another cube (default: chunks/ beside the page);
 // ?reduceMotion=1|0 and ?supersampling=n override those options; ?sw=0 leaves the service
 // worker (offline use) out.
-import { ScaleBar, SettingsPanel, VarioMap, ZoomControl, type Control, type VarioMapOptions } from '../src/lib/bundle.js';
+import { FullscreenControl, ScaleBar, SettingsPanel, VarioMap, ZoomControl, type Control, type VarioMapOptions } from '../src/lib/bundle.js';
 import { enableOffline } from './offline.js';
 
 const params = new URLSearchParams(location.search);
@@ -15,6 +15,7 @@ if (ss !== null) options.supersampling = Number(ss);
 const map = new VarioMap(options);
 const settings = new SettingsPanel();
 map.addControl(new ZoomControl(), 'top-right');
+map.addControl(new FullscreenControl(), 'top-right');
 map.addControl(settings, 'top-right');
 map.addControl(new ScaleBar(), 'bottom-left');
 

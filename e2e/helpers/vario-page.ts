@@ -22,6 +22,7 @@ export interface VarioApi {
   whenIdle(): Promise<{ complete: boolean }>;
   remove(): void;
   getCanvasContainer(): { getAttribute(n: string): string | null; tabIndex: number };
+  getContainer(): object;
   on(type: string, fn: (ev: unknown) => void): unknown;
   off(type: string, fn: (ev: unknown) => void): unknown;
 }

@@ -28,6 +28,7 @@ export type {
 export type { Handler } from '../interaction/interaction-context.js';
 export type { CubeMeta } from '../../../format/cube-index.js';
 export { AttributionControl } from '../ui/attribution-control.js';
+export { FullscreenControl, type FullscreenOptions } from '../ui/fullscreen-control.js';
 export { IdwControl, type IdwPoint } from '../ui/idw-control.js';
 export { LensControl, type LensOptions } from '../ui/lens-control.js';
 export { ScaleBar } from '../ui/scale-bar.js';
