@@ -18,7 +18,8 @@ export class FullscreenControl implements Control {
   onAdd(map: VarioMap): HTMLElement {
     this.target = this.options.container ?? map.getContainer();
     const group = controlGroup('vario-map-fullscreen');
-    this.button = controlButton('vario-map-fullscreen-toggle', 'Enter fullscreen', '\u26f6', () => this.toggle());
+    this.button = controlButton('vario-map-fullscreen-toggle', 'Enter fullscreen', '', () => this.toggle());
+    this.button.append(cornersIcon());
     group.append(this.button);
     // A page (or an iframe without allowfullscreen) that cannot go fullscreen shows no button.
     group.hidden = !document.fullscreenEnabled;
@@ -49,4 +50,22 @@ export class FullscreenControl implements Control {
     this.button.setAttribute('aria-label', label);
     this.button.title = label;
   };
+}
+
+/** Four corners, drawn: the fullscreen glyph (U+26F6) is missing from many fonts. */
+function cornersIcon(): SVGSVGElement {
+  const ns = 'http://www.w3.org/2000/svg';
+  const svg = document.createElementNS(ns, 'svg');
+  svg.setAttribute('viewBox', '0 0 18 18');
+  svg.setAttribute('width', '18');
+  svg.setAttribute('height', '18');
+  svg.setAttribute('aria-hidden', 'true');
+  svg.style.verticalAlign = 'middle';
+  const path = document.createElementNS(ns, 'path');
+  path.setAttribute('d', 'M2 7V2h5M11 2h5v5M16 11v5h-5M7 16H2v-5');
+  path.setAttribute('fill', 'none');
+  path.setAttribute('stroke', 'currentColor');
+  path.setAttribute('stroke-width', '2');
+  svg.append(path);
+  return svg;
 }
