@@ -97,6 +97,16 @@ describe('map controls (bgt_otterlo_400m)', () => {
     }
   });
 
+  test('a click focuses the map without a ring', async () => {
+    bed.page = await openDemo(bed.browser, bed.server.url);
+    const page = bed.page.page;
+    const unfocused = await screenshot(page);
+    await page.mouse.click(320, 240);
+    assert.ok(await mapHasFocus(page), 'the click focuses the map (its keys work)');
+    const clicked = await screenshot(page);
+    for (const [i, j] of [[1, 240], [638, 240]] as const) assert.deepEqual(pixel(clicked, i, j), pixel(unfocused, i, j), `no ring at (${i}, ${j})`);
+  });
+
   test('on a touch screen every control button is at least 44 x 44 px; with a mouse, 30 x 30', async () => {
     bed.page = await openDemo(bed.browser, bed.server.url, {}, { hasTouch: true, isMobile: true });
     let page = bed.page.page;

@@ -45,7 +45,8 @@ export class FeatureEvents {
 
   private readonly onPress = (ev: PointerEvent): void => {
     this.pressed = { x: ev.clientX, y: ev.clientY };
-    if (document.activeElement !== this.element) this.element.focus({ preventScroll: true });
+    // Focus from a pointer shows no ring, as a native click's would not: the ring is for keys.
+    if (document.activeElement !== this.element) this.element.focus({ preventScroll: true, focusVisible: false });
   };
 
   private readonly onClick = (ev: MouseEvent): void => {
