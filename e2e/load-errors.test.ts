@@ -4,9 +4,9 @@
 // without its trailing slash.
 import assert from 'node:assert/strict';
 import { writeFile } from 'node:fs/promises';
-import { createServer, type AddressInfo } from 'node:net';
 import path from 'node:path';
 import { after, afterEach, before, describe, test } from 'node:test';
+import { freePort } from '../server/nginx-process.js';
 import { createStaticServer, type StaticServer } from '../server/static-server.js';
 import { openMap, type MapPage } from './helpers/browser.js';
 import { LIB_PAGE_HEAD, startLibSite, type LibSite } from './helpers/lib-site.js';
@@ -33,15 +33,6 @@ interface ErrorEvent {
   url: string;
   status?: number;
   message: string;
-}
-
-/** A port on 127.0.0.1 that nothing listens on (taken, then given back). */
-async function closedPort(): Promise<number> {
-  const s = createServer();
-  await new Promise<void>((resolve) => s.listen(0, '127.0.0.1', resolve));
-  const { port } = s.address() as AddressInfo;
-  await new Promise<void>((resolve) => s.close(() => resolve()));
-  return port;
 }
 
 describe('load errors in the container, and the source URL (bgt_otterlo_400m)', () => {
@@ -107,7 +98,7 @@ describe('load errors in the container, and the source URL (bgt_otterlo_400m)', 
   });
 
   test('a server that does not answer names the URL', async () => {
-    const url = `http://127.0.0.1:${await closedPort()}/cube/index.json`;
+    const url = `http://127.0.0.1:${await freePort()}/cube/index.json`;
     const { text, errors } = await failing({ source: url, retries: 1 }, /Failed to load resource|ERR_CONNECTION_REFUSED/);
     assert.ok(text.includes(`${url} could not be fetched: the server did not answer`), text);
     assert.deepEqual(errors.map((e) => [e.kind, e.url]), [['network', url]]);
