@@ -196,10 +196,10 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
    * The loser's area (state s) tilted from its boundary with the winner (zStart) to zMerge, or
    * flat at zMerge when it cannot tilt; returns whether it tilted.
    */
-  const emitSmoothMerge = (loser: number, into: number, s: number, zStart: number, zMerge: number, key: string): boolean => {
+  const emitSmoothMerge = (loser: number, into: number, s: number, sharedWithInto: number[], zStart: number, zMerge: number, key: string): boolean => {
     stats.merge += triangulate(loser, s);
     const shared = new Set<number>();
-    for (const e of sharedEdges(loser, into, s)) for (const v of edges[e]!.verts) shared.add(v);
+    for (const e of sharedWithInto) for (const v of edges[e]!.verts) shared.add(v);
     const z = smoothMergeZ(tris, xs, ys, shared, zStart, zMerge);
     const zOf = (v: number): number => z?.get(v) ?? zMerge;
     for (let i = 0; i < tris.length; i += 3) {
@@ -225,10 +225,11 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
     for (; ev < t.events.length && t.events[ev]!.step === k; ev++) {
       const e = t.events[ev]!;
       if (e.kind === EventKind.Merge) {
+        const shared = sharedEdges(e.loser, e.into, k - 1);
         let zStart = Math.max(areaChange[e.loser]!, createdZ[e.into]!);
-        for (const se of sharedEdges(e.loser, e.into, k - 1)) zStart = Math.max(zStart, sideChange[se]!);
+        for (const se of shared) zStart = Math.max(zStart, sideChange[se]!);
         let tilted = false;
-        if (opts.smooth) tilted = emitSmoothMerge(e.loser, e.into, k - 1, zStart, z0, `m${ev}`);
+        if (opts.smooth) tilted = emitSmoothMerge(e.loser, e.into, k - 1, shared, zStart, z0, `m${ev}`);
         else stats.merge += emitFace(e.loser, k - 1, z0, e.into, e.loser);
         transitions.push({ step: k, loser: e.loser, into: e.into, zStart, zMerge: z0, tilted });
         // The winner grows; the loser's neighbours now border the winner.
