@@ -50,7 +50,7 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const { timings, lap } = lapTimer();
   const { surfaces, stats } = buildSurfaces(t, { smooth: opts.smooth ?? false });
   lap('surfaces');
-  log(`surfaces: ${surfaces.count} triangles (floor ${stats.floor}, merges ${stats.merge}, splits ${stats.split}, simplification ${stats.simplify}, redrawn ${stats.reemit})${opts.smooth ? `, ${stats.tiltedMerges} merges tilted` : ''}`);
+  log(`surfaces: ${surfaces.count} triangles (floor ${stats.floor}, merges ${stats.merge}, splits ${stats.split}, simplification ${stats.simplify}, redrawn ${stats.reemit})${opts.smooth ? `, ${stats.tiltedMerges} merges and ${stats.tiltedRemovals} removals tilted` : ''}`);
   const info = scaleInfoOf(t);
   const plan = planChunks({
     surfaces, xs: t.xs, ys: t.ys, extent: t.meta.extent,
