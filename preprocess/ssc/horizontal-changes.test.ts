@@ -37,6 +37,7 @@ test('the classic cube: the road\'s split, the bump\'s simplification and the me
   // W into A changes no class; A into B does: all of A but what B already had.
   assert.ok(h.byKind.merge > 0 && h.areaByKind.merge > 30, `merge: ${h.byKind.merge} triangles, area ${h.areaByKind.merge}`);
   assert.equal(h.byKind.reemit, 0);
+  assert.equal(h.byKind.mergeFlat, 0, 'no merge is tilted');
   assert.equal(h.total, h.byKind.merge + h.byKind.split + h.byKind.simplify);
   assert.equal(h.total, [...Array(surfaces.count).keys()].filter((i) => surfaces.zMin[i]! > 0 && t.faces[surfaces.upper[i]!]!.classIndex !== t.faces[surfaces.lower[i]!]!.classIndex).length,
     'every class-changing triangle above the floor (all are horizontal here)');
@@ -47,7 +48,20 @@ test('the smooth cube tilts the merges: only the split and the simplification ar
   const smooth = buildSurfaces(t, { smooth: true });
   const c = horizontalChanges(t, classic.surfaces, classic.transitions);
   const s = horizontalChanges(t, smooth.surfaces, smooth.transitions);
-  assert.equal(s.byKind.merge, 0);
+  assert.equal(s.byKind.merge + s.byKind.mergeFlat, 0);
   assert.deepEqual([s.byKind.split, s.byKind.simplify, s.byKind.reemit], [c.byKind.split, c.byKind.simplify, c.byKind.reemit]);
   assert.equal(s.total, c.total - c.byKind.merge);
+});
+
+test('a flat triangle inside a tilted merge counts as mergeFlat, with its area', () => {
+  // W = [0,4] x [0,4] (class a) and L = [4,6] x [0,4] (class b): L merges into W, tilted from x = 4.
+  const two = fixtureTgap([{ cls: 'a', rings: [rect(0, 0, 4, 4)] }, { cls: 'b', rings: [rect(4, 0, 6, 4)] }], ['a', 'b']);
+  const { surfaces: s, transitions } = buildSurfaces(two, { smooth: true });
+  assert.deepEqual(horizontalChanges(two, s, transitions).byKind, { merge: 0, mergeFlat: 0, split: 0, simplify: 0, reemit: 0 });
+  // Lay L's first triangle flat at its lowest corner's z: half of L (area 4) now goes at once.
+  const i = [...Array(s.count).keys()].find((k) => s.lower[k] === 2 && s.upper[k] === 1)!;
+  s.z.fill(s.zMin[i]!, 3 * i, 3 * i + 3);
+  const h = horizontalChanges(two, s, transitions);
+  assert.equal(h.byKind.mergeFlat, 1);
+  near(h.areaByKind.mergeFlat, 4, 'flat area');
 });

@@ -4,7 +4,12 @@
 import { faceEndZ, REEMIT_PHASE, type Tgap } from '../../format/tgap-model.js';
 import type { MergeTransition, Surfaces } from './surfaces.js';
 
-export type ChangeKind = 'merge' | 'split' | 'simplify' | 'reemit';
+/**
+ * merge: a merge drawn flat; mergeFlat: a flat triangle inside a tilted merge (all its corners
+ * at the ramp's foot, on the shared boundary, or at its top): that part of the loser goes at once.
+ */
+export type ChangeKind = 'merge' | 'mergeFlat' | 'split' | 'simplify' | 'reemit';
+export const CHANGE_KINDS: readonly ChangeKind[] = ['merge', 'mergeFlat', 'split', 'simplify', 'reemit'];
 
 export interface HorizontalChanges {
   /** Horizontal triangles above the floor whose upper and lower faces differ in class. */
@@ -23,8 +28,9 @@ export interface HorizontalChanges {
 export function horizontalChanges(t: Tgap, s: Surfaces, transitions: readonly MergeTransition[]): HorizontalChanges {
   const merges = new Map<number, MergeTransition>();
   for (const m of transitions) merges.set(m.loser, m);
-  const byKind: Record<ChangeKind, number> = { merge: 0, split: 0, simplify: 0, reemit: 0 };
-  const areaByKind: Record<ChangeKind, number> = { merge: 0, split: 0, simplify: 0, reemit: 0 };
+  const byKind = Object.fromEntries(CHANGE_KINDS.map((k) => [k, 0])) as Record<ChangeKind, number>;
+  const areaByKind = { ...byKind };
+  let total = 0;
   const { faces, xs, ys } = t;
   for (let i = 0; i < s.count; i++) {
     const z = s.z[3 * i]!;
@@ -36,12 +42,13 @@ export function horizontalChanges(t: Tgap, s: Surfaces, transitions: readonly Me
     const m = merges.get(lo);
     const ended = z === faceEndZ(face, t.meta.steps);
     let kind: ChangeKind = 'simplify';
-    if (m && up === m.into && z > m.zStart && z <= m.zMerge) kind = 'merge';
+    if (m && up === m.into && z > m.zStart && z <= m.zMerge) kind = m.tilted ? 'mergeFlat' : 'merge';
     else if (ended && face.endPhase === REEMIT_PHASE) kind = 'reemit';
     else if (ended && face.mergedInto < 0) kind = 'split';
     byKind[kind]++;
+    total++;
     const a = s.v[3 * i]!, b = s.v[3 * i + 1]!, c = s.v[3 * i + 2]!;
     areaByKind[kind] += Math.abs((xs[b]! - xs[a]!) * (ys[c]! - ys[a]!) - (xs[c]! - xs[a]!) * (ys[b]! - ys[a]!)) / 2;
   }
-  return { total: byKind.merge + byKind.split + byKind.simplify + byKind.reemit, byKind, areaByKind };
+  return { total, byKind, areaByKind };
 }
