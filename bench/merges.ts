@@ -19,7 +19,7 @@ const SAMPLES = 8;
 const sets = datasets(process.argv[2]);
 const t0 = performance.now();
 const dir = mkdtempSync(path.join(tmpdir(), 'ssc-bench-'));
-const rows: string[][] = [['dataset', 'merges', 'tilted', 'violating merges', 'violating slices', 'CV median', 'CV p90', 'CV max', 'worst merge (CV)', 's']];
+const rows: string[][] = [['dataset', 'merges', 'tilted', 'violating merges', 'violating slices', 'CV median', 'CV p90', 'CV max', 'worst merge', 's']];
 const examples: string[] = [];
 try {
   for (const d of sets) {
@@ -37,7 +37,7 @@ try {
       d.name, String(transitions.length), String(checks.length), String(bad.length),
       String(checks.reduce((n, c) => n + c.detached.filter((x) => x > 0).length, 0)),
       median(values).toFixed(3), percentile(values, 0.9).toFixed(3), worst.cv.toFixed(3),
-      `${worst.c.transition.loser}->${worst.c.transition.into} (${worst.c.triangles.length} triangles)`,
+      `face ${worst.c.transition.loser} into ${worst.c.transition.into} (${worst.c.triangles.length} triangles)`,
       ((performance.now() - t1) / 1000).toFixed(1),
     ]);
     process.stderr.write('done\n');

@@ -132,10 +132,9 @@ const lengthsRow = (d: Dataset, cube: string, ts: Transition[], info: ReturnType
   const t = transitionLengths(scaleRatios(ts, info));
   return [d.name, cube, String(t.events), t.median.toFixed(5), t.p10.toFixed(5), t.framesAtMedian.toPrecision(3)];
 };
-/** The horizontal class changes of the surfaces the build makes from `tgap` (smooth or not). */
-const horizontalRow = (d: Dataset, cube: string, tgap: Tgap, smooth: boolean): string[] => {
-  const { surfaces, transitions } = buildSurfaces(tgap, { smooth });
-  const h = horizontalChanges(tgap, surfaces, transitions);
+/** The horizontal class changes of surfaces the build makes from `tgap`. */
+const horizontalRow = (d: Dataset, cube: string, tgap: Tgap, built: ReturnType<typeof buildSurfaces>): string[] => {
+  const h = horizontalChanges(tgap, built.surfaces, built.transitions);
   return [d.name, cube, String(h.total), ...CHANGE_KINDS.map((k) => String(h.byKind[k])), ...CHANGE_KINDS.map((k) => h.areaByKind[k].toExponential(2))];
 };
 try {
@@ -146,7 +145,7 @@ try {
     if (g.code !== 0) throw new Error(`ssc generalize ${d.name} failed (exit ${g.code}): ${g.stderr}`);
     const tgap = await readTgap(tgapFile);
     transitionRows.push(lengthsRow(d, 'classic', classicTransitions(tgap.events), scaleInfoOf(tgap)));
-    horizontalRows.push(horizontalRow(d, 'classic', tgap, false));
+    horizontalRows.push(horizontalRow(d, 'classic', tgap, buildSurfaces(tgap, { smooth: false })));
 
     const classicDir = path.join(dir, `${d.name}-classic`);
     const classicCube = buildWith(d, classicDir, '--classic', 'classic') ?? buildBenchCube(d, classicDir, { variant: 'classic', precompress: true });
@@ -167,8 +166,9 @@ try {
     } else {
       rows.push(row('smooth', await zoom(smoothCube), classic));
       // The smooth build's merge transitions, from the same tGAP as the cube.
-      transitionRows.push(lengthsRow(d, 'smooth', smoothTransitions(tgap.events, buildSurfaces(tgap, { smooth: true }).transitions), scaleInfoOf(tgap)));
-      horizontalRows.push(horizontalRow(d, 'smooth', tgap, true));
+      const built = buildSurfaces(tgap, { smooth: true });
+      transitionRows.push(lengthsRow(d, 'smooth', smoothTransitions(tgap.events, built.transitions), scaleInfoOf(tgap)));
+      horizontalRows.push(horizontalRow(d, 'smooth', tgap, built));
       rmSync(smoothCube.dir, { recursive: true, force: true });
     }
   }

@@ -13,8 +13,10 @@ import { phaseZ } from '../../format/tgap-model.js';
 import { fixtureTgap, rect, type FixtureFace } from '../../testing/planar-fixtures.js';
 import { generalizedDataset } from '../../testing/generalized-dataset.js';
 import { tempDir } from '../../testing/temp-dir.js';
+import { fitView } from '../map/rasterize.js';
+import { surfacesSlicer } from '../../testing/surfaces-slicer.js';
 import { detachedParts, mergeConnectivity, samplesInside, violates } from './merge-connectivity.js';
-import { buildSurfaces } from './surfaces.js';
+import { buildSurfaces, Surfaces } from './surfaces.js';
 
 const STRIP = [0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6];
 const SHARED = new Set([0, 4]);
@@ -34,6 +36,49 @@ test('a surface rising then falling: the far end is taken before the middle, an 
   assert.equal(detachedParts(tris, SHARED, 3.5), 0, 'all taken: one part again');
   // Two islands: columns 1 and 3 low, 0 and 2 high (x = 0 is on the shared boundary).
   assert.equal(detachedParts({ v: STRIP, z: stripZ([5, 1, 5, 1]) }, SHARED, 2), 2);
+});
+
+/** Connected parts (8-neighbours) of the pixels showing face f. */
+function pixelParts(ids: Uint32Array, w: number, h: number, f: number): number {
+  const seen = new Uint8Array(ids.length);
+  let parts = 0;
+  for (let p0 = 0; p0 < ids.length; p0++) {
+    if (ids[p0] !== f || seen[p0]) continue;
+    parts++;
+    const stack = [p0];
+    seen[p0] = 1;
+    while (stack.length > 0) {
+      const p = stack.pop()!;
+      const i = p % w, j = Math.floor(p / w);
+      for (let dj = -1; dj <= 1; dj++) for (let di = -1; di <= 1; di++) {
+        const ii = i + di, jj = j + dj, q = jj * w + ii;
+        if (ii < 0 || jj < 0 || ii >= w || jj >= h || seen[q] || ids[q] !== f) continue;
+        seen[q] = 1;
+        stack.push(q);
+      }
+    }
+  }
+  return parts;
+}
+
+test('sliced as the map sees it, the rising-then-falling strip shows the winner in two parts exactly when an island is found', () => {
+  // The winner W (face 1) is the square [-1,0] x [0,1] west of the strip (vertices 8, 9); the
+  // strip is the loser L (face 2). Both on the floor; the merge tilted over L, z 1, 3, 3, 2 along x.
+  const xs = Float64Array.of(0, 1, 2, 3, 0, 1, 2, 3, -1, -1), ys = Float64Array.of(0, 0, 0, 0, 1, 1, 1, 1, 0, 1);
+  const s = new Surfaces();
+  s.add(8, 0, 4, 0, 1, 0);
+  s.add(8, 4, 9, 0, 1, 0);
+  for (let i = 0; i < STRIP.length; i += 3) s.add(STRIP[i]!, STRIP[i + 1]!, STRIP[i + 2]!, 0, 2, 0);
+  const z = stripZ([1, 3, 3, 2]);
+  for (let i = 0; i < STRIP.length; i += 3) s.addTilted(STRIP[i]!, STRIP[i + 1]!, STRIP[i + 2]!, z[i]!, z[i + 1]!, z[i + 2]!, 1, 2, 'merge');
+  s.zEnd.fill(10);
+  const view = fitView([-1, 0, 3, 1], 160, 40);
+  const slice = surfacesSlicer(s, xs, ys, () => 0, view);
+  for (const zs of [1.5, 2.25, 2.5, 2.75, 3.5]) {
+    const islands = detachedParts({ v: STRIP, z }, SHARED, zs);
+    assert.equal(pixelParts(slice(zs).ids, 160, 40, 1), 1 + islands, `z ${zs}: ${islands} islands found`);
+  }
+  assert.equal(detachedParts({ v: STRIP, z }, SHARED, 2.5), 1, 'the raster case above does have an island');
 });
 
 test('parts touching only at a corner below the slice are one part; a corner above it parts them', () => {
