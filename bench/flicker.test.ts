@@ -1,6 +1,6 @@
-// Flicker counted on hand-drawn frames, on a hand-made cube whose surfaces cross (a pixel shows
-// A, then B, then A again), and on bgt_otterlo_400m's smooth cube against its classic one over
-// a whole zoom.
+// Flicker counted on hand-drawn frames, on hand-made cubes whose surfaces cross (a pixel shows
+// class A, then B, then A again; a loser comes back inside its merge's ramp), and on
+// bgt_otterlo_400m's classic and smooth cubes over a whole zoom.
 import test from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
@@ -31,6 +31,8 @@ test('a pixel back to a class it showed before, away from boundaries, flickers; 
   // The other centre pixels border face 1 in the frames of class 1: on a boundary, not counted.
   assert.equal(c.flickering, 1);
   assert.ok(c.flickered(2, 2));
+  assert.equal(c.faceReturns, 1, 'face 1 came back too');
+  assert.ok(c.faceReturned(2, 2));
   assert.deepEqual(c.examples, ['pixel 2,2: classes 0 1 0 (back in frame 2)']);
 });
 
@@ -38,10 +40,17 @@ test('no flicker: A then B then C; A, B, B; another face of the same class; a pi
   const c = new FlickerCounter(5, 5);
   for (const f of [frame(0, 1, 0), frame(0, 2, 1), frame(0, 2, 1), frame(0, 3, 2), frame(0, 4, 2)]) c.add(f);
   assert.equal(c.flickering, 0);
+  assert.equal(c.faceReturns, 0);
   const d = new FlickerCounter(5, 5);
   // The centre has no face in the middle frame: nothing shown, nothing changed back.
   for (const f of [frame(0, 1, 0), frame(0, 0, 1), frame(0, 1, 0)]) d.add(f);
   assert.equal(d.flickering, 0);
+});
+
+test('class A on face 1, B, then A on face 3: class flicker (as the tGAP may have it), no face back', () => {
+  const c = new FlickerCounter(5, 5);
+  for (const f of [frame(0, 1, 0), frame(0, 2, 1), frame(0, 3, 0)]) c.add(f);
+  assert.deepEqual([c.flickering, c.faceReturns], [1, 0]);
 });
 
 test('a class seen only on a boundary does not count as shown', () => {
@@ -92,9 +101,38 @@ test('a hand-made cube whose tilted surface crosses a flat one flickers where th
     else assert.ok(!counter.flickered(i, j), `pixel ${i},${j} (x ${x}) should not flicker`);
   }
   assert.ok(counter.flickering >= must && counter.flickering <= may, `${counter.flickering} pixels flicker, expected ${must}..${may}`);
+  assert.equal(counter.faceReturns, 0, 'faces 1, 2, 3 in turn: none comes back');
 });
 
-test('bgt_otterlo_400m: over a whole zoom the smooth cube flickers at no pixel where the classic one does not', async (t) => {
+test('a hand-made cube where a flat surface gives the loser back inside its merge\'s ramp: the loser returns', () => {
+  // Floor: L (face 2) over [0,10] x [0,10]. The merge into W (face 1) tilted, z = 0.5 + x / 10.
+  // A flat surface at z 1, upper L, lower W (as a simplification of L's boundary would lie):
+  // where x < 5 the ramp is below it, and slices show L, then W (from 0.5 + x / 10), then L
+  // again from 1. Where x > 5 L stays until the ramp, then W.
+  const xs = Float64Array.of(0, 10, 10, 0), ys = Float64Array.of(0, 0, 10, 10);
+  const s = new Surfaces();
+  const zx = (v: number): number => 0.5 + xs[v]! / 10;
+  for (const [a, b, c] of [[0, 1, 2], [0, 2, 3]] as const) {
+    s.add(a, b, c, 0, 2, 0);
+    s.addTilted(a, b, c, zx(a), zx(b), zx(c), 1, 2, 'merge');
+  }
+  for (const [a, b, c] of [[0, 1, 2], [0, 2, 3]] as const) s.add(a, b, c, 1, 2, 1);
+  s.zEnd.fill(3);
+  const view = fitView([0, 0, 10, 10], 40, 40);
+  // W and L of one class: no class flicker, only the face comes back.
+  const slice = surfacesSlicer(s, xs, ys, () => 0, view);
+  const counter = new FlickerCounter(40, 40);
+  for (let k = 0; k <= 40; k++) counter.add(slice(k / 20));
+  assert.equal(counter.flickering, 0);
+  for (let j = 0; j < 40; j++) for (let i = 0; i < 40; i++) {
+    const x = 0.125 + 0.25 * i;
+    // W shows off its boundary with L from 0.5 + x / 10 to 1: over a frame (0.05 apart) where x < 4.
+    if (x > 0.5 && x < 4) assert.ok(counter.faceReturned(i, j), `pixel ${i},${j} (x ${x}): L should come back`);
+    if (x > 5) assert.ok(!counter.faceReturned(i, j), `pixel ${i},${j} (x ${x}): no face comes back`);
+  }
+});
+
+test('bgt_otterlo_400m: over a whole zoom no face comes back to a pixel, in the classic or the smooth cube', async (t) => {
   const dir = tempDir(t);
   const { tgapFile } = await generalizedDataset(dir, 'bgt_otterlo_400m.geojson', 'bgt.json');
   const counters: FlickerCounter[] = [];
@@ -112,9 +150,12 @@ test('bgt_otterlo_400m: over a whole zoom the smooth cube flickers at no pixel w
   }
   const [classic, smooth] = counters as [FlickerCounter, FlickerCounter];
   // The tGAP itself sends some pixels back to a class near the top (a face merged into another
-  // class's face that later merges into the first class): the classic cube shows those too.
-  t.diagnostic(`pixels that flicker: classic ${classic.flickering}, smooth ${smooth.flickering}; first: ${smooth.examples.join('; ')}`);
-  const extra: string[] = [];
-  for (let j = 0; j < 180; j++) for (let i = 0; i < 320; i++) if (smooth.flickered(i, j) && !classic.flickered(i, j)) extra.push(`${i},${j}`);
-  assert.deepEqual(extra.slice(0, 10), [], `${extra.length} pixels flicker in the smooth cube only`);
+  // class's face that later merges into the first class): both cubes show those, the smooth one
+  // a little earlier (a merge under way), so they are reported, not held to 0.
+  t.diagnostic(`pixels back to a class: classic ${classic.flickering}, smooth ${smooth.flickering}; first: ${smooth.examples.join('; ')}`);
+  assert.ok(classic.flickering > 0, 'the zoom reaches the tGAP\'s own returns of a class (the counter sees them)');
+  // The tGAP never gives a pixel back to a face it left: the classic cube (its states) shows
+  // none, and the smooth cube must add none.
+  assert.equal(classic.faceReturns, 0);
+  assert.equal(smooth.faceReturns, 0);
 });

@@ -50,6 +50,8 @@ interface CubeFigures {
   worstFrame: number;
   /** Pixels that went back to a class they showed before, away from boundaries. */
   flicker: number;
+  /** Of those, or not, pixels that went back to a face (only a cube can do that). */
+  faceReturns: number;
   triangles: number;
   bytes: number;
   gzipBytes: number;
@@ -83,6 +85,7 @@ async function zoom(cube: BenchCube): Promise<CubeFigures> {
     // Frame i is the change from frame i - 1 to i.
     worstFrame: shares.indexOf(worst) + 1,
     flicker: flicker.flickering,
+    faceReturns: flicker.faceReturns,
     triangles: cube.leaves.reduce((s, l) => s + l.triangles, 0),
     bytes: cube.leaves.reduce((s, l) => s + l.bytes, 0),
     gzipBytes: cube.leaves.reduce((s, l) => s + statSync(path.join(cube.dir, `${l.file}.gz`)).size, 0),
@@ -124,7 +127,7 @@ function targets(f: CubeFigures, classic?: CubeFigures): string {
 
 const t0 = performance.now();
 const dir = mkdtempSync(path.join(tmpdir(), 'ssc-bench-'));
-const head = ['dataset', 'cube', 'z range', 'worst', 'p95', 'median', 'worst/median', 'worst frame', 'flicker px', 'ms/frame', 'triangles', 'MB', 'MB gzip', 'targets'];
+const head = ['dataset', 'cube', 'z range', 'worst', 'p95', 'median', 'worst/median', 'worst frame', 'flicker px', 'face back px', 'ms/frame', 'triangles', 'MB', 'MB gzip', 'targets'];
 const rows: string[][] = [head];
 const transitionRows: string[][] = [['dataset', 'cube', 'events', 'median S(end)/S(start)', 'p10', 'frames of an x2 step at the median']];
 const horizontalRows: string[][] = [['dataset', 'cube', 'class-changing horizontal triangles', ...CHANGE_KINDS, ...CHANGE_KINDS.map((k, i) => (i === 0 ? `their area: ${k}` : k))]];
@@ -152,7 +155,7 @@ try {
     const classic = await zoom(classicCube);
     const row = (cube: string, f: CubeFigures, vs?: CubeFigures): string[] => [
       d.name, cube, `${f.zFirst.toFixed(0)}..${f.zLast.toFixed(0)}`, pct(f.worst), pct(f.p95), pct(f.median), ratio(f.worst / f.median), String(f.worstFrame),
-      String(f.flicker), f.msPerFrame.toFixed(0), String(f.triangles), mb(f.bytes), mb(f.gzipBytes), targets(f, vs),
+      String(f.flicker), String(f.faceReturns), f.msPerFrame.toFixed(0), String(f.triangles), mb(f.bytes), mb(f.gzipBytes), targets(f, vs),
     ];
     rows.push(row('classic', classic));
     rmSync(classicCube.dir, { recursive: true, force: true });
@@ -179,7 +182,7 @@ console.log(`bench:smoothness, ${FRAMES} frames of a geometric zoom from the bas
 console.log('share of the pixels with a face in both frames whose class changes from the frame before; MB: chunk files, and their .gz copies');
 console.log(`targets (issue 11): smooth worst <= ${WORST_VS_CLASSIC}x classic worst; worst/median <= ${WORST_OVER_MEDIAN}; smooth bytes and triangles <= ${COST_VS_CLASSIC}x classic`);
 printTable(rows);
-console.log('flicker px: pixels that show a class, then another, then the first again, each time 1 px or more from a face boundary (target 0)');
+console.log('flicker px: pixels that show a class, then another, then the first again, each time 1 px or more from a face boundary (target 0; the tGAP has some of its own); face back px: the same for a face, which only the cube can cause');
 console.log('\ntransition lengths: S(end)/S(start) per merge or split; a classic event lasts from phase 0 to the last removal phase of its step, a smooth tilted merge from its transition\'s start to the merge');
 printTable(transitionRows);
 console.log('\nno sudden changes: horizontal triangles above the floor whose upper and lower faces differ in class (target 0), by the kind of event (mergeFlat: flat triangles inside tilted merges); area in ground units squared');
