@@ -55,8 +55,8 @@ test('a smooth cube\'s tilted merge lasts from its start to the merge; flat merg
     { kind: EventKind.Reemit, step: 4, loser: 8 },
   ];
   const merges = [
-    { step: 2, loser: 5, into: 1, zStart: 0.25, zMerge: 1 + 1 / 9, tilted: true },
-    { step: 4, loser: 7, into: 1, zStart: 3 + 1 / 9, zMerge: 3 + 1 / 9, tilted: false },
+    { step: 2, loser: 5, into: 1, zStart: 0.25, zMerge: 1 + 1 / 9, tilted: true, first: 0, end: 2 },
+    { step: 4, loser: 7, into: 1, zStart: 3 + 1 / 9, zMerge: 3 + 1 / 9, tilted: false, first: 2, end: 4 },
   ];
   const ts = smoothTransitions(events, merges);
   assert.deepEqual(ts[0], { zStart: 0.25, zEnd: 1 + 1 / 9 });

@@ -21,8 +21,7 @@ export interface HorizontalChanges {
 
 /**
  * Counts the horizontal class changes of surfaces `s` built from `t`; `transitions` (from the
- * same build) tell a merge's triangles: lower face the loser, upper the winner, z in
- * (zStart, zMerge]. Otherwise a triangle whose lower face ends at its z by a replacement is a
+ * same build) tell a merge's triangles (first..end). Otherwise a triangle whose lower face ends at its z by a replacement is a
  * re-emit, by a split a split; any other (the lower face lives on) moves a boundary: simplification.
  */
 export function horizontalChanges(t: Tgap, s: Surfaces, transitions: readonly MergeTransition[]): HorizontalChanges {
@@ -42,7 +41,7 @@ export function horizontalChanges(t: Tgap, s: Surfaces, transitions: readonly Me
     const m = merges.get(lo);
     const ended = z === faceEndZ(face, t.meta.steps);
     let kind: ChangeKind = 'simplify';
-    if (m && up === m.into && z > m.zStart && z <= m.zMerge) kind = m.tilted ? 'mergeFlat' : 'merge';
+    if (m && i >= m.first && i < m.end) kind = m.tilted ? 'mergeFlat' : 'merge';
     else if (ended && face.endPhase === REEMIT_PHASE) kind = 'reemit';
     else if (ended && face.mergedInto < 0) kind = 'split';
     byKind[kind]++;

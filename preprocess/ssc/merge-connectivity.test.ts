@@ -9,7 +9,6 @@
 //   0----1----2----3      y = 0       triangles (a, b, b+4), (a, b+4, a+4) per square
 import test from 'node:test';
 import assert from 'node:assert/strict';
-import { phaseZ } from '../../format/tgap-model.js';
 import { fixtureTgap, rect, type FixtureFace } from '../../testing/planar-fixtures.js';
 import { generalizedDataset } from '../../testing/generalized-dataset.js';
 import { tempDir } from '../../testing/temp-dir.js';
@@ -117,7 +116,7 @@ test('the smooth merges of three rectangles have no violation; ramps turned roun
 test('a merge marked tilted without triangles in its transition is an error naming it', () => {
   const t = fixtureTgap(THREE, ['a']);
   const { surfaces: s, transitions } = buildSurfaces(t, { smooth: true });
-  const wrong = transitions.map((m) => ({ ...m, zMerge: phaseZ(m.step, 0) - 0.5, zStart: phaseZ(m.step, 0) - 0.6 }));
+  const wrong = transitions.map((m) => ({ ...m, end: m.first }));
   assert.throws(() => mergeConnectivity(t, s, wrong), /merge of face 2 into 1 \(step 1\) is marked tilted but has no triangles/);
 });
 

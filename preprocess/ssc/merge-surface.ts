@@ -6,27 +6,20 @@ import { resolveFace, type Tgap } from '../../format/tgap-model.js';
 import type { MergeTransition, Surfaces } from './surfaces.js';
 
 /**
- * Per transition, the indices of its triangles in `s`: lower face the loser, upper the winner,
- * inside [zStart, zMerge] and above zStart somewhere (a simplification of their common boundary
- * may lie flat at zStart itself: it is what bounds the start, not part of the merge).
+ * Per transition, the indices of its triangles in `s` (the build states which they are: a
+ * simplification of the loser's boundary with the winner has the same faces, and may now lie
+ * inside the transition's z range, but it is an event of its own).
  */
 export function mergeTriangles(s: Surfaces, transitions: readonly MergeTransition[]): number[][] {
-  const byLoser = new Map<number, number[]>();
-  transitions.forEach((m, i) => {
-    if (byLoser.has(m.loser)) throw new Error(`face ${m.loser} loses two merges (transitions ${byLoser.get(m.loser)![0]} and ${i})`);
-    byLoser.set(m.loser, [i]);
+  return transitions.map(({ first, end, loser, into }) => {
+    if (!(first >= 0 && first <= end && end <= s.count)) throw new Error(`merge of ${loser} into ${into}: triangles ${first}..${end} not in the surfaces (${s.count})`);
+    const out: number[] = [];
+    for (let i = first; i < end; i++) {
+      if (s.lower[i] !== loser || s.upper[i] !== into) throw new Error(`merge of ${loser} into ${into}: triangle ${i} is between ${s.lower[i]} and ${s.upper[i]}`);
+      out.push(i);
+    }
+    return out;
   });
-  const out = transitions.map((): number[] => []);
-  for (let i = 0; i < s.count; i++) {
-    const m = byLoser.get(s.lower[i]!)?.[0];
-    if (m === undefined) continue;
-    const { into, zStart, zMerge } = transitions[m]!;
-    if (s.upper[i] !== into) continue;
-    const z0 = s.z[3 * i]!, z1 = s.z[3 * i + 1]!, z2 = s.z[3 * i + 2]!;
-    const lo = Math.min(z0, z1, z2), hi = Math.max(z0, z1, z2);
-    if (lo >= zStart && hi > zStart && hi <= zMerge) out[m]!.push(i);
-  }
-  return out;
 }
 
 /** Per transition, the vertices of the edges between loser and winner in the state before the merge. */

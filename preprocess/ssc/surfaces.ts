@@ -137,6 +137,9 @@ export interface MergeTransition {
   zMerge: number;
   /** Drawn tilted (with --smooth, room in z and a vertex off the shared boundary). */
   tilted: boolean;
+  /** Its triangles in the surfaces: from `first` up to (not including) `end`. */
+  first: number;
+  end: number;
 }
 
 export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: Surfaces; stats: SurfaceStats; transitions: MergeTransition[] } {
@@ -295,7 +298,7 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
         } else {
           stats.merge += emitFace(e.loser, k - 1, z0, e.into, e.loser);
         }
-        transitions.push({ step: k, loser: e.loser, into: e.into, zStart, zMerge: z0, tilted: zStart < z0 });
+        transitions.push({ step: k, loser: e.loser, into: e.into, zStart, zMerge: z0, tilted: zStart < z0, first, end: out.count });
         // The winner grows; the loser's neighbours now border the winner.
         relabel(e.loser, z0, before);
         handOn.push([e.loser, e.into]);
