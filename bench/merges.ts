@@ -30,7 +30,7 @@ try {
     const checks = mergeConnectivity(tgap, surfaces, transitions, SAMPLES);
     const bad = checks.filter(violates);
     for (const c of bad.slice(0, 3)) examples.push(`${d.name}: face ${c.transition.loser} into ${c.transition.into} (step ${c.transition.step}), detached parts at the ${SAMPLES} z: ${c.detached.join(' ')}`);
-    const cvs = checks.map((c) => ({ c, cv: slopeVariation(surfaces, c.triangles, tgap.xs, tgap.ys) })).filter((x) => Number.isFinite(x.cv));
+    const cvs = checks.map((c) => ({ c, cv: slopeVariation(surfaces, c.triangles, surfaces.xs, surfaces.ys) })).filter((x) => Number.isFinite(x.cv));
     const values = cvs.map((x) => x.cv);
     const worst = cvs.reduce((a, b) => (b.cv > a.cv ? b : a), cvs[0]!);
     rows.push([

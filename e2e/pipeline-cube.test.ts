@@ -298,7 +298,7 @@ test('bgt_otterlo_400m smooth cube (ssc build --smooth)', async (t) => {
     const inside = (i: number, x: number, y: number): boolean => {
       const [a, b, c] = [0, 1, 2].map((j) => s.v[3 * i + j]!);
       const dist = (p: number, q: number): number =>
-        ((tgap.xs[q]! - tgap.xs[p]!) * (y - tgap.ys[p]!) - (tgap.ys[q]! - tgap.ys[p]!) * (x - tgap.xs[p]!)) / Math.hypot(tgap.xs[q]! - tgap.xs[p]!, tgap.ys[q]! - tgap.ys[p]!);
+        ((s.xs[q]! - s.xs[p]!) * (y - s.ys[p]!) - (s.ys[q]! - s.ys[p]!) * (x - s.xs[p]!)) / Math.hypot(s.xs[q]! - s.xs[p]!, s.ys[q]! - s.ys[p]!);
       const d1 = dist(a!, b!), d2 = dist(b!, c!), d3 = dist(c!, a!);
       return (d1 > MARGIN && d2 > MARGIN && d3 > MARGIN) || (d1 < -MARGIN && d2 < -MARGIN && d3 < -MARGIN);
     };
@@ -313,8 +313,8 @@ test('bgt_otterlo_400m smooth cube (ssc build --smooth)', async (t) => {
       let [bx0, by0, bx1, by1] = [Infinity, Infinity, -Infinity, -Infinity];
       for (const i of mine) for (let j = 0; j < 3; j++) {
         const v = s.v[3 * i + j]!;
-        bx0 = Math.min(bx0, tgap.xs[v]!); by0 = Math.min(by0, tgap.ys[v]!);
-        bx1 = Math.max(bx1, tgap.xs[v]!); by1 = Math.max(by1, tgap.ys[v]!);
+        bx0 = Math.min(bx0, s.xs[v]!); by0 = Math.min(by0, s.ys[v]!);
+        bx1 = Math.max(bx1, s.xs[v]!); by1 = Math.max(by1, s.ys[v]!);
       }
       // The loser's box with a margin, so that the winner around it shows.
       const pad = Math.max(bx1 - bx0, by1 - by0) / 8;
@@ -363,12 +363,15 @@ test('bgt_otterlo_400m smooth cube (ssc build --smooth)', async (t) => {
       if (stray.some((n) => n > 0)) detached.push(`${m.loser}: ${stray.join(' ')}`);
       if (shares.slice(1, 7).some((x) => x > 0 && x < 1)) partWay++;
     }
-    // Not all: where most of a loser's area lies in triangles with every corner on the shared
-    // boundary, it goes at the ramp's foot, before the second sample.
+    // Measured: all 337 (chords split, split-chords.ts); before, a loser whose area lay mostly
+    // in triangles with every corner on the shared boundary went at the ramp's foot.
     t.diagnostic(`${partWay} of ${picks.length} merges show part-way at 6 z inside the transition`);
     assert.ok(partWay >= 0.8 * picks.length, `only ${partWay} of ${picks.length} merges show part-way`);
     t.diagnostic(`${detached.length} merges with gained pixels apart from the winner (loser: pixels at the 8 z): ${detached.join('; ')}`);
-    // Measured: 3 of 337, a few pixels each (the needle of a sliver along a boundary with a third face).
-    assert.ok(detached.length <= 0.01 * picks.length, `${detached.length} merges with gained pixels apart from the winner: ${detached.join('; ')}`);
+    // Measured: 8 of 337, at most 6 pixels of 4096 each: the gain reaches the winner through a
+    // needle thinner than a pixel (a sliver along a boundary with a third face, or beside a
+    // chord's midpoint). Geometrically every part is attached: merge-connectivity.test.ts checks
+    // that exactly on every merge of this dataset.
+    assert.ok(detached.length <= 0.03 * picks.length, `${detached.length} merges with gained pixels apart from the winner: ${detached.join('; ')}`);
   });
 });

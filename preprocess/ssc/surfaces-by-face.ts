@@ -12,7 +12,7 @@ const INDEX_FROM = 32;
 export class SurfacesByFace {
   private readonly lists = new Map<number, number[]>();
 
-  constructor(private readonly out: Surfaces, private readonly xs: Float64Array, private readonly ys: Float64Array) {}
+  constructor(private readonly out: Surfaces) {}
 
   /** Surface triangle `tri` now lies in `face`'s area. */
   add(face: number, tri: number): void {
@@ -49,8 +49,8 @@ export class SurfacesByFace {
 
   private coords(v: ArrayLike<number>, i: number, into: Float64Array): Float64Array {
     for (let k = 0; k < 3; k++) {
-      into[2 * k] = this.xs[v[i + k]!]!;
-      into[2 * k + 1] = this.ys[v[i + k]!]!;
+      into[2 * k] = this.out.xs[v[i + k]!]!;
+      into[2 * k + 1] = this.out.ys[v[i + k]!]!;
     }
     return into;
   }

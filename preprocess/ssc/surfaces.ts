@@ -13,11 +13,19 @@ import { scaleAtZ, zAtScale } from '../../format/scale.js';
 import { EventKind, faceEndZ, LAST_REMOVAL_PHASE, phaseZ, REEMIT_PHASE, resolveFace, resolveFaceAt, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
 import { smoothMergeZ } from './smooth-merge.js';
 import { EdgeSideTimes, Side } from './edge-side-times.js';
+import { edgeKey, splitChords } from './split-chords.js';
 import { SurfacesByFace } from './surfaces-by-face.js';
 import { triangulateFace, type FaceEdge, type TriangulateStats } from './triangulate-face.js';
 
 export class Surfaces {
   count = 0;
+  /**
+   * Vertex coordinates by id: the tGAP's, and after them the few a smooth cube adds (chord
+   * midpoints, split-chords.ts).
+   */
+  xs: Float64Array;
+  ys: Float64Array;
+  vertexCount: number;
   /** tGAP vertex ids, 3 per triangle, counterclockwise. */
   v = new Int32Array(3 * 1024);
   /** z of each vertex of each triangle (3 per triangle): equal on a horizontal one. */
@@ -37,6 +45,28 @@ export class Surfaces {
   pieces = 0;
   private readonly pieceIds = new Map<string, number>();
   private lastFlat = false;
+
+  constructor(xs: Float64Array = new Float64Array(0), ys: Float64Array = new Float64Array(0)) {
+    this.xs = xs;
+    this.ys = ys;
+    this.vertexCount = xs.length;
+  }
+
+  /** A new vertex at (x, y); returns its id. */
+  addVertex(x: number, y: number): number {
+    if (this.vertexCount === this.xs.length) {
+      // Copied on the first one: the tGAP's own arrays are not ours to grow.
+      const n = Math.max(16, this.xs.length + (this.xs.length >> 3));
+      for (const k of ['xs', 'ys'] as const) {
+        const a = new Float64Array(n);
+        a.set(this[k]);
+        this[k] = a;
+      }
+    }
+    this.xs[this.vertexCount] = x;
+    this.ys[this.vertexCount] = y;
+    return this.vertexCount++;
+  }
 
   /** A horizontal triangle at z. */
   add(a: number, b: number, c: number, z: number, upper: number, lower: number): void {
@@ -105,6 +135,8 @@ export interface SurfaceStats extends TriangulateStats {
   tiltedMerges: number;
   /** Simplification triangles drawn tilted (smooth), of `simplify`. */
   tiltedRemovals: number;
+  /** Triangles added by splitting chords between shared-boundary vertices (smooth merges). */
+  chordSplits: number;
 }
 
 export interface SurfaceOptions {
@@ -145,8 +177,8 @@ export interface MergeTransition {
 export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: Surfaces; stats: SurfaceStats; transitions: MergeTransition[] } {
   const steps = t.meta.steps;
   const zTop = steps + 1;
-  const out = new Surfaces();
-  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0 };
+  const out = new Surfaces(t.xs, t.ys);
+  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, chordSplits: 0 };
   const { xs, ys, faces, edges } = t;
   // Edges by the state they start and end in.
   const born: number[][] = Array.from({ length: steps + 2 }, () => []);
@@ -199,7 +231,7 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
    * only grows as the tGAP is replayed, so older surfaces below it are never needed again.
    */
   const reachBack = (z: number): number => zAtScale(scaleInfo, scaleAtZ(scaleInfo, z) / MAX_TRANSITION_RATIO);
-  const byFace = opts.smooth ? new SurfacesByFace(out, xs, ys) : undefined;
+  const byFace = opts.smooth ? new SurfacesByFace(out) : undefined;
   /** Surfaces from `from` up to the last one added lie in `face`'s area (smooth cubes only). */
   const lieIn = (face: number, from: number): void => {
     if (byFace) for (let i = from; i < out.count; i++) byFace.add(face, i);
@@ -231,15 +263,23 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
    * (smooth-merge.ts); or flat at zMerge when it cannot tilt. Returns the transition's zStart.
    */
   const emitSmoothMerge = (byFace: SurfacesByFace, loser: number, into: number, s: number, sharedWithInto: number[], zFoot: number, zMerge: number, key: string): number => {
-    stats.merge += triangulate(loser, s);
-    // A vertex of the shared boundary may start once the winner lies on its side.
+    triangulate(loser, s);
+    // A vertex of the shared boundary may start once the winner lies beside it.
     const shared = new Map<number, number>();
+    const segments = new Set<string>();
     for (const e of sharedWithInto) {
       const intoSide = resolveFace(faces, edges[e]!.left, s) === into ? Side.Left : Side.Right;
       for (const [v, z] of sides.vertexTimes(e, intoSide)) shared.set(v, Math.max(shared.get(v) ?? -Infinity, z + SURFACE_GAP));
+      const verts = edges[e]!.verts;
+      for (let i = 0; i + 1 < verts.length; i++) segments.add(edgeKey(verts[i]!, verts[i + 1]!));
     }
+    const own = splitChords(tris, out.xs, out.ys, (v) => shared.has(v), (a, b) => segments.has(edgeKey(a, b)), (x, y) => out.addVertex(x, y));
+    stats.merge += own.length / 3;
+    stats.chordSplits += (own.length - tris.length) / 3;
+    tris.length = 0;
+    for (const v of own) tris.push(v);
     const lowest = byFace.lowestZ(loser, tris, zFoot, SURFACE_GAP, reachBack(zMerge));
-    const z = smoothMergeZ(tris, xs, ys, shared, { zFoot, zMerge, lowest });
+    const z = smoothMergeZ(tris, out.xs, out.ys, shared, { zFoot, zMerge, lowest });
     const zOf = (v: number): number => z?.get(v) ?? zMerge;
     let zLow = zMerge;
     for (let i = 0; i < tris.length; i += 3) {
