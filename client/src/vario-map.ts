@@ -49,11 +49,16 @@ export class VarioMap extends Evented<VarioMapEvents> {
   private readonly options: VarioMapOptions;
   private readonly motionQuery: MediaQueryList | null;
   private hash: UrlHash | null = null;
+  /** The scale limits given (option or setter); undefined: the cube's default. */
+  private readonly scaleLimits: { min: number | undefined; max: number | undefined };
+  /** The cube's default scale limits, once its metadata is known. */
+  private defaultLimits: { min: number; max: number } | null = null;
   private removed = false;
 
   constructor(options: VarioMapOptions) {
     super();
     this.options = options;
+    this.scaleLimits = { min: options.minScale, max: options.maxScale };
     this.dom = new MapDom(options.container, options.ariaLabel ?? 'Map');
     this.settings = {
       zoomStep: options.zoomStep ?? 2,
@@ -67,10 +72,14 @@ export class VarioMap extends Evented<VarioMapEvents> {
     this.view = new MapView({
       requestFrame: () => this.engine.requestFrame(),
       reduceMotion: () => this.reducedMotion(),
+      size: () => this.dom.cssSize(),
       emit: (type: MoveEventType, originalEvent) => this.fire(type, originalEvent ? { originalEvent } : {}),
     });
     const scale = options.scaleDenominator ?? (options.zoom !== undefined ? scaleAtZoom(options.zoom) : undefined);
     this.view.place({ ...(options.center ? { x: options.center[0], y: options.center[1] } : {}), ...(scale !== undefined ? { scale } : {}) }, options.sliceZ ?? null);
+    // Wrong limits are refused here, before anything is fetched.
+    this.applyScaleLimits(true);
+    if (options.maxBounds) this.view.setLimits({ maxBounds: options.maxBounds });
     if (options.surface) this.view.setSurface(typeof options.surface === 'string' ? parseSurface(options.surface) : options.surface);
     this.engine = new MapEngine(this.dom.canvasContainer, this.view, options);
     bindEngine(this, this.engine);
@@ -207,6 +216,39 @@ export class VarioMap extends Evented<VarioMapEvents> {
     const res = resolutionAtScale(from.scale, this.view.pixelSizeMm);
     const to = { x: from.x + offset[0] * res, y: from.y - offset[1] * res, scale: from.scale };
     return this.view.animate((t) => lerpCamera(from, to, t), { durationMs: o.duration ?? this.settings.panDurationMs, easing: o.easing ?? easeInOut });
+  }
+
+  // ---- the limits ------------------------------------------------------------------------------
+
+  /**
+   * The ground box the visible area stays inside (null: none). The view moves within it at
+   * once; no pan, zoom or animation leaves it after.
+   */
+  setMaxBounds(bounds: Bbox | null): this {
+    this.view.setLimits({ maxBounds: bounds });
+    return this;
+  }
+
+  getMaxBounds(): Bbox | null {
+    return this.view.limits.maxBounds;
+  }
+
+  /** The smallest scale denominator (most detail); null: the default, a quarter of the base scale. The view zooms out to it at once if it must. */
+  setMinScale(scale: number | null): this {
+    return this.setScaleLimit('min', scale);
+  }
+
+  getMinScale(): number {
+    return this.view.limits.minScale;
+  }
+
+  /** The largest scale denominator; null: the default, 4x the scale that shows the whole extent. */
+  setMaxScale(scale: number | null): this {
+    return this.setScaleLimit('max', scale);
+  }
+
+  getMaxScale(): number {
+    return this.view.limits.maxScale;
   }
 
   /** Stops a running animation where it is. */
@@ -384,13 +426,36 @@ export class VarioMap extends Evented<VarioMapEvents> {
   private onMeta(meta: CubeMeta): void {
     const [w, h] = this.dom.cssSize();
     const extentScale = scaleAtResolution(Math.max((meta.extent[2] - meta.extent[0]) / w, (meta.extent[3] - meta.extent[1]) / h), meta.pixelSizeMm);
-    this.view.minScale = this.options.minScale ?? meta.baseScale / 4;
-    this.view.maxScale = this.options.maxScale ?? extentScale * 4;
+    this.defaultLimits = { min: meta.baseScale / 4, max: extentScale * 4 };
+    this.applyScaleLimits(true);
     this.levels = discreteLevels(meta.baseScale, extentScale, this.options.comparisonFactor ?? 2);
     if (this.settings.comparisonMode) this.view.setLevels(this.levels);
-    this.view.place({ scale: this.view.clamp(this.view.camera.scale) });
     this.fire('meta', meta);
     this.hash?.apply();
+  }
+
+  /** One scale limit set; when the two would cross, an error and nothing changed. */
+  private setScaleLimit(which: 'min' | 'max', scale: number | null): this {
+    const before = { ...this.scaleLimits };
+    this.scaleLimits[which] = scale ?? undefined;
+    try {
+      this.applyScaleLimits(false);
+    } catch (e) {
+      Object.assign(this.scaleLimits, before);
+      throw e;
+    }
+    return this;
+  }
+
+  /**
+   * The view's scale limits: those given, else the cube's defaults (before the cube is known,
+   * none). `quiet`: the first view, brought within them without movement events.
+   */
+  private applyScaleLimits(quiet: boolean): void {
+    const d = this.defaultLimits;
+    const min = this.scaleLimits.min ?? (d ? Math.min(d.min, this.scaleLimits.max ?? Infinity) : 1);
+    const max = this.scaleLimits.max ?? (d ? Math.max(d.max, min) : Infinity);
+    this.view.setLimits({ minScale: min, maxScale: max }, quiet);
   }
 
   private forwardEngineEvents(): void {
