@@ -25,6 +25,8 @@ export interface VarioMapOptions extends Partial<HandlerFlags>, Omit<EngineOptio
   maxScale?: number;
   /** The ground box (x0, y0, x1, y1) the visible area stays inside: no pan or zoom out leaves it. */
   maxBounds?: Bbox;
+  /** A map inside a page that scrolls: the wheel zooms only with Ctrl (or ⌘), one finger scrolls the page and two move the map. */
+  cooperativeGestures?: boolean;
   /** false turns every input handler off. */
   interactive?: boolean;
   /** Keeps centre and scale in the URL's hash (#x/y/scale). */

@@ -103,7 +103,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
       size: () => this.dom.cssSize(),
       pixelSizeMm: () => this.view.pixelSizeMm,
     };
-    this.handlers = interactive ? new Handlers(ctx, { scrollZoom: flag('scrollZoom'), dragPan: flag('dragPan'), keyboard: flag('keyboard'), doubleClickZoom: flag('doubleClickZoom'), touchZoomRotate: flag('touchZoomRotate'), boxZoom: flag('boxZoom') }) : null;
+    this.handlers = interactive ? new Handlers(ctx, { scrollZoom: flag('scrollZoom'), dragPan: flag('dragPan'), keyboard: flag('keyboard'), doubleClickZoom: flag('doubleClickZoom'), touchZoomRotate: flag('touchZoomRotate'), boxZoom: flag('boxZoom') }, options.cooperativeGestures ?? false) : null;
     this.features = new FeatureEvents(cc, {
       listens: (type) => this.listens(type),
       fire: (type, ev) => this.fire(type, ev),
