@@ -1,10 +1,12 @@
 // Cooperative gestures in a page that scrolls (the map inside an article, the built ES module),
 // with real input: a plain wheel over the map scrolls the page and shows and announces the hint,
-// Ctrl+wheel zooms the map; on a touch screen one finger scrolls the page and two move the map.
+// Ctrl+wheel zooms the map (axe-core finding no violation with the hint shown); on a touch
+// screen one finger scrolls the page and two move the map.
 import assert from 'node:assert/strict';
 import { after, afterEach, before, describe, test } from 'node:test';
 import type { CDPSession, Page } from 'playwright-core';
 import { TOUCH_HINT, wheelHint } from '../client/src/ui/gesture-hint-text.js';
+import { axeViolations } from './helpers/axe.js';
 import { openMap, type MapPage } from './helpers/browser.js';
 import { startLibSite, type LibSite } from './helpers/lib-site.js';
 import { checkAndClose } from './helpers/test-bed.js';
@@ -18,10 +20,11 @@ const ARTICLE = `<!doctype html>
   <title>An article with a map</title>
   <link rel="icon" href="data:,">
   <link rel="stylesheet" href="lib/vario-map.css">
-  <style>body { margin: 0; } article { width: 640px; } p { height: 600px; margin: 0; } #map { height: 360px; }</style>
+  <style>body { margin: 0; } article { width: 640px; } h1 { margin: 0; height: 40px; } p { height: 560px; margin: 0; } #map { height: 360px; }</style>
 </head>
 <body>
   <main><article>
+    <h1>An article with a map</h1>
     <p>Text before the map.</p>
     <div id="map"></div>
     <p>Text after the map.</p>
@@ -89,6 +92,7 @@ describe('cooperative gestures in a page that scrolls (bgt_otterlo_400m)', () =>
     await page.mouse.wheel(0, 100);
     await page.waitForFunction('window.scrollY > 500');
     assert.deepEqual(await hint(page), { text: wheelHint(false), shown: true, live: 'polite' });
+    assert.deepEqual(await axeViolations(page), [], 'axe-core finds nothing wrong with the hint shown');
     await page.waitForTimeout(400); // a zoom would have started by now
     assert.deepEqual(await camera(page), start, 'the map did not move');
 
