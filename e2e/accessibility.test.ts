@@ -1,7 +1,8 @@
 // axe-core (the standard accessibility checker) in Chromium on the demo page and on every page
-// template of the docs (docs/*.md's whole HTML pages, served with the built library and a cube):
-// once the map has loaded, no violation of any rule axe runs by default (WCAG A and AA and its
-// best practices, among them that all content is inside landmarks), and the map inside <main>.
+// template of the docs (docs/*.md's whole HTML pages, served with the built library and a cube;
+// a bundler's page with the built module in place of its entry): once the map has loaded, no
+// violation of any rule axe runs by default (WCAG A and AA and its best practices, among them
+// that all content is inside landmarks), and the map inside <main>.
 import assert from 'node:assert/strict';
 import { cp, writeFile } from 'node:fs/promises';
 import path from 'node:path';
@@ -21,6 +22,25 @@ interface PageWindow {
   };
 }
 
+/**
+ * A bundler's page loads its entry (a .ts file the bundler compiles): here the built ES module
+ * does what that entry does (docs/embedding.md's main.ts: the map, its stylesheet, zoom buttons
+ * and a scale bar), so the page's own markup is what axe checks.
+ */
+function servable(html: string): string {
+  const entry = /<script type="module" src="[^"]+\.ts"><\/script>/;
+  if (!entry.test(html)) return html;
+  return html.replace('</head>', '  <link rel="stylesheet" href="lib/vario-map.css">\n</head>').replace(
+    entry,
+    `<script type="module">
+    import { VarioMap, ZoomControl, ScaleBar } from './lib/vario-map.js';
+    const map = new VarioMap({ container: 'map', source: 'cube' });
+    map.addControl(new ZoomControl());
+    map.addControl(new ScaleBar(), 'bottom-left');
+  </script>`,
+  );
+}
+
 /** The docs' page templates, by file name in the site. */
 const TEMPLATES = docsPageTemplates();
 const pageName = (i: number): string => `template-${i + 1}.html`;
@@ -30,7 +50,7 @@ describe('accessibility: axe-core on the demo and the docs page templates (bgt_o
   let mp: MapPage | null = null;
 
   before(async () => {
-    lib = await startLibSite(Object.fromEntries(TEMPLATES.map(([, html], i) => [pageName(i), html])));
+    lib = await startLibSite(Object.fromEntries(TEMPLATES.map(([, html], i) => [pageName(i), servable(html)])));
     // The demo as `npm run build` writes it, beside them.
     await cp(path.join(repoRoot, 'dist/client'), lib.dir, { recursive: true });
     // The templates name no icon: the browser asks for this one.
