@@ -1,6 +1,6 @@
 // The view's limits through the demo page (the public API) with real input: with maxBounds
 // every frame of a mouse drag (and its glide), a wheel zoom out and a flight stays inside the
-// box, and the view stops at its edge; setMinScale and setMaxScale bring the view within them
+// box, and the view stops at its edge, also when the map grows; setMinScale and setMaxScale bring the view within them
 // at once and hold the wheel there.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
@@ -66,6 +66,11 @@ describe('map limits (bgt_otterlo_400m)', () => {
     const bounds = await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.getBounds());
     assert.ok(Math.abs(bounds[0] - box[0]) < 1e-6, `the west edges meet: ${bounds[0]} vs ${box[0]}`);
     assert.ok((await allInside(page, box)) >= 5, 'the drag moved the map');
+    // 160 px wider, about the centre: the view would reach 80 px past the west edge.
+    await page.setViewportSize({ width: 800, height: 480 });
+    await page.waitForFunction(`Math.abs(window.map.getBounds()[2] - window.map.getBounds()[0] - ${800 * px(3000)}) < 1e-6`);
+    const wider = await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.getBounds());
+    assert.ok(Math.abs(wider[0] - box[0]) < 1e-6, `after a resize the west edges still meet: ${wider[0]} vs ${box[0]}`);
   });
 
   test('a wheel zoom out stops where the box fills the view; a flight away stays inside', async () => {

@@ -119,6 +119,11 @@ export class MapView {
     const next: ViewLimits = { ...this.bounds, ...l };
     checkViewLimits(next);
     this.bounds = { ...next, maxBounds: next.maxBounds && [...next.maxBounds] };
+    this.keepWithinLimits(quiet);
+  }
+
+  /** Brings the view within the limits (after they or the map's size changed); see setLimits. */
+  keepWithinLimits(quiet = false): void {
     const c = this.current;
     if (!this.cube || !Number.isFinite(c.x) || !Number.isFinite(c.scale)) return;
     const to = this.within(c);
