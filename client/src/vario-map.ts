@@ -5,6 +5,7 @@
 import type { CubeMeta } from '../../format/cube-index.js';
 import { parseSurface, type SurfaceSpec } from '../../format/slicing-surface.js';
 import { MapView, type MoveEventType } from './camera/map-view.js';
+import { ScaleLimits } from './camera/scale-limits.js';
 import { StepZoom } from './camera/step-zoom.js';
 import { bindEngine } from './engine/engine-of.js';
 import { MapEngine } from './engine/map-engine.js';
@@ -49,16 +50,12 @@ export class VarioMap extends Evented<VarioMapEvents> {
   private readonly options: VarioMapOptions;
   private readonly motionQuery: MediaQueryList | null;
   private hash: UrlHash | null = null;
-  /** The scale limits given (option or setter); undefined: the cube's default. */
-  private readonly scaleLimits: { min: number | undefined; max: number | undefined };
-  /** The cube's default scale limits, once its metadata is known. */
-  private defaultLimits: { min: number; max: number } | null = null;
+  private readonly scaleLimits: ScaleLimits;
   private removed = false;
 
   constructor(options: VarioMapOptions) {
     super();
     this.options = options;
-    this.scaleLimits = { min: options.minScale, max: options.maxScale };
     this.dom = new MapDom(options.container, options.ariaLabel ?? 'Map');
     this.settings = {
       zoomStep: options.zoomStep ?? 2,
@@ -77,8 +74,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
     });
     const scale = options.scaleDenominator ?? (options.zoom !== undefined ? scaleAtZoom(options.zoom) : undefined);
     this.view.place({ ...(options.center ? { x: options.center[0], y: options.center[1] } : {}), ...(scale !== undefined ? { scale } : {}) }, options.sliceZ ?? null);
-    // Wrong limits are refused here, before anything is fetched.
-    this.applyScaleLimits(true);
+    this.scaleLimits = new ScaleLimits(this.view, options.minScale, options.maxScale);
     if (options.maxBounds) this.view.setLimits({ maxBounds: options.maxBounds });
     if (options.surface) this.view.setSurface(typeof options.surface === 'string' ? parseSurface(options.surface) : options.surface);
     this.engine = new MapEngine(this.dom.canvasContainer, this.view, options);
@@ -235,7 +231,8 @@ export class VarioMap extends Evented<VarioMapEvents> {
 
   /** The smallest scale denominator (most detail); null: the default, a quarter of the base scale. The view zooms out to it at once if it must. */
   setMinScale(scale: number | null): this {
-    return this.setScaleLimit('min', scale);
+    this.scaleLimits.set('min', scale);
+    return this;
   }
 
   getMinScale(): number {
@@ -244,7 +241,8 @@ export class VarioMap extends Evented<VarioMapEvents> {
 
   /** The largest scale denominator; null: the default, 4x the scale that shows the whole extent. */
   setMaxScale(scale: number | null): this {
-    return this.setScaleLimit('max', scale);
+    this.scaleLimits.set('max', scale);
+    return this;
   }
 
   getMaxScale(): number {
@@ -426,36 +424,11 @@ export class VarioMap extends Evented<VarioMapEvents> {
   private onMeta(meta: CubeMeta): void {
     const [w, h] = this.dom.cssSize();
     const extentScale = scaleAtResolution(Math.max((meta.extent[2] - meta.extent[0]) / w, (meta.extent[3] - meta.extent[1]) / h), meta.pixelSizeMm);
-    this.defaultLimits = { min: meta.baseScale / 4, max: extentScale * 4 };
-    this.applyScaleLimits(true);
+    this.scaleLimits.setDefaults(meta.baseScale / 4, extentScale * 4);
     this.levels = discreteLevels(meta.baseScale, extentScale, this.options.comparisonFactor ?? 2);
     if (this.settings.comparisonMode) this.view.setLevels(this.levels);
     this.fire('meta', meta);
     this.hash?.apply();
-  }
-
-  /** One scale limit set; when the two would cross, an error and nothing changed. */
-  private setScaleLimit(which: 'min' | 'max', scale: number | null): this {
-    const before = { ...this.scaleLimits };
-    this.scaleLimits[which] = scale ?? undefined;
-    try {
-      this.applyScaleLimits(false);
-    } catch (e) {
-      Object.assign(this.scaleLimits, before);
-      throw e;
-    }
-    return this;
-  }
-
-  /**
-   * The view's scale limits: those given, else the cube's defaults (before the cube is known,
-   * none). `quiet`: the first view, brought within them without movement events.
-   */
-  private applyScaleLimits(quiet: boolean): void {
-    const d = this.defaultLimits;
-    const min = this.scaleLimits.min ?? (d ? Math.min(d.min, this.scaleLimits.max ?? Infinity) : 1);
-    const max = this.scaleLimits.max ?? (d ? Math.max(d.max, min) : Infinity);
-    this.view.setLimits({ minScale: min, maxScale: max }, quiet);
   }
 
   private forwardEngineEvents(): void {

@@ -4,26 +4,9 @@
 // jump yield, the scale limits, and fitting a box to device pixels as `ssc slice --bbox` does.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import type { CubeMeta } from '../../../format/cube-index.js';
 import { scaleAtZ, zAtScale } from '../../../format/scale.js';
+import { makeView, testMeta as meta } from '../../../testing/map-view-fixture.js';
 import { fitBbox } from '../geometry/view.js';
-import { MapView, type MoveEventType } from './map-view.js';
-
-const meta = {
-  name: 'test', crs: '', extent: [0, 0, 1000, 500], zMax: 100, steps: 100, phases: 8,
-  baseScale: 1000, baseFaces: 10000, pixelSizeMm: 0.25, scaleTable: [[0, 10000], [100, 1]],
-  style: { name: 'test', background: '#ffffff', classes: [] }, attribution: '',
-  faces: { count: 0, pages: [] }, attributes: { count: 0, pages: [] },
-} as unknown as CubeMeta;
-
-function makeView(): { view: MapView; events: MoveEventType[]; changes: boolean[] } {
-  const events: MoveEventType[] = [];
-  const changes: boolean[] = [];
-  // 400 x 200 CSS px: at 1:4000 (0.25 mm pixels) the view is 400 x 200 ground units.
-  const view = new MapView({ requestFrame: () => undefined, reduceMotion: () => true, size: () => [400, 200], emit: (type) => events.push(type) });
-  view.onChange((sliceMoved) => changes.push(sliceMoved));
-  return { view, events, changes };
-}
 
 describe('MapView', () => {
   test('the first view fits the cube, keeping the centre or the scale the options gave', () => {
