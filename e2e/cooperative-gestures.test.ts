@@ -1,6 +1,6 @@
 // Cooperative gestures in a page that scrolls (the map inside an article, the built ES module),
 // with real input: a plain wheel over the map scrolls the page and shows and announces the hint,
-// Ctrl+wheel zooms the map (axe-core finding no violation with the hint shown); on a touch
+// Ctrl+wheel (⌘ + wheel on a Mac) zooms the map (axe-core finding no violation with the hint shown); on a touch
 // screen one finger scrolls the page and two move the map.
 import assert from 'node:assert/strict';
 import { after, afterEach, before, describe, test } from 'node:test';
@@ -65,8 +65,8 @@ describe('cooperative gestures in a page that scrolls (bgt_otterlo_400m)', () =>
   });
 
   /** The article scrolled so the map is at 100..460 px of the 640 x 480 window. */
-  async function open(touch: boolean): Promise<Page> {
-    mp = await openMap(lib.browser, lib.server.url, {}, { page: 'article.html', hasTouch: touch });
+  async function open(touch: boolean, initScript?: string): Promise<Page> {
+    mp = await openMap(lib.browser, lib.server.url, {}, { page: 'article.html', hasTouch: touch, ...(initScript ? { initScript } : {}) });
     const page = mp.page;
     await idle(page);
     await page.evaluate(() => (globalThis as unknown as PageHint).scrollTo(0, 500));
@@ -103,6 +103,20 @@ describe('cooperative gestures in a page that scrolls (bgt_otterlo_400m)', () =>
     await settle(page, `window.map.getScaleDenominator() < ${start.scale * 0.75}`);
     assert.ok(Math.abs((await camera(page)).scale - start.scale / 2) < 1e-6 * start.scale, 'one zoom step in');
     assert.equal(await scrollY(page), scrolled, 'the page did not scroll');
+  });
+
+  test('on a Mac the hint names ⌘, and ⌘ + wheel zooms', async () => {
+    const page = await open(false, "Object.defineProperty(Navigator.prototype, 'platform', { get: () => 'MacIntel' });");
+    const start = await camera(page);
+    await page.mouse.move(320, 280);
+    await page.mouse.wheel(0, 100);
+    await page.waitForFunction('window.scrollY > 500');
+    assert.equal((await hint(page)).text, wheelHint(true));
+    assert.match(wheelHint(true), /^Use ⌘ \+ scroll/);
+    await page.keyboard.down('Meta');
+    await page.mouse.wheel(0, -100);
+    await page.keyboard.up('Meta');
+    await settle(page, `window.map.getScaleDenominator() < ${start.scale * 0.75}`);
   });
 
   test('one finger scrolls the page and shows the hint; two fingers move the map', async () => {
