@@ -1,5 +1,6 @@
 // The types of VarioMap's public API: its options, events and camera options.
 import type { SurfaceSpec } from '../../format/slicing-surface.js';
+import type { Bbox } from './geometry/view.js';
 import type { EngineEvents, EngineOptions } from './engine/map-engine.js';
 import type { MapPointerEvent } from './interaction/feature-events.js';
 import type { HandlerFlags } from './interaction/handlers.js';
@@ -22,6 +23,10 @@ export interface VarioMapOptions extends Partial<HandlerFlags>, Omit<EngineOptio
   /** Smallest scale denominator (most detail) and largest; defaults: a quarter of the base scale, 4x the extent. */
   minScale?: number;
   maxScale?: number;
+  /** The ground box (x0, y0, x1, y1) the visible area stays inside: no pan or zoom out leaves it. */
+  maxBounds?: Bbox;
+  /** A map inside a page that scrolls: the wheel zooms only with Ctrl (or ⌘), one finger scrolls the page and two move the map. */
+  cooperativeGestures?: boolean;
   /** false turns every input handler off. */
   interactive?: boolean;
   /** Keeps centre and scale in the URL's hash (#x/y/scale). */

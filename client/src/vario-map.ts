@@ -5,6 +5,7 @@
 import type { CubeMeta } from '../../format/cube-index.js';
 import { parseSurface, type SurfaceSpec } from '../../format/slicing-surface.js';
 import { MapView, type MoveEventType } from './camera/map-view.js';
+import { ScaleLimits } from './camera/scale-limits.js';
 import { StepZoom } from './camera/step-zoom.js';
 import { bindEngine } from './engine/engine-of.js';
 import { MapEngine } from './engine/map-engine.js';
@@ -49,6 +50,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
   private readonly options: VarioMapOptions;
   private readonly motionQuery: MediaQueryList | null;
   private hash: UrlHash | null = null;
+  private readonly scaleLimits: ScaleLimits;
   private removed = false;
 
   constructor(options: VarioMapOptions) {
@@ -67,10 +69,13 @@ export class VarioMap extends Evented<VarioMapEvents> {
     this.view = new MapView({
       requestFrame: () => this.engine.requestFrame(),
       reduceMotion: () => this.reducedMotion(),
+      size: () => this.dom.cssSize(),
       emit: (type: MoveEventType, originalEvent) => this.fire(type, originalEvent ? { originalEvent } : {}),
     });
     const scale = options.scaleDenominator ?? (options.zoom !== undefined ? scaleAtZoom(options.zoom) : undefined);
     this.view.place({ ...(options.center ? { x: options.center[0], y: options.center[1] } : {}), ...(scale !== undefined ? { scale } : {}) }, options.sliceZ ?? null);
+    this.scaleLimits = new ScaleLimits(this.view, options.minScale, options.maxScale);
+    if (options.maxBounds) this.view.setLimits({ maxBounds: options.maxBounds });
     if (options.surface) this.view.setSurface(typeof options.surface === 'string' ? parseSurface(options.surface) : options.surface);
     this.engine = new MapEngine(this.dom.canvasContainer, this.view, options);
     bindEngine(this, this.engine);
@@ -94,7 +99,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
       size: () => this.dom.cssSize(),
       pixelSizeMm: () => this.view.pixelSizeMm,
     };
-    this.handlers = interactive ? new Handlers(ctx, { scrollZoom: flag('scrollZoom'), dragPan: flag('dragPan'), keyboard: flag('keyboard'), doubleClickZoom: flag('doubleClickZoom'), touchZoomRotate: flag('touchZoomRotate'), boxZoom: flag('boxZoom') }) : null;
+    this.handlers = interactive ? new Handlers(ctx, { scrollZoom: flag('scrollZoom'), dragPan: flag('dragPan'), keyboard: flag('keyboard'), doubleClickZoom: flag('doubleClickZoom'), touchZoomRotate: flag('touchZoomRotate'), boxZoom: flag('boxZoom') }, options.cooperativeGestures ?? false) : null;
     this.features = new FeatureEvents(cc, {
       listens: (type) => this.listens(type),
       fire: (type, ev) => this.fire(type, ev),
@@ -207,6 +212,41 @@ export class VarioMap extends Evented<VarioMapEvents> {
     const res = resolutionAtScale(from.scale, this.view.pixelSizeMm);
     const to = { x: from.x + offset[0] * res, y: from.y - offset[1] * res, scale: from.scale };
     return this.view.animate((t) => lerpCamera(from, to, t), { durationMs: o.duration ?? this.settings.panDurationMs, easing: o.easing ?? easeInOut });
+  }
+
+  // ---- the limits ------------------------------------------------------------------------------
+
+  /**
+   * The ground box the visible area stays inside (null: none). The view moves within it at
+   * once; no pan, zoom or animation leaves it after.
+   */
+  setMaxBounds(bounds: Bbox | null): this {
+    this.view.setLimits({ maxBounds: bounds });
+    return this;
+  }
+
+  getMaxBounds(): Bbox | null {
+    return this.view.limits.maxBounds;
+  }
+
+  /** The smallest scale denominator (most detail); null: the default, a quarter of the base scale. The view zooms out to it at once if it must. */
+  setMinScale(scale: number | null): this {
+    this.scaleLimits.set('min', scale);
+    return this;
+  }
+
+  getMinScale(): number {
+    return this.view.limits.minScale;
+  }
+
+  /** The largest scale denominator; null: the default, 4x the scale that shows the whole extent. */
+  setMaxScale(scale: number | null): this {
+    this.scaleLimits.set('max', scale);
+    return this;
+  }
+
+  getMaxScale(): number {
+    return this.view.limits.maxScale;
   }
 
   /** Stops a running animation where it is. */
@@ -384,11 +424,9 @@ export class VarioMap extends Evented<VarioMapEvents> {
   private onMeta(meta: CubeMeta): void {
     const [w, h] = this.dom.cssSize();
     const extentScale = scaleAtResolution(Math.max((meta.extent[2] - meta.extent[0]) / w, (meta.extent[3] - meta.extent[1]) / h), meta.pixelSizeMm);
-    this.view.minScale = this.options.minScale ?? meta.baseScale / 4;
-    this.view.maxScale = this.options.maxScale ?? extentScale * 4;
+    this.scaleLimits.setDefaults(meta.baseScale / 4, extentScale * 4);
     this.levels = discreteLevels(meta.baseScale, extentScale, this.options.comparisonFactor ?? 2);
     if (this.settings.comparisonMode) this.view.setLevels(this.levels);
-    this.view.place({ scale: this.view.clamp(this.view.camera.scale) });
     this.fire('meta', meta);
     this.hash?.apply();
   }

@@ -72,7 +72,11 @@ export class MapEngine extends Evented<EngineEvents> {
     options: EngineOptions,
   ) {
     super();
-    this.canvas = new MapCanvas(container, options.pixelRatio, () => this.loop?.viewChanged(false));
+    this.canvas = new MapCanvas(container, options.pixelRatio, () => {
+      // A larger map may show more than maxBounds allows.
+      view.keepWithinLimits();
+      this.loop?.viewChanged(false);
+    });
     this.settings = {
       blending: { mode: 'moving', distance: 0.5, ...options.blending },
       boundaries: { enabled: false, width: 1, color: '#000000', opacity: 0.35, ...options.boundaries },
