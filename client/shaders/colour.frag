@@ -2,7 +2,8 @@
 // Colour pass: from the ID buffer to colours. Per pixel the upper face's class colour (and its
 // pattern within the pattern's z range); near-intersection blending toward the face below when
 // the surface is less than uBlendDistance under the slice; face boundaries where the face id
-// changes between neighbouring pixels.
+// changes between neighbouring pixels; last the highlight of faces whose feature state says so,
+// on their own pixels only (a fill, and an outline just inside the face's edge).
 precision highp float;
 precision highp int;
 precision highp usampler2D;
@@ -20,8 +21,19 @@ uniform vec4 uBoundaryColour; // rgb, alpha = opacity
 uniform float uPatternCell;   // pattern period, device pixels
 uniform float uPatternLine;   // pattern line width / dot radius, device pixels
 uniform vec2 uPatternShift;   // anchors patterns to the ground, device pixels
+uniform usampler2D uFaceState; // R8UI, one texel per face id (rows of textureSize().x): 1 highlighted
+uniform vec4 uHighlightFill;    // rgb, alpha = opacity
+uniform vec4 uHighlightOutline; // rgb, alpha = opacity
+uniform int uHighlightWidth;    // outline inside the face, device pixels; 0: none
 
 out vec4 oColour;
+
+bool highlighted(uint face) {
+  ivec2 size = textureSize(uFaceState, 0);
+  int f = int(face);
+  if (face == 0u || f >= size.x * size.y) return false;
+  return texelFetch(uFaceState, ivec2(f % size.x, f / size.x), 0).r == 1u;
+}
 
 float patternMask(int kind) {
   vec2 q = gl_FragCoord.xy + uPatternShift;
@@ -79,6 +91,22 @@ void main() {
       if (texelFetch(uIds, a, 0).x != ids.x || texelFetch(uIds, b, 0).x != ids.x) edge = true;
     }
     if (edge) colour = mix(colour, uBoundaryColour.rgb, uBoundaryColour.a);
+  }
+  if (highlighted(ids.x)) {
+    colour = mix(colour, uHighlightFill.rgb, uHighlightFill.a);
+    // The outline: pixels of the face within uHighlightWidth of another face (or of nothing).
+    bool edge = false;
+    for (int dy = -uHighlightWidth; dy <= uHighlightWidth && !edge; dy++) {
+      for (int dx = -uHighlightWidth; dx <= uHighlightWidth; dx++) {
+        ivec2 q = p + ivec2(dx, dy);
+        if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
+        if (texelFetch(uIds, q, 0).x != ids.x) {
+          edge = true;
+          break;
+        }
+      }
+    }
+    if (edge) colour = mix(colour, uHighlightOutline.rgb, uHighlightOutline.a);
   }
   oColour = vec4(colour, 1.0);
 }

@@ -1,6 +1,7 @@
-// The look of the map the user chooses (blending, boundaries) turned into the colour pass's
-// parameters for one frame: device pixel sizes, the blend distance while it applies, and the
-// pattern anchored to the ground so that it moves with the map.
+// The look of the map the user chooses (blending, boundaries, the highlight of faces whose
+// feature state says so) turned into the colour pass's parameters for one frame: device pixel
+// sizes, the blend distance while it applies, and the pattern anchored to the ground so that it
+// moves with the map.
 import type { ViewGeometry } from '../geometry/view.js';
 import type { ColourParams } from './colour-pass.js';
 import { parseColour } from './style-texture.js';
@@ -22,6 +23,18 @@ export interface BoundaryOptions {
   opacity: number;
 }
 
+/** How a face with `highlight: true` in its feature state is drawn: on its own pixels only. */
+export interface HighlightOptions {
+  /** Mixed over the face's colour with `opacity` (0: no fill). */
+  color: string;
+  opacity: number;
+  /** A line inside the face along its edges, `outlineWidth` CSS px wide (0: none). */
+  outlineColor: string;
+  outlineWidth: number;
+}
+
+export const DEFAULT_HIGHLIGHT: HighlightOptions = { color: '#ffd400', opacity: 0.5, outlineColor: '#d40000', outlineWidth: 2 };
+
 /** Pattern period and line width, CSS pixels. */
 const PATTERN_CELL = 8;
 const PATTERN_LINE = 1.25;
@@ -30,14 +43,14 @@ export function colourParams(o: {
   view: ViewGeometry;
   /** Device pixels per CSS pixel. */
   ratio: number;
-  background: string;
   boundaries: BoundaryOptions;
+  highlight: HighlightOptions;
   /** c, or 0 when blending does not apply to this frame. */
   blendDistance: number;
   /** This frame's weight in the accumulated colour. */
   weight: number;
-}): Omit<ColourParams, 'style' | 'classCount'> {
-  const { view, ratio, boundaries: b } = o;
+}): Omit<ColourParams, 'style' | 'classCount' | 'background' | 'faceState'> {
+  const { view, ratio, boundaries: b, highlight: h } = o;
   // Boundary band: n device pixels, from the pixel before each id change to the one after.
   const n = b.enabled ? Math.max(1, Math.round(b.width * ratio)) : 0;
   const bc = parseColour(b.color);
@@ -46,8 +59,8 @@ export function colourParams(o: {
   // ground when the map pans. Worked out in float64 here; the shader gets the small remainder.
   const shiftX = view.centerX / view.resolution - view.width / 2;
   const shiftY = view.centerY / view.resolution - view.height / 2;
+  const fill = parseColour(h.color), line = parseColour(h.outlineColor);
   return {
-    background: parseColour(o.background),
     blendDistance: o.blendDistance,
     boundaryBefore: Math.floor(n / 2),
     boundaryAfter: n - Math.floor(n / 2),
@@ -55,6 +68,9 @@ export function colourParams(o: {
     patternCell: cell,
     patternLine: PATTERN_LINE * ratio,
     patternShift: [((shiftX % cell) + cell) % cell, ((shiftY % cell) + cell) % cell],
+    highlightFill: [fill[0], fill[1], fill[2], h.opacity],
+    highlightOutline: [line[0], line[1], line[2], h.outlineWidth > 0 ? 1 : 0],
+    highlightWidth: h.outlineWidth > 0 ? Math.max(1, Math.round(h.outlineWidth * ratio)) : 0,
     weight: o.weight,
   };
 }

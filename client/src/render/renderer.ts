@@ -1,17 +1,19 @@
 // The GPU side of the map: the WebGL2 context and everything made in it (passes, targets, the
-// style texture, the chunks), one frame at a time, and reading the ID buffer back. A lost
+// style and feature state textures, the chunks), one frame at a time, and reading the ID buffer back. A lost
 // context is given up quietly and rebuilt on restore; the chunks then have to be uploaded again.
 import type { CubeMeta } from '../../../format/cube-index.js';
+import type { CubeStyle } from '../../../format/style.js';
 import type { Surface } from '../../../format/slicing-surface.js';
 import type { ViewGeometry } from '../geometry/view.js';
 import type { ChunkPayload } from '../source/worker-protocol.js';
 import { ChunkStore } from './chunk-store.js';
 import { ColourPass, type ColourParams } from './colour-pass.js';
+import { FaceStateTexture } from './face-state-texture.js';
 import type { GpuChunk } from './gpu-chunk.js';
 import type { IdBuffer } from './id-buffer.js';
 import { IdPass } from './id-pass.js';
 import { PresentPass } from './present-pass.js';
-import { createStyleTexture } from './style-texture.js';
+import { createStyleTexture, parseColour } from './style-texture.js';
 import { SurfacePass } from './surface-pass.js';
 import { Targets } from './targets.js';
 
@@ -21,8 +23,11 @@ export interface FrameParams {
   zMax: number;
   /** Sub-pixel offset of this frame (device pixels); [0, 0] for the plain image. */
   jitter: [number, number];
-  colour: Omit<ColourParams, 'style' | 'classCount'>;
+  colour: Omit<ColourParams, RendererColourParams>;
 }
+
+/** What the renderer adds to the colour pass's parameters: its own textures and the style's background. */
+type RendererColourParams = 'style' | 'classCount' | 'background' | 'faceState';
 
 interface Gpu {
   surface: SurfacePass;
@@ -32,12 +37,16 @@ interface Gpu {
   targets: Targets;
   emptyVao: WebGLVertexArrayObject;
   style: { texture: WebGLTexture; classCount: number } | null;
+  faceState: FaceStateTexture | null;
 }
 
 export class Renderer {
   readonly store: ChunkStore;
   private gpu: Gpu | null = null;
   private meta: CubeMeta | null = null;
+  private style: CubeStyle | null = null;
+  /** Kept to make the feature state texture again after a lost context. */
+  private readonly highlighted = new Set<number>();
   private lastFrame: FrameParams | null = null;
   private lastChunks: GpuChunk[] = [];
   private idsJittered = false;
@@ -86,8 +95,20 @@ export class Renderer {
       present: new PresentPass(gl),
       targets,
       emptyVao: gl.createVertexArray(),
-      style: this.meta ? createStyleTexture(gl, this.meta) : null,
+      style: null,
+      faceState: null,
     };
+    this.makeStyleTextures();
+  }
+
+  /** The style and feature state textures, made again for the current meta and style. */
+  private makeStyleTextures(): void {
+    const g = this.gpu, meta = this.meta;
+    if (!g || !meta) return;
+    if (g.style) this.gl.deleteTexture(g.style.texture);
+    g.style = createStyleTexture(this.gl, this.style ?? meta.style, meta);
+    g.faceState?.delete();
+    g.faceState = new FaceStateTexture(this.gl, meta.faces.count, this.highlighted);
   }
 
   private readonly lostHandler = (ev: Event): void => {
@@ -103,12 +124,27 @@ export class Renderer {
     this.onRestored();
   };
 
-  setMeta(meta: CubeMeta): void {
+  /** The cube, drawn in `style` (its own style unless changed at run time). */
+  setMeta(meta: CubeMeta, style: CubeStyle = meta.style): void {
     this.meta = meta;
-    if (this.gpu) {
-      if (this.gpu.style) this.gl.deleteTexture(this.gpu.style.texture);
-      this.gpu.style = createStyleTexture(this.gl, meta);
-    }
+    this.style = style;
+    this.makeStyleTextures();
+  }
+
+  /** The style changed: the next frame draws in it. */
+  setStyle(style: CubeStyle): void {
+    this.style = style;
+    const g = this.gpu, meta = this.meta;
+    if (!g || !meta) return;
+    if (g.style) this.gl.deleteTexture(g.style.texture);
+    g.style = createStyleTexture(this.gl, style, meta);
+  }
+
+  /** Whether the face is drawn highlighted from the next frame on. */
+  setHighlighted(face: number, on: boolean): void {
+    if (on) this.highlighted.add(face);
+    else this.highlighted.delete(face);
+    this.gpu?.faceState?.set(face, on);
   }
 
   upload(payload: ChunkPayload, frame: number): boolean {
@@ -125,7 +161,7 @@ export class Renderer {
   /** Draws a frame; returns the triangles submitted. */
   render(f: FrameParams, chunks: GpuChunk[]): number {
     const g = this.gpu;
-    if (!g || !g.style) return 0;
+    if (!g || !g.style || !g.faceState || !this.style) return 0;
     const gl = this.gl;
     g.targets.resize(f.view.width, f.view.height);
     gl.bindVertexArray(g.emptyVao);
@@ -133,7 +169,7 @@ export class Renderer {
     const triangles = g.id.draw(g.targets, f.view, chunks, f.zMax + 1, f.jitter);
     this.idsJittered = f.jitter[0] !== 0 || f.jitter[1] !== 0;
     gl.bindVertexArray(g.emptyVao);
-    g.colour.draw(g.targets, { ...f.colour, style: g.style.texture, classCount: g.style.classCount });
+    g.colour.draw(g.targets, { ...f.colour, style: g.style.texture, classCount: g.style.classCount, background: parseColour(this.style.background), faceState: g.faceState.texture });
     g.present.draw(g.targets);
     gl.bindVertexArray(null);
     this.lastFrame = f;
@@ -207,6 +243,7 @@ export class Renderer {
       g.targets.delete();
       this.gl.deleteVertexArray(g.emptyVao);
       if (g.style) this.gl.deleteTexture(g.style.texture);
+      g.faceState?.delete();
     }
     this.gpu = null;
     // Gives the context itself back now rather than whenever the canvas is collected.

@@ -1,0 +1,40 @@
+// Feature state: merged per face, removed by key or whole, and only `highlight: true` draws;
+// face ids outside the cube are refused with the range named.
+import assert from 'node:assert/strict';
+import { describe, test } from 'node:test';
+import { FeatureStates } from './feature-state.js';
+
+describe('feature state', () => {
+  test('states merge, and are removed by key or whole', () => {
+    const s = new FeatureStates();
+    s.set({ face: 5 }, { highlight: true });
+    s.set({ face: 5 }, { note: 'picked' });
+    assert.deepEqual(s.get({ face: 5 }), { highlight: true, note: 'picked' });
+    assert.deepEqual(s.get({ face: 6 }), {});
+    s.set({ face: 9 }, { highlight: 'yes' });
+    assert.deepEqual(s.highlightedFaces(), [5], 'only highlight: true draws');
+    s.remove({ face: 5 }, 'highlight');
+    assert.deepEqual(s.get({ face: 5 }), { note: 'picked' });
+    assert.equal(s.highlighted(5), false);
+    s.remove({ face: 5 });
+    assert.deepEqual(s.get({ face: 5 }), {});
+  });
+
+  test('a copy is returned: changing it changes nothing', () => {
+    const s = new FeatureStates();
+    s.set({ face: 2 }, { highlight: true });
+    const got = s.get({ face: 2 });
+    got.highlight = false;
+    assert.equal(s.highlighted(2), true);
+  });
+
+  test('bad faces and states are named', () => {
+    const s = new FeatureStates();
+    s.faceCount = 100;
+    assert.throws(() => s.set({ face: 100 }, { highlight: true }), /setFeatureState: \{ face \} must be a face id \(an integer from 1 to 99\), not 100/);
+    assert.throws(() => s.set({ face: 0 }, { highlight: true }), /not 0/);
+    assert.throws(() => s.get({ face: 1.5 }), /getFeatureState: .*not 1\.5/);
+    assert.throws(() => s.remove({} as { face: number }), /removeFeatureState: .*not undefined/);
+    assert.throws(() => s.set({ face: 3 }, null as unknown as Record<string, unknown>), /the state must be an object/);
+  });
+});
