@@ -81,7 +81,7 @@ export async function featuresAt(ctx: PickContext, x: number, y: number, options
 }
 
 function faceOutline(ctx: PickContext, face: number): [number, number][][] {
-  const ids = ctx.renderer.readIds();
+  const ids = ctx.renderer.readUpperFaces();
   if (!ids) return [];
   return pixelOutline(ids.upper, ids.width, ids.height, face).map((ring) => ring.map(([i, j]) => pixelToGround(ctx.view, i, j)));
 }

@@ -177,30 +177,55 @@ export class Renderer {
     return triangles;
   }
 
-  /** The ID buffer of the last frame, without jitter. Null before the first frame or when lost. */
-  readIds(x = 0, y = 0, w?: number, h?: number): IdBuffer | null {
+  /** The ID targets as drawn without jitter (drawn again if the last frame was jittered); null when lost. */
+  private unjittered(): Gpu | null {
     const g = this.gpu;
     const f = this.lastFrame;
     if (!g || !f) return null;
-    const gl = this.gl;
-    const T = g.targets;
     if (this.idsJittered) {
       // Only chunks still on the GPU (some may have been evicted since).
       const chunks = this.lastChunks.filter((c) => this.store.get(c.file) === c);
-      g.id.draw(T, f.view, chunks, f.zMax + 1, [0, 0]);
+      g.id.draw(g.targets, f.view, chunks, f.zMax + 1, [0, 0]);
       this.idsJittered = false;
     }
+    return g;
+  }
+
+  /** W x H pixels of a target's attachment from GL row glY up (4 values a pixel, rows from the bottom). */
+  private readRect(fb: WebGLFramebuffer, attachment: number, integer: boolean, x: number, glY: number, W: number, H: number): Uint32Array | Float32Array {
+    const gl = this.gl;
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, fb);
+    gl.readBuffer(gl.COLOR_ATTACHMENT0 + attachment);
+    const out = integer ? new Uint32Array(W * H * 4) : new Float32Array(W * H * 4);
+    gl.readPixels(x, glY, W, H, integer ? gl.RGBA_INTEGER : gl.RGBA, integer ? gl.UNSIGNED_INT : gl.FLOAT, out);
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
+    return out;
+  }
+
+  /** The upper face of every pixel of the last frame, without jitter (rows from the top): a third of readIds' reading. */
+  readUpperFaces(): { width: number; height: number; upper: Uint32Array } | null {
+    const g = this.unjittered();
+    if (!g) return null;
+    const T = g.targets;
+    const W = T.width, H = T.height;
+    const ids = this.readRect(T.idFb, 0, true, 0, 0, W, H);
+    const upper = new Uint32Array(W * H);
+    for (let r = 0; r < H; r++) {
+      const src = (H - 1 - r) * W;
+      for (let i = 0; i < W; i++) upper[r * W + i] = ids[4 * (src + i)]!;
+    }
+    return { width: W, height: H, upper };
+  }
+
+  /** The ID buffer of the last frame, without jitter. Null before the first frame or when lost. */
+  readIds(x = 0, y = 0, w?: number, h?: number): IdBuffer | null {
+    const g = this.unjittered();
+    if (!g) return null;
+    const T = g.targets;
     const W = w ?? T.width - x, H = h ?? T.height - y;
     // Rows from the top in the result; GL counts them from the bottom.
     const glY = T.height - y - H;
-    const read = (fb: WebGLFramebuffer, attachment: number, integer: boolean): Uint32Array | Float32Array => {
-      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, fb);
-      gl.readBuffer(gl.COLOR_ATTACHMENT0 + attachment);
-      const out = integer ? new Uint32Array(W * H * 4) : new Float32Array(W * H * 4);
-      gl.readPixels(x, glY, W, H, integer ? gl.RGBA_INTEGER : gl.RGBA, integer ? gl.UNSIGNED_INT : gl.FLOAT, out);
-      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
-      return out;
-    };
+    const read = (fb: WebGLFramebuffer, attachment: number, integer: boolean): Uint32Array | Float32Array => this.readRect(fb, attachment, integer, x, glY, W, H);
     const ids = read(T.idFb, 0, true) as Uint32Array;
     const aux = read(T.idFb, 1, true) as Uint32Array;
     let slice: Float32Array;
