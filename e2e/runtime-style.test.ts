@@ -46,15 +46,18 @@ interface StyleMap {
   setFeatureState(f: { face: number }, s: object): unknown;
   getFeatureState(f: { face: number }): Record<string, unknown>;
   removeFeatureState(f: { face: number }, key?: string): unknown;
-  getHighlight(): { color: string; opacity: number; outlineColor: string; outlineWidth: number };
+  getStatePaint(state: string): { color: string; opacity: number; outlineColor: string; outlineWidth: number };
   queryFeatures(p: [number, number], o?: { outline?: boolean }): Promise<PickedFeature[]>;
   on(type: string, fn: (ev: { feature: PickedFeature | null }) => void): unknown;
+  off(type: string, fn: (ev: { feature: PickedFeature | null }) => void): unknown;
   getScaleDenominator(): number;
   getBounds(): [number, number, number, number];
 }
 interface StyleWindow {
   map: StyleMap;
   clicked?: PickedFeature | null;
+  hovered?: number;
+  onMove?: (ev: { feature: PickedFeature | null }) => void;
 }
 
 /** The class of the upper face at pixel k (from the ID buffer). */
@@ -157,8 +160,12 @@ describe('run-time style and feature state (bgt_otterlo_400m)', () => {
       return true;
     };
     const faces = [...sizes].filter(([, n]) => n > 2000 && n < W * H / 4).map(([f]) => f);
-    let k0 = -1;
-    for (let k = 10 * W; k < (H - 10) * W && k0 < 0; k++) if (faces.includes(ids.upper[k]!) && k % W > 10 && k % W < W - 10 && inside(k, 6)) k0 = k;
+    /** A point well inside a large face other than `not`. */
+    const pointIn = (not: number): number => {
+      for (let k = 10 * W; k < (H - 10) * W; k++) if (ids.upper[k] !== not && faces.includes(ids.upper[k]!) && k % W > 10 && k % W < W - 10 && inside(k, 6)) return k;
+      return -1;
+    };
+    const k0 = pointIn(0);
     assert.ok(k0 >= 0, 'a large face to click');
     const face = ids.upper[k0]!;
     await p.page.evaluate(() => {
@@ -173,34 +180,36 @@ describe('run-time style and feature state (bgt_otterlo_400m)', () => {
     const after = await redrawn(p);
 
     // Every pixel of the face changed, and no other: the fill inside, the outline along its edge.
-    const hl = await p.page.evaluate(() => (globalThis as unknown as StyleWindow).map.getHighlight());
-    const classColour = hexColour(bed.contents.meta.style.classes[classAt(ids, k0)]!.color);
-    const fill = mix(classColour, hexColour(hl.color), hl.opacity);
-    const r = hl.outlineWidth; // device px at a ratio of 1
-    let inner = 0, edge = 0;
-    for (let k = 0; k < W * H; k++) {
-      const i = k % W, j = Math.floor(k / W);
-      const was = pixel(before, i, j), now = pixel(after, i, j);
-      if (ids.upper[k] !== face) {
-        assert.deepEqual(now, was, `pixel (${i},${j}) of face ${ids.upper[k]} unchanged`);
-        continue;
-      }
-      let onEdge = false;
-      for (let dj = -r; dj <= r && !onEdge; dj++) {
-        for (let di = -r; di <= r; di++) {
-          const x = i + di, y = j + dj;
-          if (x >= 0 && y >= 0 && x < W && y < H && ids.upper[y * W + x] !== face) onEdge = true;
+    const painted = async (state: string, f: number, k: number, was: Rgba, now: Rgba): Promise<void> => {
+      const paint = await p.page.evaluate((s) => (globalThis as unknown as StyleWindow).map.getStatePaint(s), state);
+      const fill = mix(pixel(was, k % W, Math.floor(k / W)), hexColour(paint.color), paint.opacity);
+      const r = paint.outlineWidth; // device px at a ratio of 1
+      let inner = 0, edge = 0;
+      for (let k = 0; k < W * H; k++) {
+        const i = k % W, j = Math.floor(k / W);
+        if (ids.upper[k] !== f) {
+          assert.deepEqual(pixel(now, i, j), pixel(was, i, j), `pixel (${i},${j}) of face ${ids.upper[k]} unchanged`);
+          continue;
+        }
+        let onEdge = false;
+        for (let dj = -r; dj <= r && !onEdge; dj++) {
+          for (let di = -r; di <= r; di++) {
+            const x = i + di, y = j + dj;
+            if (x >= 0 && y >= 0 && x < W && y < H && ids.upper[y * W + x] !== f) onEdge = true;
+          }
+        }
+        if (onEdge) {
+          edge++;
+          assert.deepEqual(pixel(now, i, j), hexColour(paint.outlineColor), `${state} outline at (${i},${j})`);
+        } else {
+          inner++;
+          assert.ok(near(pixel(now, i, j), fill, 1), `${state} fill at (${i},${j}): ${pixel(now, i, j)} for ${fill}`);
         }
       }
-      if (onEdge) {
-        edge++;
-        assert.deepEqual(now, hexColour(hl.outlineColor), `outline at (${i},${j})`);
-      } else {
-        inner++;
-        assert.ok(near(now, fill, 1), `fill at (${i},${j}): ${now} for ${fill}`);
-      }
-    }
-    assert.ok(inner > 1000 && edge > 100, `${inner} filled and ${edge} outline pixels`);
+      assert.ok(inner > 1000 && edge > 100, `${state}: ${inner} filled and ${edge} outline pixels`);
+    };
+    // The face's interior is one colour here (no pattern at this scale): its fill is one mix.
+    await painted('highlight', face, k0, before, after);
     assert.deepEqual(await p.page.evaluate((f) => (globalThis as unknown as StyleWindow).map.getFeatureState({ face: f }), face), { highlight: true });
 
     // The click's feature: the face, its class as the style names it, its input attributes, and
@@ -222,6 +231,28 @@ describe('run-time style and feature state (bgt_otterlo_400m)', () => {
     let area = 0;
     for (const ring of picked?.outline ?? []) for (let n = 0; n + 1 < ring.length; n++) area += (ring[n]![0] * ring[n + 1]![1] - ring[n + 1]![0] * ring[n]![1]) / 2;
     assert.ok(Math.abs(area / pixelArea - sizes.get(face)!) < 1e-3 * sizes.get(face)!, `outline area ${area / pixelArea} pixels for ${sizes.get(face)}`);
+
+    // Hover, by a real pointer move onto another face: that face's edge in the hover paint,
+    // and the highlighted face as it was.
+    const k1 = pointIn(face);
+    assert.ok(k1 >= 0, 'another large face to hover');
+    await p.page.evaluate(() => {
+      const w = globalThis as unknown as StyleWindow;
+      w.onMove = (ev): void => {
+        if (w.hovered !== undefined) w.map.removeFeatureState({ face: w.hovered }, 'hover');
+        w.hovered = ev.feature?.face;
+        if (w.hovered !== undefined) w.map.setFeatureState({ face: w.hovered }, { hover: true });
+      };
+      w.map.on('pointermove', w.onMove);
+    });
+    await p.page.mouse.move((k1 % W) + 0.5, Math.floor(k1 / W) + 0.5);
+    await p.page.waitForFunction((f) => (globalThis as unknown as StyleWindow).hovered === f, ids.upper[k1]!);
+    await painted('hover', ids.upper[k1]!, k1, after, await redrawn(p));
+    await p.page.evaluate(() => {
+      const w = globalThis as unknown as StyleWindow;
+      if (w.onMove) w.map.off('pointermove', w.onMove);
+      if (w.hovered !== undefined) w.map.removeFeatureState({ face: w.hovered }, 'hover');
+    });
 
     // Taken away, the picture is as before.
     await p.page.evaluate((f) => (globalThis as unknown as StyleWindow).map.removeFeatureState({ face: f }, 'highlight'), face);

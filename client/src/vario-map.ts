@@ -16,7 +16,7 @@ import { FeatureEvents, type MapPointerEvent } from './interaction/feature-event
 import { Handlers, type HandlerName } from './interaction/handlers.js';
 import type { InteractionContext, InteractionSettings } from './interaction/interaction-context.js';
 import { Pointers } from './interaction/pointers.js';
-import type { BlendingOptions, BlendMode, BoundaryOptions, HighlightOptions } from './render/colour-options.js';
+import type { BlendingOptions, BlendMode, BoundaryOptions, DrawnState, HighlightOptions } from './render/colour-options.js';
 import type { FeatureRef, FeatureState } from './style/feature-state.js';
 import { lerpCamera, type Camera } from './geometry/camera.js';
 import { discreteLevels } from './geometry/discrete-scales.js';
@@ -29,7 +29,7 @@ import { AttributionControl } from './ui/attribution-control.js';
 import { MapDom, type Control, type ControlPosition } from './ui/map-dom.js';
 import { UrlHash } from './ui/url-hash.js';
 
-export type { Bbox, Feature, QueryOptions, FeatureRef, FeatureState, HighlightOptions, ClassStyleJson, CubeStyle, StyleJson, BlendingOptions, BlendMode, BoundaryOptions, SurfaceSpec, SourceErrorInfo, Camera, HandlerName, InteractionSettings, MapPointerEvent, Control, ControlPosition };
+export type { Bbox, Feature, QueryOptions, FeatureRef, FeatureState, DrawnState, HighlightOptions, ClassStyleJson, CubeStyle, StyleJson, BlendingOptions, BlendMode, BoundaryOptions, SurfaceSpec, SourceErrorInfo, Camera, HandlerName, InteractionSettings, MapPointerEvent, Control, ControlPosition };
 export type { AnimationOptions, CameraOptions, FlyToOptions, MapMoveEvent, VarioMapEvents, VarioMapOptions, VarioMapSettings } from './map-options.js';
 
 /** Passed on from the engine as they are ('meta' after the map's own state follows it). */
@@ -308,9 +308,9 @@ export class VarioMap extends Evented<VarioMapEvents> {
   }
 
   /**
-   * Merges `state` into the face's feature state (as MapLibre's). `highlight: true` draws the
-   * face with the highlight paint (the `highlight` option), wherever and at whatever scale that
-   * face id is shown.
+   * Merges `state` into the face's feature state (as MapLibre's). `highlight: true` and
+   * `hover: true` draw the face with that state's paint (the `statePaint` option), wherever and
+   * at whatever scale that face id is shown.
    */
   setFeatureState(feature: FeatureRef, state: FeatureState): this {
     this.engine.setFeatureState(feature, state);
@@ -327,14 +327,14 @@ export class VarioMap extends Evented<VarioMapEvents> {
     return this;
   }
 
-  /** How highlighted faces are drawn: fill colour and opacity, outline colour and width. */
-  setHighlight(h: Partial<HighlightOptions>): this {
-    this.engine.setHighlight(h);
+  /** How faces with `highlight: true` (or `hover: true`) are drawn: fill colour and opacity, outline colour and width. */
+  setStatePaint(state: DrawnState, paint: Partial<HighlightOptions>): this {
+    this.engine.setStatePaint(state, paint);
     return this;
   }
 
-  getHighlight(): HighlightOptions {
-    return this.engine.getHighlight();
+  getStatePaint(state: DrawnState): HighlightOptions {
+    return this.engine.getStatePaint(state);
   }
 
   /** The absolute URL of the cube's index.json (the `source` option resolved). */

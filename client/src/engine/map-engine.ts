@@ -6,7 +6,7 @@ import type { CubeMeta } from '../../../format/cube-index.js';
 import type { CubeStyle } from '../../../format/style.js';
 import type { MapView } from '../camera/map-view.js';
 import { Evented } from '../events.js';
-import { DEFAULT_HIGHLIGHT, type BlendingOptions, type BoundaryOptions, type HighlightOptions } from '../render/colour-options.js';
+import { DEFAULT_STATE_PAINTS, DRAWN_STATES, type BlendingOptions, type BoundaryOptions, type DrawnState, type HighlightOptions } from '../render/colour-options.js';
 import type { IdBuffer } from '../render/id-buffer.js';
 import { Renderer } from '../render/renderer.js';
 import { parseColour } from '../render/style-texture.js';
@@ -30,8 +30,8 @@ export interface EngineOptions {
   bounds?: Bbox;
   blending?: Partial<BlendingOptions>;
   boundaries?: Partial<BoundaryOptions>;
-  /** How faces with `highlight: true` in their feature state are drawn. */
-  highlight?: Partial<HighlightOptions>;
+  /** How faces with `highlight: true` and `hover: true` in their feature state are drawn. */
+  statePaint?: Partial<Record<DrawnState, Partial<HighlightOptions>>>;
   /** Frames accumulated (jittered) while the view is still; 1: off. */
   supersampling?: number;
   /** GPU memory for chunks, bytes. */
@@ -86,7 +86,10 @@ export class MapEngine extends Evented<EngineEvents> {
     this.settings = {
       blending: { mode: 'moving', distance: 0.5, ...options.blending },
       boundaries: { enabled: false, width: 1, color: '#000000', opacity: 0.35, ...options.boundaries },
-      highlight: checkedHighlight({ ...DEFAULT_HIGHLIGHT, ...options.highlight }),
+      paints: {
+        highlight: checkedPaint('highlight', { ...DEFAULT_STATE_PAINTS.highlight, ...options.statePaint?.highlight }),
+        hover: checkedPaint('hover', { ...DEFAULT_STATE_PAINTS.hover, ...options.statePaint?.hover }),
+      },
       supersampling: Math.max(1, Math.floor(options.supersampling ?? 16)),
       prefetchMargin: options.prefetchMargin ?? 0.25,
     };
@@ -189,12 +192,13 @@ export class MapEngine extends Evented<EngineEvents> {
     this.redraw();
   }
 
-  getHighlight(): HighlightOptions {
-    return { ...this.settings.highlight };
+  getStatePaint(state: DrawnState): HighlightOptions {
+    return { ...this.settings.paints[drawnState(state)] };
   }
 
-  setHighlight(h: Partial<HighlightOptions>): void {
-    this.settings.highlight = checkedHighlight({ ...this.settings.highlight, ...h });
+  setStatePaint(state: DrawnState, h: Partial<HighlightOptions>): void {
+    const s = drawnState(state);
+    this.settings.paints = { ...this.settings.paints, [s]: checkedPaint(s, { ...this.settings.paints[s], ...h }) };
     this.redraw();
   }
 
@@ -343,15 +347,21 @@ export class MapEngine extends Evented<EngineEvents> {
   }
 
   private showFeatureState(face: number): void {
-    this.renderer?.setHighlighted(face, this.featureStates.highlighted(face));
+    this.renderer?.setFaceState(face, this.featureStates.bits(face, DRAWN_STATES));
     this.redraw();
   }
 }
 
-/** The highlight options, or an error naming the one that is wrong. */
-function checkedHighlight(h: HighlightOptions): HighlightOptions {
-  for (const k of ['color', 'outlineColor'] as const) parseColour(h[k], `highlight ${k}`);
-  if (!(h.opacity >= 0 && h.opacity <= 1)) throw new Error(`highlight opacity must be in [0, 1], not ${h.opacity}`);
-  if (!(h.outlineWidth >= 0 && Number.isFinite(h.outlineWidth))) throw new Error(`highlight outlineWidth must be a number of CSS px >= 0, not ${h.outlineWidth}`);
+function drawnState(state: string): DrawnState {
+  const s = DRAWN_STATES.find((d) => d === state);
+  if (!s) throw new Error(`state paint: ${JSON.stringify(state)} is not a drawn feature state (${DRAWN_STATES.join(', ')})`);
+  return s;
+}
+
+/** A state's paint, or an error naming the value that is wrong. */
+function checkedPaint(state: DrawnState, h: HighlightOptions): HighlightOptions {
+  for (const k of ['color', 'outlineColor'] as const) parseColour(h[k], `${state} paint ${k}`);
+  if (!(h.opacity >= 0 && h.opacity <= 1)) throw new Error(`${state} paint opacity must be in [0, 1], not ${h.opacity}`);
+  if (!(h.outlineWidth >= 0 && Number.isFinite(h.outlineWidth))) throw new Error(`${state} paint outlineWidth must be a number of CSS px >= 0, not ${h.outlineWidth}`);
   return h;
 }

@@ -15,6 +15,7 @@ export type {
   CubeStyle,
   Control,
   ControlPosition,
+  DrawnState,
   Feature,
   FeatureRef,
   FeatureState,

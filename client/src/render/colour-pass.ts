@@ -19,15 +19,20 @@ export interface ColourParams {
   patternCell: number;
   patternLine: number;
   patternShift: [number, number];
-  /** R8UI, one texel per face id (face-state-texture.ts): 1 where the face is highlighted. */
+  /** R8UI, one texel per face id (face-state-texture.ts): bit i set where state i is on. */
   faceState: WebGLTexture;
-  /** rgb, alpha = opacity. */
-  highlightFill: Rgba;
-  highlightOutline: Rgba;
-  /** Device pixels of the outline inside a highlighted face (0: none). */
-  highlightWidth: number;
+  /** Per drawn state (colour-options.ts, DRAWN_STATES), in the order painted. */
+  statePaints: StatePaintParams[];
   /** Weight of this frame in the accumulated colour: 1 for the first. */
   weight: number;
+}
+
+export interface StatePaintParams {
+  /** rgb, alpha = opacity. */
+  fill: Rgba;
+  outline: Rgba;
+  /** Device pixels of the outline inside the face (0: none). */
+  width: number;
 }
 
 export class ColourPass {
@@ -60,9 +65,9 @@ export class ColourPass {
     gl.uniform1f(p.loc('uPatternCell'), c.patternCell);
     gl.uniform1f(p.loc('uPatternLine'), c.patternLine);
     gl.uniform2f(p.loc('uPatternShift'), c.patternShift[0], c.patternShift[1]);
-    gl.uniform4fv(p.loc('uHighlightFill'), c.highlightFill);
-    gl.uniform4fv(p.loc('uHighlightOutline'), c.highlightOutline);
-    gl.uniform1i(p.loc('uHighlightWidth'), c.highlightWidth);
+    gl.uniform4fv(p.loc('uStateFill'), c.statePaints.flatMap((s) => s.fill));
+    gl.uniform4fv(p.loc('uStateOutline'), c.statePaints.flatMap((s) => s.outline));
+    gl.uniform1iv(p.loc('uStateWidth'), c.statePaints.map((s) => s.width));
     gl.bindFramebuffer(gl.FRAMEBUFFER, targets.colourFb);
     gl.viewport(0, 0, targets.width, targets.height);
     gl.disable(gl.DEPTH_TEST);

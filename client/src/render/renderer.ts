@@ -45,8 +45,8 @@ export class Renderer {
   private gpu: Gpu | null = null;
   private meta: CubeMeta | null = null;
   private style: CubeStyle | null = null;
-  /** Kept to make the feature state texture again after a lost context. */
-  private readonly highlighted = new Set<number>();
+  /** Each face's drawn states (bits), kept to make the feature state texture again after a lost context. */
+  private readonly faceStates = new Map<number, number>();
   private lastFrame: FrameParams | null = null;
   private lastChunks: GpuChunk[] = [];
   private idsJittered = false;
@@ -108,7 +108,7 @@ export class Renderer {
     if (g.style) this.gl.deleteTexture(g.style.texture);
     g.style = createStyleTexture(this.gl, this.style ?? meta.style, meta);
     g.faceState?.delete();
-    g.faceState = new FaceStateTexture(this.gl, meta.faces.count, this.highlighted);
+    g.faceState = new FaceStateTexture(this.gl, meta.faces.count, this.faceStates);
   }
 
   private readonly lostHandler = (ev: Event): void => {
@@ -140,11 +140,11 @@ export class Renderer {
     g.style = createStyleTexture(this.gl, style, meta);
   }
 
-  /** Whether the face is drawn highlighted from the next frame on. */
-  setHighlighted(face: number, on: boolean): void {
-    if (on) this.highlighted.add(face);
-    else this.highlighted.delete(face);
-    this.gpu?.faceState?.set(face, on);
+  /** The face's drawn states from the next frame on (bit i: DRAWN_STATES[i]). */
+  setFaceState(face: number, bits: number): void {
+    if (bits) this.faceStates.set(face, bits);
+    else this.faceStates.delete(face);
+    this.gpu?.faceState?.set(face, bits);
   }
 
   upload(payload: ChunkPayload, frame: number): boolean {

@@ -1,4 +1,4 @@
-// Feature state: merged per face, removed by key or whole, and only `highlight: true` draws;
+// Feature state: merged per face, removed by key or whole, and only `true` draws a state;
 // face ids outside the cube are refused with the range named.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
@@ -11,11 +11,15 @@ describe('feature state', () => {
     s.set({ face: 5 }, { note: 'picked' });
     assert.deepEqual(s.get({ face: 5 }), { highlight: true, note: 'picked' });
     assert.deepEqual(s.get({ face: 6 }), {});
-    s.set({ face: 9 }, { highlight: 'yes' });
-    assert.deepEqual(s.highlightedFaces(), [5], 'only highlight: true draws');
+    s.set({ face: 9 }, { highlight: 'yes', hover: true });
+    const drawn = ['hover', 'highlight'];
+    assert.equal(s.bits(5, drawn), 2, 'highlight: bit 1');
+    assert.equal(s.bits(9, drawn), 1, 'only true draws: hover alone');
+    s.set({ face: 9 }, { highlight: true });
+    assert.equal(s.bits(9, drawn), 3);
     s.remove({ face: 5 }, 'highlight');
     assert.deepEqual(s.get({ face: 5 }), { note: 'picked' });
-    assert.equal(s.highlighted(5), false);
+    assert.equal(s.bits(5, drawn), 0);
     s.remove({ face: 5 });
     assert.deepEqual(s.get({ face: 5 }), {});
   });
@@ -25,7 +29,7 @@ describe('feature state', () => {
     s.set({ face: 2 }, { highlight: true });
     const got = s.get({ face: 2 });
     got.highlight = false;
-    assert.equal(s.highlighted(2), true);
+    assert.equal(s.bits(2, ['highlight']), 1);
   });
 
   test('bad faces and states are named', () => {

@@ -1,5 +1,5 @@
 // Feature state (as MapLibre's setFeatureState): any keys a page keeps per face, of which
-// `highlight: true` is drawn (the map's highlight paint). A face id names one face of the cube
+// `hover: true` and `highlight: true` are drawn (the map's state paints). A face id names one face of the cube
 // wherever it is shown: in its own scale range, over the whole slice. Pure.
 
 export interface FeatureRef {
@@ -40,14 +40,10 @@ export class FeatureStates {
     return face;
   }
 
-  /** Whether the face is drawn highlighted. */
-  highlighted(face: number): boolean {
-    return this.states.get(face)?.highlight === true;
-  }
-
-  /** Every face drawn highlighted. */
-  highlightedFaces(): number[] {
-    return [...this.states.keys()].filter((f) => this.highlighted(f));
+  /** Which of `drawn` (state keys) are true for the face: bit i for drawn[i]. */
+  bits(face: number, drawn: readonly string[]): number {
+    const s = this.states.get(face);
+    return drawn.reduce((b, key, i) => (s?.[key] === true ? b | (1 << i) : b), 0);
   }
 
   private check(ref: FeatureRef, caller: string): number {
