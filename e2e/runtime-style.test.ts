@@ -11,7 +11,7 @@ import { scaleAtZ } from '../format/scale.js';
 import type { MapPage } from './helpers/browser.js';
 import { openMap } from './helpers/browser.js';
 import { repoRoot } from './helpers/cube.js';
-import { hexColour, pixel, readIds, screenshot, waitIdle, type PageIds, type Rgba } from './helpers/map-page.js';
+import { hexColour, loseAndRestoreContext, pixel, readIds, screenshot, waitIdle, type PageIds, type Rgba } from './helpers/map-page.js';
 import { useTestBed } from './helpers/test-bed.js';
 
 const W = 640, H = 480;
@@ -259,6 +259,26 @@ describe('run-time style and feature state (bgt_otterlo_400m)', () => {
     const cleared = await redrawn(p);
     assert.equal(Buffer.compare(Buffer.from(cleared.data), Buffer.from(before.data)), 0, 'the picture as before');
     assert.match((await thrown(p, 'map.setFeatureState({ face: -3 }, { highlight: true })')) ?? '', /setFeatureState: \{ face \} must be a face id \(an integer from 1 to \d+\), not -3/);
+  });
+
+  test('a lost and restored WebGL context keeps the run-time style and the highlight', async () => {
+    const p = await open();
+    const plain = await screenshot(p.page);
+    const ids = await readIds(p.page);
+    const k = (H / 2) * W + W / 2;
+    assert.ok(ids.upper[k] !== 0, 'a face at the centre');
+    const key = bed.contents.meta.style.classes[classAt(ids, k)]!.key;
+    await p.page.evaluate(([c, f]) => {
+      const m = (globalThis as unknown as StyleWindow).map;
+      m.setStyle({ ...m.getStyle(), background: '#000000' });
+      m.setClassStyle(c, { color: '#00ffff' });
+      m.setFeatureState({ face: f }, { highlight: true });
+    }, [key, ids.upper[k]!] as [string, number]);
+    const styled = await redrawn(p);
+    assert.notDeepEqual(pixel(styled, W / 2, H / 2), pixel(plain, W / 2, H / 2), 'restyled and highlighted');
+    await loseAndRestoreContext(p.page);
+    const restored = await screenshot(p.page);
+    assert.equal(Buffer.compare(Buffer.from(restored.data), Buffer.from(styled.data)), 0, 'the same picture after the context came back');
   });
 
   test('the legend lists every class with its colour and label, follows setClassStyle, and folds away', async () => {
