@@ -16,7 +16,7 @@ import { FeatureEvents, type MapPointerEvent } from './interaction/feature-event
 import { Handlers, type HandlerName } from './interaction/handlers.js';
 import type { InteractionContext, InteractionSettings } from './interaction/interaction-context.js';
 import { Pointers } from './interaction/pointers.js';
-import type { BlendingOptions, BlendMode, BoundaryOptions, DrawnState, HighlightOptions } from './render/colour-options.js';
+import type { BlendingOptions, BlendMode, BoundaryOptions, DrawnState, StatePaint } from './render/colour-options.js';
 import type { FeatureRef, FeatureState } from './style/feature-state.js';
 import { lerpCamera, type Camera } from './geometry/camera.js';
 import { discreteLevels } from './geometry/discrete-scales.js';
@@ -29,7 +29,7 @@ import { AttributionControl } from './ui/attribution-control.js';
 import { MapDom, type Control, type ControlPosition } from './ui/map-dom.js';
 import { UrlHash } from './ui/url-hash.js';
 
-export type { Bbox, Feature, QueryOptions, FeatureRef, FeatureState, DrawnState, HighlightOptions, ClassStyleJson, CubeStyle, StyleJson, BlendingOptions, BlendMode, BoundaryOptions, SurfaceSpec, SourceErrorInfo, Camera, HandlerName, InteractionSettings, MapPointerEvent, Control, ControlPosition };
+export type { Bbox, Feature, QueryOptions, FeatureRef, FeatureState, DrawnState, StatePaint, ClassStyleJson, CubeStyle, StyleJson, BlendingOptions, BlendMode, BoundaryOptions, SurfaceSpec, SourceErrorInfo, Camera, HandlerName, InteractionSettings, MapPointerEvent, Control, ControlPosition };
 export type { AnimationOptions, CameraOptions, FlyToOptions, MapMoveEvent, VarioMapEvents, VarioMapOptions, VarioMapSettings } from './map-options.js';
 
 /** Passed on from the engine as they are ('meta' after the map's own state follows it). */
@@ -328,12 +328,12 @@ export class VarioMap extends Evented<VarioMapEvents> {
   }
 
   /** How faces with `highlight: true` (or `hover: true`) are drawn: fill colour and opacity, outline colour and width. */
-  setStatePaint(state: DrawnState, paint: Partial<HighlightOptions>): this {
+  setStatePaint(state: DrawnState, paint: Partial<StatePaint>): this {
     this.engine.setStatePaint(state, paint);
     return this;
   }
 
-  getStatePaint(state: DrawnState): HighlightOptions {
+  getStatePaint(state: DrawnState): StatePaint {
     return this.engine.getStatePaint(state);
   }
 

@@ -6,7 +6,7 @@ import type { CubeMeta } from '../../../format/cube-index.js';
 import type { CubeStyle } from '../../../format/style.js';
 import type { MapView } from '../camera/map-view.js';
 import { Evented } from '../events.js';
-import { DEFAULT_STATE_PAINTS, DRAWN_STATES, type BlendingOptions, type BoundaryOptions, type DrawnState, type HighlightOptions } from '../render/colour-options.js';
+import { DEFAULT_STATE_PAINTS, DRAWN_STATES, type BlendingOptions, type BoundaryOptions, type DrawnState, type StatePaint } from '../render/colour-options.js';
 import type { IdBuffer } from '../render/id-buffer.js';
 import { Renderer } from '../render/renderer.js';
 import { parseColour } from '../render/style-texture.js';
@@ -31,7 +31,7 @@ export interface EngineOptions {
   blending?: Partial<BlendingOptions>;
   boundaries?: Partial<BoundaryOptions>;
   /** How faces with `highlight: true` and `hover: true` in their feature state are drawn. */
-  statePaint?: Partial<Record<DrawnState, Partial<HighlightOptions>>>;
+  statePaint?: Partial<Record<DrawnState, Partial<StatePaint>>>;
   /** Frames accumulated (jittered) while the view is still; 1: off. */
   supersampling?: number;
   /** GPU memory for chunks, bytes. */
@@ -192,11 +192,11 @@ export class MapEngine extends Evented<EngineEvents> {
     this.redraw();
   }
 
-  getStatePaint(state: DrawnState): HighlightOptions {
+  getStatePaint(state: DrawnState): StatePaint {
     return { ...this.settings.paints[drawnState(state)] };
   }
 
-  setStatePaint(state: DrawnState, h: Partial<HighlightOptions>): void {
+  setStatePaint(state: DrawnState, h: Partial<StatePaint>): void {
     const s = drawnState(state);
     this.settings.paints = { ...this.settings.paints, [s]: checkedPaint(s, { ...this.settings.paints[s], ...h }) };
     this.redraw();
@@ -359,7 +359,7 @@ function drawnState(state: string): DrawnState {
 }
 
 /** A state's paint, or an error naming the value that is wrong. */
-function checkedPaint(state: DrawnState, h: HighlightOptions): HighlightOptions {
+function checkedPaint(state: DrawnState, h: StatePaint): StatePaint {
   for (const k of ['color', 'outlineColor'] as const) parseColour(h[k], `${state} paint ${k}`);
   if (!(h.opacity >= 0 && h.opacity <= 1)) throw new Error(`${state} paint opacity must be in [0, 1], not ${h.opacity}`);
   if (!(h.outlineWidth >= 0 && Number.isFinite(h.outlineWidth))) throw new Error(`${state} paint outlineWidth must be a number of CSS px >= 0, not ${h.outlineWidth}`);

@@ -28,7 +28,7 @@ export const DRAWN_STATES = ['hover', 'highlight'] as const;
 export type DrawnState = (typeof DRAWN_STATES)[number];
 
 /** How a face with `highlight: true` (or `hover: true`) in its feature state is drawn: on its own pixels only. */
-export interface HighlightOptions {
+export interface StatePaint {
   /** Mixed over the face's colour with `opacity` (0: no fill). */
   color: string;
   opacity: number;
@@ -37,7 +37,7 @@ export interface HighlightOptions {
   outlineWidth: number;
 }
 
-export type StatePaints = Record<DrawnState, HighlightOptions>;
+export type StatePaints = Record<DrawnState, StatePaint>;
 
 /** Selection: a yellow wash with a red edge; hover: a blue edge only. */
 export const DEFAULT_STATE_PAINTS: StatePaints = {
@@ -69,7 +69,7 @@ export function colourParams(o: {
   // ground when the map pans. Worked out in float64 here; the shader gets the small remainder.
   const shiftX = view.centerX / view.resolution - view.width / 2;
   const shiftY = view.centerY / view.resolution - view.height / 2;
-  const paint = (h: HighlightOptions): StatePaintParams => {
+  const paint = (h: StatePaint): StatePaintParams => {
     const fill = parseColour(h.color), line = parseColour(h.outlineColor);
     return {
       fill: [fill[0], fill[1], fill[2], h.opacity],
