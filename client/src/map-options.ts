@@ -1,5 +1,6 @@
 // The types of VarioMap's public API: its options, events and camera options.
 import type { SurfaceSpec } from '../../format/slicing-surface.js';
+import type { CubeStyle } from '../../format/style.js';
 import type { Bbox } from './geometry/view.js';
 import type { EngineEvents, EngineOptions } from './engine/map-engine.js';
 import type { MapPointerEvent } from './interaction/feature-events.js';
@@ -78,6 +79,8 @@ export interface VarioMapEvents extends DataEvents {
   settings: VarioMapSettings;
   /** The slicing surface changed. */
   surface: SurfaceSpec;
+  /** The style drawn is known (after 'meta') or changed (setStyle, setClassStyle). */
+  style: CubeStyle;
   remove: Record<string, never>;
 }
 

@@ -3,20 +3,22 @@
 // one owner of where it looks: the input handlers and these methods change it, and the engine
 // beneath (engine/: canvas, chunks, frame loop, picking; internal) reads it every frame.
 import type { CubeMeta } from '../../format/cube-index.js';
+import type { ClassStyleJson, CubeStyle, StyleJson } from '../../format/style.js';
 import { parseSurface, type SurfaceSpec } from '../../format/slicing-surface.js';
 import { MapView, type MoveEventType } from './camera/map-view.js';
 import { ScaleLimits } from './camera/scale-limits.js';
 import { StepZoom } from './camera/step-zoom.js';
 import { bindEngine } from './engine/engine-of.js';
 import { MapEngine } from './engine/map-engine.js';
-import type { Feature } from './engine/picking.js';
+import type { Feature, QueryOptions } from './engine/picking.js';
 import { Evented } from './events.js';
 import type { AnimationOptions, CameraOptions, DataEvents, FlyToOptions, VarioMapEvents, VarioMapOptions, VarioMapSettings } from './map-options.js';
 import { FeatureEvents, type MapPointerEvent } from './interaction/feature-events.js';
 import { Handlers, type HandlerName } from './interaction/handlers.js';
 import type { InteractionContext, InteractionSettings } from './interaction/interaction-context.js';
 import { Pointers } from './interaction/pointers.js';
-import type { BlendingOptions, BlendMode, BoundaryOptions } from './render/colour-options.js';
+import type { BlendingOptions, BlendMode, BoundaryOptions, DrawnState, StatePaint } from './render/colour-options.js';
+import type { FeatureRef, FeatureState } from './style/feature-state.js';
 import { lerpCamera, type Camera } from './geometry/camera.js';
 import { discreteLevels } from './geometry/discrete-scales.js';
 import { easeInOut } from './motion/easing.js';
@@ -28,7 +30,7 @@ import { AttributionControl } from './ui/attribution-control.js';
 import { MapDom, type Control, type ControlPosition } from './ui/map-dom.js';
 import { UrlHash } from './ui/url-hash.js';
 
-export type { Bbox, Feature, BlendingOptions, BlendMode, BoundaryOptions, SurfaceSpec, SourceErrorInfo, Camera, HandlerName, InteractionSettings, MapPointerEvent, Control, ControlPosition };
+export type { Bbox, Feature, QueryOptions, FeatureRef, FeatureState, DrawnState, StatePaint, ClassStyleJson, CubeStyle, StyleJson, BlendingOptions, BlendMode, BoundaryOptions, SurfaceSpec, SourceErrorInfo, Camera, HandlerName, InteractionSettings, MapPointerEvent, Control, ControlPosition };
 export type { AnimationOptions, CameraOptions, FlyToOptions, MapMoveEvent, VarioMapEvents, VarioMapOptions, VarioMapSettings } from './map-options.js';
 
 /** Passed on from the engine as they are ('meta' after the map's own state follows it). */
@@ -317,9 +319,62 @@ export class VarioMap extends Evented<VarioMapEvents> {
     return this.view.meta;
   }
 
-  /** The faces under a CSS px point of the map. */
-  queryFeatures(point: [number, number]): Promise<Feature[]> {
-    return this.engine.queryFeatures(point);
+  /** The faces under a CSS px point of the map (`{ outline: true }`: with the face's outline on screen). */
+  queryFeatures(point: [number, number], options?: QueryOptions): Promise<Feature[]> {
+    return this.engine.queryFeatures(point, options);
+  }
+
+  // ---- run-time style and feature state ----------------------------------------------------------
+
+  /** A copy of the style drawn: the cube's, with the changes made since (null until the cube is known). */
+  getStyle(): CubeStyle | null {
+    return this.engine.getStyle();
+  }
+
+  /**
+   * Draws the map in another style from the next frame, without fetching anything: checked with
+   * the cube's style schema, and it must give every class of the cube and no other. A style
+   * that fails throws an Error naming each problem, and the map stays as it was.
+   */
+  setStyle(style: StyleJson): this {
+    this.fire('style', this.engine.setStyle(style));
+    return this;
+  }
+
+  /** Changes one class's colour, label or pattern (`pattern: null` takes it away). */
+  setClassStyle(classKey: string, change: ClassStyleJson): this {
+    this.fire('style', this.engine.setClassStyle(classKey, change));
+    return this;
+  }
+
+  /**
+   * Merges `state` into the face's feature state (as MapLibre's). `highlight: true` and
+   * `hover: true` draw the face with that state's paint (the `statePaint` option), wherever and
+   * at whatever scale that face id is shown.
+   */
+  setFeatureState(feature: FeatureRef, state: FeatureState): this {
+    this.engine.setFeatureState(feature, state);
+    return this;
+  }
+
+  getFeatureState(feature: FeatureRef): FeatureState {
+    return this.engine.getFeatureState(feature);
+  }
+
+  /** Removes one key of the face's state, or all of it. */
+  removeFeatureState(feature: FeatureRef, key?: string): this {
+    this.engine.removeFeatureState(feature, key);
+    return this;
+  }
+
+  /** How faces with `highlight: true` (or `hover: true`) are drawn: fill colour and opacity, outline colour and width. */
+  setStatePaint(state: DrawnState, paint: Partial<StatePaint>): this {
+    this.engine.setStatePaint(state, paint);
+    return this;
+  }
+
+  getStatePaint(state: DrawnState): StatePaint {
+    return this.engine.getStatePaint(state);
   }
 
   /** The absolute URL of the cube's index.json (the `source` option resolved). */
@@ -428,6 +483,8 @@ export class VarioMap extends Evented<VarioMapEvents> {
     this.levels = discreteLevels(meta.baseScale, extentScale, this.options.comparisonFactor ?? 2);
     if (this.settings.comparisonMode) this.view.setLevels(this.levels);
     this.fire('meta', meta);
+    const style = this.getStyle();
+    if (style) this.fire('style', style);
     this.hash?.apply();
   }
 
