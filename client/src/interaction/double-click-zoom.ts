@@ -27,35 +27,36 @@ export class DoubleClickZoom extends InputHandler {
 
   private readonly onDblClick = (ev: MouseEvent): void => {
     // A browser may also send dblclick for a double tap: the taps have zoomed already.
-    if (performance.now() - this.lastTouch < 1000) return;
+    if (ev.timeStamp - this.lastTouch < 1000) return;
     ev.preventDefault();
     this.zoom(this.ctx.point(ev), ev.shiftKey, ev);
   };
 
   private readonly onDown = (ev: PointerEvent): void => {
     if (ev.pointerType !== 'touch') return;
-    this.lastTouch = performance.now();
-    this.down = this.ctx.pointers.touches().length > 1 ? null : { id: ev.pointerId, t: performance.now(), p: this.ctx.point(ev) };
+    // Events' own times: on a busy page they are handled late, and a tap would read as a press.
+    this.lastTouch = ev.timeStamp;
+    this.down = this.ctx.pointers.touches().length > 1 ? null : { id: ev.pointerId, t: ev.timeStamp, p: this.ctx.point(ev) };
     if (!this.down) this.lastTap = null;
   };
 
   private readonly onUp = (ev: PointerEvent): void => {
     if (ev.pointerType !== 'touch') return;
-    this.lastTouch = performance.now();
+    this.lastTouch = ev.timeStamp;
     const d = this.down;
     this.down = null;
     if (!d || d.id !== ev.pointerId) return;
     const p = this.ctx.point(ev);
-    if (performance.now() - d.t > TAP_MS || Math.hypot(p[0] - d.p[0], p[1] - d.p[1]) > TAP_SLOP_PX) {
+    if (ev.timeStamp - d.t > TAP_MS || Math.hypot(p[0] - d.p[0], p[1] - d.p[1]) > TAP_SLOP_PX) {
       this.lastTap = null;
       return;
     }
     const last = this.lastTap;
-    if (last && performance.now() - last.t < TAP_MS && Math.hypot(p[0] - last.p[0], p[1] - last.p[1]) < DOUBLE_TAP_PX) {
+    if (last && ev.timeStamp - last.t < TAP_MS && Math.hypot(p[0] - last.p[0], p[1] - last.p[1]) < DOUBLE_TAP_PX) {
       this.lastTap = null;
       this.zoom(last.p, false, ev);
       return;
     }
-    this.lastTap = { t: performance.now(), p };
+    this.lastTap = { t: ev.timeStamp, p };
   };
 }

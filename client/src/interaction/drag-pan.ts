@@ -61,7 +61,9 @@ export class DragPan extends InputHandler {
     const p = this.ctx.point(ev);
     this.drag = { id: ev.pointerId, last: p, start: p, moved: false };
     this.inertia.clear();
-    this.inertia.push({ time: performance.now(), x: p[0], y: p[1] });
+    // The event's own time, not when it is handled: on a busy page (a heavy frame, a slow
+    // machine) events wait, and the wait would read as the pointer having stopped.
+    this.inertia.push({ time: ev.timeStamp, x: p[0], y: p[1] });
     if (ev.type === 'pointerdown') {
       try {
         this.ctx.element.setPointerCapture(ev.pointerId);
@@ -84,7 +86,7 @@ export class DragPan extends InputHandler {
     d.moved = true;
     const view = this.ctx.view;
     view.set(view.carry(this.ctx.offset(d.last), this.ctx.offset(p), view.camera.scale), ev);
-    this.inertia.push({ time: performance.now(), x: p[0], y: p[1] });
+    this.inertia.push({ time: ev.timeStamp, x: p[0], y: p[1] });
     d.last = p;
   };
 
@@ -93,7 +95,7 @@ export class DragPan extends InputHandler {
     if (!d || d.id !== ev.pointerId) return;
     this.drag = null;
     if (!d.moved) return;
-    const glide = ev.type === 'pointerup' && this.ctx.settings().panDurationMs > 0 ? this.inertia.release(performance.now()) : null;
+    const glide = ev.type === 'pointerup' && this.ctx.settings().panDurationMs > 0 ? this.inertia.release(ev.timeStamp) : null;
     this.inertia.clear();
     const view = this.ctx.view;
     if (!glide) {

@@ -39,7 +39,7 @@ export class ScrollZoom extends InputHandler {
     if (delta === 0) return;
     const offset = this.ctx.offset(this.ctx.point(ev));
     clearTimeout(this.waiting);
-    const input = this.classifier.push(delta, performance.now());
+    const input = this.classifier.push(delta, ev.timeStamp); // when the wheel turned, not when handled
     if (input) {
       this.zoom(input, offset, ev);
       return;
