@@ -1,7 +1,7 @@
 // npm run bench:smoothness [-- <dataset filter>] [--size WxH]: how smoothly the map changes
 // during a zoom (issue 11; DESIGN.md, "What the map is judged by"). For bgt_otterlo_1800m and
-// nlcd_zion, the classic cube (ssc build, or ssc build --classic once the build has it) and the
-// smooth one (ssc build --smooth, when the build has it) are sliced by the CPU reference slicer
+// nlcd_zion, the classic cube (ssc build --classic; before it had that option, ssc build) and the
+// smooth one (ssc build --smooth, the default) are sliced by the CPU reference slicer
 // on one fixed ground window, the whole extent at 1280x720, in 120 frames whose scale grows
 // geometrically from the base scale to the scale at which the extent fills the window. Per
 // frame: the share of the pixels showing a face in both frames whose class changes. Per cube:

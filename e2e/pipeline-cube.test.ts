@@ -43,7 +43,9 @@ test('bgt_otterlo_400m cube', async (t) => {
   const tgapFile = path.join(dir, 'o.tgap');
   assert.equal(runSsc(['generalize', dataset('bgt_otterlo_400m.geojson'), '--style', styleFile('bgt.json'), '--out', tgapFile, '--quiet']).code, 0);
   const cube = path.join(dir, 'cube');
-  const b = runSsc(['build', tgapFile, '--out', cube, '--quiet']);
+  // The classic cube: its slice at step s is the tGAP's map at s (the oracle); the smooth one's
+  // transitions reach back into earlier steps (tested below).
+  const b = runSsc(['build', tgapFile, '--out', cube, '--quiet', '--classic']);
   assert.equal(b.code, 0, b.stderr);
   const tgap = await readTgap(tgapFile);
   const steps = tgap.meta.steps;
@@ -123,7 +125,7 @@ test('bgt_otterlo_400m cube', async (t) => {
 
   await t.test('a slice of one unchunked cube equals the slice through the index', () => {
     const one = path.join(dir, 'one');
-    assert.equal(runSsc(['build', tgapFile, '--out', one, '--chunk-bytes', String(1 << 30), '--quiet', '--no-precompress']).code, 0);
+    assert.equal(runSsc(['build', tgapFile, '--out', one, '--chunk-bytes', String(1 << 30), '--quiet', '--no-precompress', '--classic']).code, 0);
     assert.equal(readdirSync(one).filter((f) => f.startsWith('c-')).length, 1);
     assert.ok(readdirSync(cube).filter((f) => f.startsWith('c-') && f.endsWith('.bin')).length > 1);
     for (const s of [0, 150, 400, steps]) {
@@ -136,7 +138,7 @@ test('bgt_otterlo_400m cube', async (t) => {
 
   await t.test('an index split into sub-index files reads the same', () => {
     const split = path.join(dir, 'split');
-    assert.equal(runSsc(['build', tgapFile, '--out', split, '--chunk-bytes', '16384', '--sub-index-bytes', '1024', '--quiet', '--no-precompress']).code, 0);
+    assert.equal(runSsc(['build', tgapFile, '--out', split, '--chunk-bytes', '16384', '--sub-index-bytes', '1024', '--quiet', '--no-precompress', '--classic']).code, 0);
     const subs = readdirSync(split).filter((f) => /^i-[0-9a-f]{16}\.json$/.test(f));
     assert.ok(subs.length >= 2, `sub-index files written (${subs.length})`);
     const index = readFileSync(path.join(split, 'index.json'), 'utf8');
@@ -164,7 +166,7 @@ test('bgt_otterlo_400m cube', async (t) => {
 
   await t.test('the build is deterministic', () => {
     const again = path.join(dir, 'again');
-    assert.equal(runSsc(['build', tgapFile, '--out', again, '--quiet']).code, 0);
+    assert.equal(runSsc(['build', tgapFile, '--out', again, '--quiet', '--classic']).code, 0);
     const names = readdirSync(cube).sort();
     assert.deepEqual(readdirSync(again).sort(), names);
     for (const n of names) assert.ok(readFileSync(path.join(cube, n)).equals(readFileSync(path.join(again, n))), `${n} differs`);
@@ -241,15 +243,24 @@ function detachedGain(ids: Uint32Array, footprint: Uint8Array, winner: ReadonlyS
 /** z from which face f is shown: the floor, or its re-emit. */
 const faceStartZ = (t: Tgap, f: number): number => (t.faces[f]!.stepLow === 0 ? 0 : phaseZ(t.faces[f]!.stepLow, REEMIT_PHASE));
 
-test('bgt_otterlo_400m smooth cube (ssc build --smooth)', async (t) => {
+test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the classic one)', async (t) => {
   const dir = tempDir(t);
   const tgapFile = path.join(dir, 'o.tgap');
   assert.equal(runSsc(['generalize', dataset('bgt_otterlo_400m.geojson'), '--style', styleFile('bgt.json'), '--out', tgapFile, '--quiet']).code, 0);
-  const cubes = { smooth: path.join(dir, 'smooth'), classic: path.join(dir, 'classic') };
+  const cubes = { smooth: path.join(dir, 'smooth'), classic: path.join(dir, 'classic'), default: path.join(dir, 'default') };
+  const flags = { smooth: ['--smooth'], classic: ['--classic'], default: [] };
   for (const [name, out] of Object.entries(cubes)) {
-    const b = runSsc(['build', tgapFile, '--out', out, '--quiet', '--no-precompress', ...(name === 'smooth' ? ['--smooth'] : [])]);
+    const b = runSsc(['build', tgapFile, '--out', out, '--quiet', '--no-precompress', ...flags[name as keyof typeof flags]]);
     assert.equal(b.code, 0, b.stderr);
   }
+  // Without a flag the build is the smooth cube, file for file.
+  const files = (d: string): string[] => readdirSync(d).sort();
+  assert.deepEqual(files(cubes.default), files(cubes.smooth));
+  assert.deepEqual(readFileSync(path.join(cubes.default, 'index.json')), readFileSync(path.join(cubes.smooth, 'index.json')));
+  const both = runSsc(['build', tgapFile, '--out', path.join(dir, 'both'), '--smooth', '--classic']);
+  assert.notEqual(both.code, 0);
+  assert.match(both.stderr, /--smooth and --classic exclude each other/);
+  assert.equal(existsSync(path.join(dir, 'both')), false, 'nothing written');
   const tgap = await readTgap(tgapFile);
   const zMax = tgap.meta.steps;
   /** A cube's slicer at a constant z, through the index (its z boxes cull) and the chunks. */

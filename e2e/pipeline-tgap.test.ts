@@ -190,7 +190,7 @@ test('bgt_otterlo_400m with --group 8: several independent events a step, still 
   checkPartitions(tgap, out, dir, Array.from({ length: steps + 1 }, (_, s) => s).filter((s) => s % 5 === 0 || s === steps));
   // The cube of a grouped tGAP slices to the same maps.
   const cube = path.join(dir, 'cube');
-  assert.equal(runSsc(['build', out, '--out', cube, '--quiet', '--no-precompress']).code, 0);
+  assert.equal(runSsc(['build', out, '--out', cube, '--quiet', '--no-precompress', '--classic']).code, 0);
   for (const s of [0, Math.floor(steps / 3), Math.floor((2 * steps) / 3), steps]) {
     assert.equal(runSsc(['slice', cube, '--step', String(s), '--size', '160x120', '--out', path.join(dir, 'a.png'), '--ids', path.join(dir, 'a.ids')]).code, 0);
     assert.equal(runSsc(['map', out, '--step', String(s), '--size', '160x120', '--out', path.join(dir, 'b.png'), '--ids', path.join(dir, 'b.ids')]).code, 0);

@@ -13,7 +13,9 @@ export const usage = `ssc build <input.geojson|file.tgap> --out <dir> [options]
   --chunk-bytes <n>         target chunk size (default 262144)
   --sub-index-bytes <n>     largest index file before subtrees move to sub-index files (default 131072)
   --no-precompress          do not write the .gz and .br copies
-  --smooth                  smooth merges: the winner takes the loser's area gradually (tilted surfaces)
+  --classic                 today's classic cube: every change a horizontal surface (for comparison);
+                            the default is the smooth cube, where merges and simplification are
+                            gradual (tilted surfaces; --smooth says so explicitly)
   --quiet                   no progress on stderr
 Other ssc generalize options (--class-property, --crs, --layer, --precision, --base-scale,
 --allow-holes, --group) apply to polygon input. The directory is replaced only when the build succeeds.`;
@@ -43,11 +45,13 @@ export async function run(argv: string[]): Promise<void> {
       'sub-index-bytes': { type: 'string' },
       'no-precompress': { type: 'boolean' },
       smooth: { type: 'boolean' },
+      classic: { type: 'boolean' },
       ...generalizeOptionSpecs,
     },
   });
   if (positionals.length !== 1) throw new UsageError('give one input file (polygons or a tGAP)');
   if (!values.out) throw new UsageError('--out <dir> is required');
+  if (values.smooth && values.classic) throw new UsageError('--smooth and --classic exclude each other: the cube is one or the other');
   const chunkBytes = parseNumber(values['chunk-bytes'], '--chunk-bytes', { min: 1024, integer: true });
   const subIndexBytes = parseNumber(values['sub-index-bytes'], '--sub-index-bytes', { min: 1024, integer: true });
   const options = pipelineOptions(values);
@@ -58,7 +62,7 @@ export async function run(argv: string[]): Promise<void> {
     ...(chunkBytes !== undefined ? { chunkBytes } : {}),
     ...(subIndexBytes !== undefined ? { subIndexBytes } : {}),
     precompress: !values['no-precompress'],
-    smooth: values.smooth ?? false,
+    smooth: !values.classic,
     ...(options.log ? { log: options.log } : {}),
   });
   options.log?.(`build timings (ms): ${Object.entries(r.timings).map(([k, v]) => `${k} ${v}`).join(', ')}`);

@@ -24,7 +24,7 @@ export interface BuildOptions {
   subIndexBytes?: number;
   /** Write .gz and .br copies (default true). */
   precompress?: boolean;
-  /** Smooth merges (docs/FORMAT.md, "Smooth cube"); default: every surface horizontal. */
+  /** The smooth cube (docs/FORMAT.md, "Smooth cube"; the default); false: the classic cube, every surface horizontal. */
   smooth?: boolean;
   log?: (msg: string) => void;
 }
@@ -48,9 +48,10 @@ export function hashName(prefix: string, bytes: Uint8Array | string, ext: string
 export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}): Promise<BuildReport> {
   const log = opts.log ?? (() => {});
   const { timings, lap } = lapTimer();
-  const { surfaces, stats } = buildSurfaces(t, { smooth: opts.smooth ?? false });
+  const smooth = opts.smooth ?? true;
+  const { surfaces, stats } = buildSurfaces(t, { smooth });
   lap('surfaces');
-  log(`surfaces: ${surfaces.count} triangles (floor ${stats.floor}, merges ${stats.merge}, splits ${stats.split}, simplification ${stats.simplify}, redrawn ${stats.reemit})${opts.smooth ? `, ${stats.tiltedMerges} merges and ${stats.tiltedRemovals} removals tilted` : ''}`);
+  log(`surfaces: ${surfaces.count} triangles (floor ${stats.floor}, merges ${stats.merge}, splits ${stats.split}, simplification ${stats.simplify}, redrawn ${stats.reemit})${smooth ? `, ${stats.tiltedMerges} merges and ${stats.tiltedRemovals} removals tilted` : ''}`);
   const info = scaleInfoOf(t);
   const plan = planChunks({
     surfaces, xs: surfaces.xs, ys: surfaces.ys, extent: t.meta.extent,
@@ -105,7 +106,7 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
       baseScale: t.meta.baseScale,
       baseFaces: t.meta.baseFaces,
       pixelSizeMm: PIXEL_SIZE_MM,
-      ...(opts.smooth ? { smooth: true } : {}),
+      ...(smooth ? { smooth: true } : {}),
       scaleTable: info.scaleTable,
       style: t.meta.style as CubeIndexJson['meta']['style'],
       attribution: style.attribution ?? '',

@@ -13,8 +13,10 @@
 // (class a) into B (class b, weight 3). The bump's vertex goes by simplification.
 import test from 'node:test';
 import assert from 'node:assert/strict';
+import { generalizedDataset } from '../../testing/generalized-dataset.js';
 import { fixtureStyle, fixtureTgap, rect, type XY } from '../../testing/planar-fixtures.js';
-import { horizontalChanges } from './horizontal-changes.js';
+import { tempDir } from '../../testing/temp-dir.js';
+import { CHANGE_KINDS, horizontalChanges, type HorizontalChanges } from './horizontal-changes.js';
 import { buildSurfaces } from './surfaces.js';
 
 const BUMP: XY[] = [[7, 4], [6.9, 4.1], [6.8, 4]];
@@ -43,15 +45,14 @@ test('the classic cube: the road\'s split, the bump\'s simplification and the me
     'every class-changing triangle above the floor (all are horizontal here)');
 });
 
-test('the smooth cube tilts the merges and the simplification: only the split is left', () => {
+test('the smooth cube tilts the merges, the split and the simplification: nothing changes class flat', () => {
   const classic = buildSurfaces(t);
   const smooth = buildSurfaces(t, { smooth: true });
   const c = horizontalChanges(t, classic.surfaces, classic.transitions);
   const s = horizontalChanges(t, smooth.surfaces, smooth.transitions);
-  assert.equal(s.byKind.merge + s.byKind.mergeFlat + s.byKind.simplify, 0);
-  assert.ok(c.byKind.simplify > 0, 'the classic cube has the bump\'s simplification flat');
-  assert.deepEqual([s.byKind.split, s.byKind.reemit], [c.byKind.split, c.byKind.reemit]);
-  assert.equal(s.total, c.total - c.byKind.merge - c.byKind.simplify);
+  assert.ok(c.byKind.split > 0 && c.byKind.simplify > 0 && c.byKind.merge > 0, `classic: ${JSON.stringify(c.byKind)}`);
+  assert.deepEqual(s.byKind, { merge: 0, mergeFlat: 0, split: 0, simplify: 0, reemit: 0 });
+  assert.equal(s.total, 0);
 });
 
 test('a flat triangle inside a tilted merge counts as mergeFlat, with its area', () => {
@@ -65,4 +66,19 @@ test('a flat triangle inside a tilted merge counts as mergeFlat, with its area',
   const h = horizontalChanges(two, s, transitions);
   assert.equal(h.byKind.mergeFlat, 1);
   near(h.areaByKind.mergeFlat, 4, 'flat area');
+});
+
+test('bgt_otterlo_400m: the smooth cube changes class flat over at most 0.2% of the classic cube\'s area', async (t) => {
+  const { tgap } = await generalizedDataset(tempDir(t), 'bgt_otterlo_400m.geojson', 'bgt.json');
+  const sum = (h: HorizontalChanges): number => CHANGE_KINDS.reduce((a, k) => a + h.areaByKind[k], 0);
+  const classic = buildSurfaces(tgap);
+  const smooth = buildSurfaces(tgap, { smooth: true });
+  const c = horizontalChanges(tgap, classic.surfaces, classic.transitions);
+  const s = horizontalChanges(tgap, smooth.surfaces, smooth.transitions);
+  t.diagnostic(`classic: ${c.total} triangles, ${sum(c).toFixed(0)} m2 ${JSON.stringify(c.byKind)}; smooth: ${s.total}, ${sum(s).toFixed(1)} m2 ${JSON.stringify(s.byKind)}`);
+  // Every merge and split tilts; what is left are simplification triangles with no room in z
+  // (removed in the same phase as an older one they overlap) and a few flat pieces of merges.
+  assert.equal(s.byKind.merge + s.byKind.split + s.byKind.reemit, 0);
+  // Measured: 168 m2 against 115,785 m2 (0.15%).
+  assert.ok(sum(s) <= 0.002 * sum(c), `smooth ${sum(s)} m2 against classic ${sum(c)} m2`);
 });

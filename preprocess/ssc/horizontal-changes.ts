@@ -30,7 +30,8 @@ export function horizontalChanges(t: Tgap, s: Surfaces, transitions: readonly Me
   const byKind = Object.fromEntries(CHANGE_KINDS.map((k) => [k, 0])) as Record<ChangeKind, number>;
   const areaByKind = { ...byKind };
   let total = 0;
-  const { faces, xs, ys } = t;
+  const { faces } = t;
+  const { xs, ys } = s; // the tGAP's vertices and any the build added
   for (let i = 0; i < s.count; i++) {
     const z = s.z[3 * i]!;
     if (z !== s.z[3 * i + 1] || z !== s.z[3 * i + 2]) continue;

@@ -5,7 +5,8 @@
 // - a merge: the loser's area (and, when the winner is replaced by a new face, the winner's);
 //   with `smooth`, tilted instead: a front rising from the boundary the loser shares with the
 //   winner, up to a zoom level before the merge, above the older surfaces (smooth-merge.ts);
-// - a split: the triangles the split gave each receiving face;
+// - a split: the triangles the split gave each receiving face; with `smooth`, tilted per
+//   receiving face as a merge of that part into it;
 // - simplification: each removed vertex's triangle, between the faces on either side; with
 //   `smooth`, tilted from the removed corner up to the removal.
 import { orient } from '../geom/predicates.js';
@@ -135,6 +136,8 @@ export interface SurfaceStats extends TriangulateStats {
   tiltedMerges: number;
   /** Simplification triangles drawn tilted (smooth), of `simplify`. */
   tiltedRemovals: number;
+  /** A split's parts given to one neighbour drawn tilted (smooth). */
+  tiltedSplits: number;
   /** Triangles added by splitting chords between shared-boundary vertices (smooth merges). */
   chordSplits: number;
 }
@@ -178,7 +181,7 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
   const steps = t.meta.steps;
   const zTop = steps + 1;
   const out = new Surfaces(t.xs, t.ys);
-  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, chordSplits: 0 };
+  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0 };
   const { xs, ys, faces, edges } = t;
   // Edges by the state they start and end in.
   const born: number[][] = Array.from({ length: steps + 2 }, () => []);
@@ -264,6 +267,18 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
    */
   const emitSmoothMerge = (byFace: SurfacesByFace, loser: number, into: number, s: number, sharedWithInto: number[], zFoot: number, zMerge: number, key: string): number => {
     triangulate(loser, s);
+    const zStart = emitTilted(byFace, tris, loser, into, s, sharedWithInto, zFoot, zMerge, key, 'merge');
+    if (zStart < zMerge) stats.tiltedMerges++;
+    return zStart;
+  };
+  /**
+   * Part of the loser's area (`area`, triangles of state s) given to `into` at zEnd, tilted as
+   * a smooth merge is (a front from their shared boundary); or flat at zEnd when it cannot
+   * tilt. Returns where its transition starts (zEnd: flat).
+   */
+  const emitTilted = (
+    byFace: SurfacesByFace, area: number[], loser: number, into: number, s: number, sharedWithInto: number[], zFoot: number, zMerge: number, key: string, kind: 'merge' | 'split',
+  ): number => {
     // A vertex of the shared boundary may start once the winner lies beside it.
     const shared = new Map<number, number>();
     const segments = new Set<string>();
@@ -273,17 +288,15 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
       const verts = edges[e]!.verts;
       for (let i = 0; i + 1 < verts.length; i++) segments.add(edgeKey(verts[i]!, verts[i + 1]!));
     }
-    const own = splitChords(tris, out.xs, out.ys, (v) => shared.has(v), (a, b) => segments.has(edgeKey(a, b)), (x, y) => out.addVertex(x, y));
-    stats.merge += own.length / 3;
-    stats.chordSplits += (own.length - tris.length) / 3;
-    tris.length = 0;
-    for (const v of own) tris.push(v);
-    const lowest = byFace.lowestZ(loser, tris, zFoot, SURFACE_GAP, reachBack(zMerge));
-    const z = smoothMergeZ(tris, out.xs, out.ys, shared, { zFoot, zMerge, lowest });
+    const own = splitChords(area, out.xs, out.ys, (v) => shared.has(v), (a, b) => segments.has(edgeKey(a, b)), (x, y) => out.addVertex(x, y));
+    stats[kind] += own.length / 3;
+    stats.chordSplits += (own.length - area.length) / 3;
+    const lowest = byFace.lowestZ(loser, own, zFoot, SURFACE_GAP, reachBack(zMerge));
+    const z = smoothMergeZ(own, out.xs, out.ys, shared, { zFoot, zMerge, lowest });
     const zOf = (v: number): number => z?.get(v) ?? zMerge;
     let zLow = zMerge;
-    for (let i = 0; i < tris.length; i += 3) {
-      const a = tris[i]!, b = tris[i + 1]!, c = tris[i + 2]!;
+    for (let i = 0; i < own.length; i += 3) {
+      const a = own[i]!, b = own[i + 1]!, c = own[i + 2]!;
       if (z) {
         out.addTilted(a, b, c, zOf(a), zOf(b), zOf(c), into, loser, key);
         zLow = Math.min(zLow, zOf(a), zOf(b), zOf(c));
@@ -291,9 +304,7 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
         out.add(a, b, c, zMerge, into, loser);
       }
     }
-    if (!z) return zMerge;
-    stats.tiltedMerges++;
-    return zLow - SURFACE_GAP / 2;
+    return z ? zLow - SURFACE_GAP / 2 : zMerge;
   };
   /**
    * Where a smooth removal's corner starts to recede: the triangle (a, v, b) tilts from its
@@ -344,12 +355,26 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
         handOn.push([e.loser, e.into]);
       } else if (e.kind === EventKind.Split) {
         const tv = e.tris!, tf = e.triFaces!;
-        for (let i = 0; i < tf.length; i++) {
-          out.add(tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!, z0, tf[i]!, e.loser);
-          lieIn(tf[i]!, out.count - 1);
+        if (byFace) {
+          // Smooth: each neighbour grows into the face from its own side up to the split line,
+          // as in a merge, so the face narrows and closes.
+          const byInto = new Map<number, number[]>();
+          for (let i = 0; i < tf.length; i++) {
+            let l = byInto.get(tf[i]!);
+            if (!l) byInto.set(tf[i]!, (l = []));
+            l.push(tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!);
+          }
+          for (const [into, area] of [...byInto].sort((p, q) => p[0] - q[0])) {
+            const first = out.count;
+            const zFoot = Math.max(SURFACE_GAP, reachBack(z0), createdZ[into]! + SURFACE_GAP);
+            if (emitTilted(byFace, area, e.loser, into, k - 1, sharedEdges(e.loser, into, k - 1), zFoot, z0, `p${ev}:${into}`, 'split') < z0) stats.tiltedSplits++;
+            lieIn(into, first);
+          }
+        } else {
+          for (let i = 0; i < tf.length; i++) out.add(tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!, z0, tf[i]!, e.loser);
+          stats.split += tf.length;
         }
         byFace?.drop(e.loser);
-        stats.split += tf.length;
         relabel(e.loser, z0, before);
         faceEdges.delete(e.loser);
       } else {
