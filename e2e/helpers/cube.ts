@@ -110,13 +110,31 @@ export function nearTriangleEdge(tris: Float64Array, x: number, y: number, tol: 
   return false;
 }
 
+/**
+ * True when (x, y) lies inside a triangle narrower than `width` (ground units; its smallest
+ * altitude): a GPU rasterizes such a needle at its sub-pixel precision all along its length,
+ * so a pixel well inside it by the CPU's exact test may still be left to the surface below.
+ */
+export function inSliverTriangle(tris: Float64Array, x: number, y: number, width: number): boolean {
+  for (let t = 0; t < tris.length; t += 6) {
+    const ax = tris[t]!, ay = tris[t + 1]!, bx = tris[t + 2]!, by = tris[t + 3]!, cx = tris[t + 4]!, cy = tris[t + 5]!;
+    if (x < Math.min(ax, bx, cx) || x > Math.max(ax, bx, cx) || y < Math.min(ay, by, cy) || y > Math.max(ay, by, cy)) continue;
+    const d1 = (bx - ax) * (y - ay) - (by - ay) * (x - ax), d2 = (cx - bx) * (y - by) - (cy - by) * (x - bx), d3 = (ax - cx) * (y - cy) - (ay - cy) * (x - cx);
+    if (!((d1 >= 0 && d2 >= 0 && d3 >= 0) || (d1 <= 0 && d2 <= 0 && d3 <= 0))) continue;
+    const area2 = Math.abs((bx - ax) * (cy - ay) - (cx - ax) * (by - ay));
+    const longest = Math.max(Math.hypot(bx - ax, by - ay), Math.hypot(cx - bx, cy - by), Math.hypot(ax - cx, ay - cy));
+    if (area2 / longest < width) return true;
+  }
+  return false;
+}
+
 export interface Comparison {
   total: number;
   equal: number;
   share: number;
   /** Differing pixels on a face boundary of the reference (a differing id among their 8 neighbours). */
   onFaceBoundary: number;
-  /** Differing pixels whose centre is within the sub-pixel tolerance of a triangle edge. */
+  /** Differing pixels whose centre is within the sub-pixel tolerance of a triangle edge, or inside a needle narrower than a pixel. */
   subPixel: number;
   /** Differing pixels that are neither. */
   unexplained: number;
