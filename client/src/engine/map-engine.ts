@@ -21,8 +21,6 @@ import { featuresAt, type Feature } from './picking.js';
 export interface EngineOptions {
   /** URL of the cube's directory (with or without a trailing /) or of its index.json. */
   source: string;
-  /** Instead of the whole extent: the ground box the first view shows whole. */
-  bounds?: Bbox;
   blending?: Partial<BlendingOptions>;
   boundaries?: Partial<BoundaryOptions>;
   /** Frames accumulated (jittered) while the view is still; 1: off. */
@@ -93,10 +91,10 @@ export class MapEngine extends Evented<EngineEvents> {
     } else {
       showWebGl2Missing(container);
     }
-    const bounds = options.bounds;
     this.source.on('meta', (meta) => {
       const g = this.canvas.deviceSize();
-      view.setMeta(meta, () => view.fitCamera(bounds ?? meta.extent, g.width, g.height, this.canvas.deviceRatio()));
+      // VarioMap then shows what its options ask for (they may need the cube's CRS).
+      view.setMeta(meta, () => view.fitCamera(meta.extent, g.width, g.height, this.canvas.deviceRatio()));
       this.renderer?.setMeta(meta);
       this.fire('meta', meta);
     });

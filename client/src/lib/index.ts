@@ -1,6 +1,6 @@
-// The library's public surface: the map, its controls, the research tools and the scale
-// helpers. The builds start from bundle.ts, which adds the stylesheet; the type declarations
-// (tsconfig.lib.json) from here.
+// The library's public surface: the map, its controls, the research tools, the scale helpers
+// and longitude/latitude as MapLibre's. The builds start from bundle.ts, which adds the
+// stylesheet; the type declarations (tsconfig.lib.json) from here.
 
 export { VarioMap } from '../vario-map.js';
 export type {
@@ -14,6 +14,7 @@ export type {
   Control,
   ControlPosition,
   Feature,
+  FitBoundsOptions,
   FlyToOptions,
   HandlerName,
   InteractionSettings,
@@ -36,3 +37,6 @@ export { SettingsPanel, type SurfaceMode } from '../ui/settings-panel.js';
 export { ZoomControl } from '../ui/zoom-control.js';
 export { InteractionLog, type LogEntry } from '../research/interaction-log.js';
 export { scaleAtZoom, zoomAtScale } from '../geometry/zoom-levels.js';
+export { LngLat, type LngLatLike } from '../geo/lng-lat.js';
+export { LngLatBounds, type LngLatBoundsLike } from '../geo/lng-lat-bounds.js';
+export { CrsError } from '../geo/crs-transform.js';
