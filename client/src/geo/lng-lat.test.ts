@@ -1,12 +1,13 @@
 // LngLat and LngLatBounds take what MapLibre's take, and name what is wrong otherwise.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { LngLat } from './lng-lat.js';
+import { LngLat, type LngLatLike } from './lng-lat.js';
 import { LngLatBounds } from './lng-lat-bounds.js';
 
 describe('LngLat', () => {
   test('from an array, { lng, lat } and { lon, lat }', () => {
-    for (const like of [[5.8, 52.1], { lng: 5.8, lat: 52.1 }, { lon: 5.8, lat: 52.1 }, new LngLat(5.8, 52.1)] as const) {
+    const likes: LngLatLike[] = [[5.8, 52.1], { lng: 5.8, lat: 52.1 }, { lon: 5.8, lat: 52.1 }, new LngLat(5.8, 52.1)];
+    for (const like of likes) {
       assert.deepEqual(LngLat.convert(like).toArray(), [5.8, 52.1]);
     }
   });
