@@ -1,6 +1,6 @@
-// The library's public surface: the map, its controls, the research tools, the scale helpers
-// and longitude/latitude as MapLibre's. The builds start from bundle.ts, which adds the
-// stylesheet; the type declarations (tsconfig.lib.json) from here.
+// The library's public surface: the map, its controls, markers and popups, the research tools,
+// the scale helpers and longitude/latitude as MapLibre's. The builds start from bundle.ts,
+// which adds the stylesheet; the type declarations (tsconfig.lib.json) from here.
 
 export { VarioMap } from '../vario-map.js';
 export type {
@@ -40,3 +40,6 @@ export { scaleAtZoom, zoomAtScale } from '../geometry/zoom-levels.js';
 export { LngLat, type LngLatLike } from '../geo/lng-lat.js';
 export { LngLatBounds, type LngLatBoundsLike } from '../geo/lng-lat-bounds.js';
 export { CrsError } from '../geo/crs-transform.js';
+export { Marker, type MarkerOptions } from '../overlay/marker.js';
+export { Popup, type PopupEvents, type PopupOptions } from '../overlay/popup.js';
+export type { Anchor, Offset } from '../overlay/overlay-position.js';
