@@ -2,11 +2,14 @@
 // and gives in longitude/latitude agrees to 1 cm with its projected methods and with proj4 run
 // in Node on the EPSG's own definition of RD New (helpers/geo.ts); getZoom() is MapLibre's zoom
 // at the view's latitude; a real click's lngLat is unproject() of the click point; the URL hash
-// is MapLibre's #zoom/lat/lng both ways.
+// is MapLibre's #zoom/lat/lng both ways. A cube without a CRS definition works in its CRS, and
+// the longitude/latitude methods say why they cannot.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import type { Page } from 'playwright-core';
+import { openMap } from './helpers/browser.js';
 import { lngLatToRd, mapLibreZoom, rdToLngLat } from './helpers/geo.js';
+import { waitIdle } from './helpers/map-page.js';
 import { useTestBed } from './helpers/test-bed.js';
 import { openDemo, resolution, settle, type VarioWindow } from './helpers/vario-page.js';
 
@@ -188,5 +191,52 @@ describe('longitude/latitude and zoom in the API (bgt_otterlo_400m, EPSG:28992)'
     assert.equal(parts.length, 3, now.hash);
     assert.ok(Math.abs(parts[0]! - now.zoom) <= 5e-5, `zoom first: ${now.hash} for ${now.zoom}`);
     assert.ok(Math.abs(parts[1]! - now.lat) < 1e-6 && Math.abs(parts[2]! - now.lng) < 1e-6, `then latitude and longitude: ${now.hash} for ${now.lat}, ${now.lng}`);
+  });
+});
+
+describe('a cube whose CRS has no proj4 definition (bgt_otterlo_400m built with --crs EPSG:999999)', () => {
+  const bed = useTestBed(['--crs', 'EPSG:999999']);
+
+  test('the projected methods work; the longitude/latitude ones say why they cannot, and a click has no lngLat', async () => {
+    assert.equal(bed.contents.meta.crs, 'EPSG:999999');
+    assert.equal(bed.contents.meta.proj4, undefined, 'ssc build wrote no definition it does not have');
+    bed.page = await openMap(bed.browser, bed.server.url, { source: 'cube/', supersampling: 1 });
+    const page = bed.page.page;
+    await waitIdle(page);
+    const r = await page.evaluate(() => {
+      const m = (globalThis as unknown as VarioWindow).map;
+      const error = (f: () => unknown): string => {
+        try {
+          f();
+          return 'no error';
+        } catch (e) {
+          return `${(e as Error).name}: ${(e as Error).message}`;
+        }
+      };
+      return {
+        projected: m.getCenterProjected(),
+        getCenter: error(() => m.getCenter()),
+        jumpTo: error(() => m.jumpTo({ center: [5.77, 52.1] })),
+        project: error(() => m.project([5.77, 52.1])),
+      };
+    });
+    const e = bed.contents.meta.extent;
+    assert.deepEqual(r.projected, [(e[0] + e[2]) / 2, (e[1] + e[3]) / 2], 'the map shows the extent, its centre in the CRS');
+    for (const [what, message] of Object.entries({ getCenter: r.getCenter, jumpTo: r.jumpTo, project: r.project })) {
+      assert.match(message, /^CrsError: .*index\.json has no proj4 definition of its CRS \(meta\.crs "EPSG:999999"\).*getCenterProjected\(\)/, what);
+    }
+    await page.evaluate(() => {
+      const w = globalThis as unknown as VarioWindow & { clicks: unknown[] };
+      w.clicks = [];
+      w.map.on('click', (ev) => w.clicks.push(ev));
+    });
+    await page.mouse.click(200, 150);
+    await page.waitForFunction(() => (globalThis as unknown as { clicks: unknown[] }).clicks.length > 0);
+    const click = await page.evaluate(() => {
+      const ev = (globalThis as unknown as { clicks: { lngLat: unknown; projected: XY }[] }).clicks[0]!;
+      return { lngLat: ev.lngLat, projected: ev.projected, unprojected: (globalThis as unknown as VarioWindow).map.unprojectProjected([200, 150]) };
+    });
+    assert.equal(click.lngLat, null);
+    assert.deepEqual(click.projected, click.unprojected);
   });
 });
