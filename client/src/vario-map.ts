@@ -173,7 +173,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
     return this.view.isMoving;
   }
 
-  /** Goes there at once (before the cube is known too, without movement events then). */
+  /** Goes there at once (asked before the cube is known: when it is, without movement events). */
   jumpTo(o: CameraOptions): this {
     if (this.view.meta) this.view.jump(this.target(o));
     else this.pending.push({ camera: o });
@@ -417,6 +417,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
     const sliceZ = o.sliceZ !== undefined ? { sliceZ: o.sliceZ } : {};
     return this.easeTo({ centerProjected: [c.x, c.y], scaleDenominator: c.scale, ...sliceZ, duration: o.duration ?? this.settings.zoomDurationMs, ...(o.easing ? { easing: o.easing } : {}) });
   }
+
   /** Before the cube is known there is nothing to animate over: the view is just set then (true). */
   private setBeforeMeta(o: CameraOptions): boolean {
     if (this.view.meta) return false;
@@ -490,7 +491,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
       // The hash is in longitude/latitude, as MapLibre's.
       this.hash.remove();
       this.hash = null;
-      this.fire('error', { kind: 'index', message: `hash: ${this.crs?.message ?? ""}`, url: this.getSourceUrl() });
+      this.fire('error', { kind: 'index', message: `hash: ${this.crs?.message ?? ''}`, url: this.getSourceUrl() });
     }
     this.hash?.apply();
   }

@@ -3,6 +3,7 @@
 // the same animation frame, after the view of that frame is drawn), from that frame's view, so
 // it moves with the map through animations without lagging a frame behind.
 import { Evented } from '../events.js';
+import { CrsError } from '../geo/crs-transform.js';
 import { LngLat, type LngLatLike } from '../geo/lng-lat.js';
 import type { VarioMap } from '../vario-map.js';
 import { offsetFor, placeElement, type Anchor, type Offset } from './overlay-position.js';
@@ -60,16 +61,27 @@ export abstract class PlacedOverlay<Events extends object> extends Evented<Event
   protected readonly update = (): void => {
     const el = this.getElement();
     const map = this.map;
-    if (!map || !this.place) return;
-    // Before the cube (and so its CRS) is known there is no place on the map to show it at.
-    if (!map.getMetadata()) {
+    if (!map) return;
+    const p = this.place && map.getMetadata() ? projected(map, this.place) : null;
+    // Without a place, before the cube is known, or on a cube without a CRS definition (the
+    // map says so itself), it has nowhere to be.
+    if (!p) {
       el.style.visibility = 'hidden';
       return;
     }
-    const p = map.project(this.place);
     const anchor = this.anchorAt(p);
     const [dx, dy] = offsetFor(anchor, this.offset);
     placeElement(el, [p[0] + dx, p[1] + dy], anchor);
     el.style.visibility = '';
   };
+}
+
+/** CSS px of the place, or null when the map cannot convert longitude/latitude. */
+function projected(map: VarioMap, place: LngLat): [number, number] | null {
+  try {
+    return map.project(place);
+  } catch (err) {
+    if (err instanceof CrsError) return null;
+    throw err;
+  }
 }
