@@ -31,7 +31,10 @@ type XY = [number, number];
 
 /** What the tests use in the page: the map and the library's global. */
 interface OverlayWindow extends VarioWindow {
-  vario: { Marker: new () => { setLngLat(ll: { lng: number; lat: number }): { addTo(m: unknown): PageMarker } } };
+  vario: {
+    Marker: new () => { setLngLat(ll: { lng: number; lat: number }): { addTo(m: unknown): PageMarker; setPopup(p: unknown): { addTo(m: unknown): PageMarker } } };
+    Popup: new () => { setText(t: string): unknown };
+  };
   marker: PageMarker;
   samples: { scale: number; tip: XY; projected: XY }[];
   sampling: boolean;
@@ -41,7 +44,7 @@ interface OverlayWindow extends VarioWindow {
   document: { querySelectorAll(s: string): ArrayLike<PageElement> };
 }
 interface PageMarker {
-  getElement(): PageElement;
+  getElement(): PageElement & { focus(): void; getAttribute(n: string): string | null };
   getLngLat(): { lng: number; lat: number };
 }
 interface PageElement {
@@ -175,5 +178,39 @@ describe('Marker and Popup in the script-tag build (bgt_otterlo_400m)', () => {
     shown = await popups(page);
     assert.equal(shown.length, 1, 'one popup: the click on the map closed the first');
     assert.equal(shown[0]!.text, second.label);
+  });
+
+  test("a marker's popup opens and closes by a click on the marker (not the map's) and by Enter on it", async () => {
+    const page = await open();
+    const pin = await page.evaluate(() => {
+      const w = globalThis as unknown as OverlayWindow;
+      w.clicks = [];
+      w.map.on('click', () => w.clicks.push({ classLabel: null }));
+      w.marker = new w.vario.Marker().setLngLat(w.map.unproject([320, 240])).setPopup(new w.vario.Popup().setText('Here')).addTo(w.map);
+      const r = w.marker.getElement().getBoundingClientRect();
+      return [r.left + r.width / 2, r.top + r.height / 3] as XY;
+    });
+    const state = (): Promise<{ texts: string[]; expanded: string | null; mapClicks: number }> =>
+      page.evaluate(() => {
+        const w = globalThis as unknown as OverlayWindow;
+        const texts = Array.from(w.document.querySelectorAll('.vario-map-popup-content')).map((c) => c.textContent ?? '');
+        return { texts, expanded: w.marker.getElement().getAttribute('aria-expanded'), mapClicks: w.clicks.length };
+      });
+    await page.mouse.click(...pin);
+    assert.deepEqual(await state(), { texts: ['Here×'], expanded: 'true', mapClicks: 0 }, 'a click on the pin opens its popup, and is not a click on the map');
+    const tip = (await popups(page))[0]!.tip;
+    assert.ok(tip[1] < pin[1] - 10 && Math.abs(tip[0] - 320) <= 1, `the popup is above the pin: tip at ${tip.join(', ')}`);
+    await page.mouse.click(...pin);
+    assert.deepEqual(await state(), { texts: [], expanded: 'false', mapClicks: 0 }, 'a second click closes it');
+    await page.evaluate(() => (globalThis as unknown as OverlayWindow).marker.getElement().focus());
+    await page.keyboard.press('Enter');
+    assert.deepEqual((await state()).texts, ['Here×'], 'Enter on the focused marker opens it');
+    // The map's click events come after a face lookup: one on the map now is heard after any
+    // the marker's clicks had caused, and it is the only one.
+    await page.mouse.click(100, 400);
+    await page.waitForFunction(() => (globalThis as unknown as OverlayWindow).clicks.length > 0);
+    const after = await state();
+    assert.equal(after.mapClicks, 1, 'the map heard the click on it, and none of those on the marker');
+    assert.equal(after.expanded, 'false', "the click on the map closed the marker's popup");
   });
 });

@@ -37,6 +37,7 @@ export class Marker extends PlacedOverlay<Record<string, never>> {
       this.element.setAttribute('role', 'img');
       this.element.setAttribute('aria-label', 'Map marker');
     }
+    this.element.addEventListener('pointerdown', this.onPress);
     this.element.addEventListener('click', this.onClick);
     this.element.addEventListener('keydown', this.onKey);
   }
@@ -102,6 +103,14 @@ export class Marker extends PlacedOverlay<Record<string, never>> {
   protected anchorAt(): Anchor {
     return this.anchor;
   }
+
+  /**
+   * A press on a marker with a popup is the marker's: the map's drag would capture the pointer,
+   * and the click would then go to the map instead (a plain marker still lets a drag start on it).
+   */
+  private readonly onPress = (ev: PointerEvent): void => {
+    if (this.popup) ev.stopPropagation();
+  };
 
   private readonly onClick = (ev: MouseEvent): void => {
     if (!this.popup) return;
