@@ -5,27 +5,31 @@
 // on one fixed ground window, the whole extent at 1280x720, in 120 frames whose scale grows
 // geometrically from the base scale to the scale at which the extent fills the window. Per
 // frame: the share of the pixels showing a face in both frames whose class changes. Per cube:
-// worst, p95, median, worst/median, the worst frame, triangles and bytes, beside the issue's
-// targets. Then the transition lengths of the classic cube's events (bench/transition-lengths.ts).
+// worst, p95, median, worst/median, the worst frame, the pixels that flicker (go back to a
+// class they showed, bench/flicker.ts), triangles and bytes, beside the issue's targets. Then
+// the transition lengths of both cubes' events (bench/transition-lengths.ts; the smooth cube's
+// merges from buildSurfaces' transitions on the same tGAP), and the horizontal surfaces above
+// the floor that change class, by kind (preprocess/ssc/horizontal-changes.ts).
 import { mkdtempSync, rmSync, statSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { parseArgs } from 'node:util';
-import type { DecodedChunk } from '../format/chunk.js';
-import type { ChunkLeaf } from '../format/cube-index.js';
 import { zAtScale } from '../format/scale.js';
 import { readTgap } from '../format/tgap.js';
-import { scaleInfoOf } from '../format/tgap-model.js';
-import { sliceCube, type ChunkSource } from '../preprocess/commands/slice-cube.js';
+import { scaleInfoOf, type Tgap } from '../format/tgap-model.js';
 import { fitView, type View } from '../preprocess/map/rasterize.js';
+import { CHANGE_KINDS, horizontalChanges } from '../preprocess/ssc/horizontal-changes.js';
 import { CubeReader } from '../preprocess/ssc/read-cube.js';
+import { buildSurfaces } from '../preprocess/ssc/surfaces.js';
 import { runSsc } from '../testing/run-ssc.js';
 import { BenchBuildError, buildBenchCube, type BenchCube } from './bench-cube.js';
 import { changeShare, classChange, type ClassFrame } from './class-change.js';
 import { datasets, type Dataset } from './datasets.js';
+import { FlickerCounter } from './flicker.js';
 import { median, percentile } from './stats.js';
 import { printTable } from './table.js';
-import { classicTransitions, scaleRatios, transitionLengths } from './transition-lengths.js';
+import { classicTransitions, scaleRatios, smoothTransitions, transitionLengths, type Transition } from './transition-lengths.js';
+import { zoomFrames } from './zoom-frames.js';
 
 const FRAMES = 120;
 // Issue 11's targets.
@@ -44,6 +48,10 @@ interface CubeFigures {
   p95: number;
   median: number;
   worstFrame: number;
+  /** Pixels that went back to a class they showed before, away from boundaries. */
+  flicker: number;
+  /** Of those, or not, pixels that went back to a face (only a cube can do that). */
+  faceReturns: number;
   triangles: number;
   bytes: number;
   gzipBytes: number;
@@ -52,39 +60,23 @@ interface CubeFigures {
   zLast: number;
 }
 
-/** The index's chunks read once each: the 120 slices reuse them (as the map's cache would). */
-function cachedChunks(reader: CubeReader): ChunkSource {
-  const decoded = new Map<string, DecodedChunk>();
-  return {
-    query: (q) => reader.query(q),
-    async chunk(leaf: ChunkLeaf) {
-      let c = decoded.get(leaf.file);
-      if (!c) decoded.set(leaf.file, (c = await reader.chunk(leaf)));
-      return c;
-    },
-  };
-}
-
 /** The 120 frames of the zoom on `cube` and their class changes. */
 async function zoom(cube: BenchCube): Promise<CubeFigures> {
   const reader = await CubeReader.open(cube.dir);
-  const source = cachedChunks(reader);
   const meta = reader.index.meta;
   const view: View = fitView(meta.extent, width, height);
   // The scale at which the (fitted) extent fills the window: its metres per pixel over the pixel size.
   const extentScale = ((view.bbox[2] - view.bbox[0]) / width) * (1000 / meta.pixelSizeMm);
   const shares: number[] = [];
   const ms: number[] = [];
-  const zs: number[] = [];
+  // The map's own scale -> z.
+  const zs = Array.from({ length: FRAMES }, (_, i) => zAtScale(meta, meta.baseScale * (extentScale / meta.baseScale) ** (i / (FRAMES - 1))));
+  const flicker = new FlickerCounter(width, height);
   let before: ClassFrame | undefined;
-  for (let i = 0; i < FRAMES; i++) {
-    const scale = meta.baseScale * (extentScale / meta.baseScale) ** (i / (FRAMES - 1));
-    const z = zAtScale(meta, scale); // the map's own scale -> z
-    zs.push(z);
-    const t0 = performance.now();
-    const { slicer } = await sliceCube(source, meta.zMax, view, { base: z, spec: { kind: 'flat' } });
-    ms.push(performance.now() - t0);
+  for await (const { slicer, ms: t } of zoomFrames(reader, view, zs)) {
+    ms.push(t);
     if (before) shares.push(changeShare(classChange(before, slicer)));
+    flicker.add(slicer);
     before = { ids: slicer.ids, classes: slicer.classes };
   }
   const worst = Math.max(...shares);
@@ -92,6 +84,8 @@ async function zoom(cube: BenchCube): Promise<CubeFigures> {
     worst, p95: percentile(shares, 0.95), median: median(shares),
     // Frame i is the change from frame i - 1 to i.
     worstFrame: shares.indexOf(worst) + 1,
+    flicker: flicker.flickering,
+    faceReturns: flicker.faceReturns,
     triangles: cube.leaves.reduce((s, l) => s + l.triangles, 0),
     bytes: cube.leaves.reduce((s, l) => s + l.bytes, 0),
     gzipBytes: cube.leaves.reduce((s, l) => s + statSync(path.join(cube.dir, `${l.file}.gz`)).size, 0),
@@ -133,9 +127,19 @@ function targets(f: CubeFigures, classic?: CubeFigures): string {
 
 const t0 = performance.now();
 const dir = mkdtempSync(path.join(tmpdir(), 'ssc-bench-'));
-const head = ['dataset', 'cube', 'z range', 'worst', 'p95', 'median', 'worst/median', 'worst frame', 'ms/frame', 'triangles', 'MB', 'MB gzip', 'targets'];
+const head = ['dataset', 'cube', 'z range', 'worst', 'p95', 'median', 'worst/median', 'worst frame', 'flicker px', 'face back px', 'ms/frame', 'triangles', 'MB', 'MB gzip', 'targets'];
 const rows: string[][] = [head];
 const transitionRows: string[][] = [['dataset', 'cube', 'events', 'median S(end)/S(start)', 'p10', 'frames of an x2 step at the median']];
+const horizontalRows: string[][] = [['dataset', 'cube', 'class-changing horizontal triangles', ...CHANGE_KINDS, ...CHANGE_KINDS.map((k, i) => (i === 0 ? `their area: ${k}` : k))]];
+const lengthsRow = (d: Dataset, cube: string, ts: Transition[], info: ReturnType<typeof scaleInfoOf>): string[] => {
+  const t = transitionLengths(scaleRatios(ts, info));
+  return [d.name, cube, String(t.events), t.median.toFixed(5), t.p10.toFixed(5), t.framesAtMedian.toPrecision(3)];
+};
+/** The horizontal class changes of surfaces the build makes from `tgap`. */
+const horizontalRow = (d: Dataset, cube: string, tgap: Tgap, built: ReturnType<typeof buildSurfaces>): string[] => {
+  const h = horizontalChanges(tgap, built.surfaces, built.transitions);
+  return [d.name, cube, String(h.total), ...CHANGE_KINDS.map((k) => String(h.byKind[k])), ...CHANGE_KINDS.map((k) => h.areaByKind[k].toExponential(2))];
+};
 try {
   for (const d of sets) {
     // The events come from the tGAP the build makes from the same source.
@@ -143,15 +147,15 @@ try {
     const g = runSsc(['generalize', d.file, '--style', d.style, '--out', tgapFile, '--quiet']);
     if (g.code !== 0) throw new Error(`ssc generalize ${d.name} failed (exit ${g.code}): ${g.stderr}`);
     const tgap = await readTgap(tgapFile);
-    const t = transitionLengths(scaleRatios(classicTransitions(tgap.events), scaleInfoOf(tgap)));
-    transitionRows.push([d.name, 'classic', String(t.events), t.median.toFixed(5), t.p10.toFixed(5), t.framesAtMedian.toPrecision(3)]);
+    transitionRows.push(lengthsRow(d, 'classic', classicTransitions(tgap.events), scaleInfoOf(tgap)));
+    horizontalRows.push(horizontalRow(d, 'classic', tgap, buildSurfaces(tgap, { smooth: false })));
 
     const classicDir = path.join(dir, `${d.name}-classic`);
     const classicCube = buildWith(d, classicDir, '--classic', 'classic') ?? buildBenchCube(d, classicDir, { variant: 'classic', precompress: true });
     const classic = await zoom(classicCube);
     const row = (cube: string, f: CubeFigures, vs?: CubeFigures): string[] => [
       d.name, cube, `${f.zFirst.toFixed(0)}..${f.zLast.toFixed(0)}`, pct(f.worst), pct(f.p95), pct(f.median), ratio(f.worst / f.median), String(f.worstFrame),
-      f.msPerFrame.toFixed(0), String(f.triangles), mb(f.bytes), mb(f.gzipBytes), targets(f, vs),
+      String(f.flicker), String(f.faceReturns), f.msPerFrame.toFixed(0), String(f.triangles), mb(f.bytes), mb(f.gzipBytes), targets(f, vs),
     ];
     rows.push(row('classic', classic));
     rmSync(classicCube.dir, { recursive: true, force: true });
@@ -161,10 +165,13 @@ try {
       const why = 'not available: ssc build has no --smooth';
       rows.push([d.name, 'smooth', ...head.slice(2, -1).map(() => '-'), why]);
       transitionRows.push([d.name, 'smooth', '-', '-', '-', why]);
+      horizontalRows.push([d.name, 'smooth', ...horizontalRows[0]!.slice(2).map(() => '-')]);
     } else {
       rows.push(row('smooth', await zoom(smoothCube), classic));
-      // The smooth cube's event z ranges are the smooth build's to state; transitionLengths takes them.
-      transitionRows.push([d.name, 'smooth', '-', '-', '-', 'not measured yet: needs the smooth build\'s event z ranges']);
+      // The smooth build's merge transitions, from the same tGAP as the cube.
+      const built = buildSurfaces(tgap, { smooth: true });
+      transitionRows.push(lengthsRow(d, 'smooth', smoothTransitions(tgap.events, built.transitions), scaleInfoOf(tgap)));
+      horizontalRows.push(horizontalRow(d, 'smooth', tgap, built));
       rmSync(smoothCube.dir, { recursive: true, force: true });
     }
   }
@@ -175,6 +182,9 @@ console.log(`bench:smoothness, ${FRAMES} frames of a geometric zoom from the bas
 console.log('share of the pixels with a face in both frames whose class changes from the frame before; MB: chunk files, and their .gz copies');
 console.log(`targets (issue 11): smooth worst <= ${WORST_VS_CLASSIC}x classic worst; worst/median <= ${WORST_OVER_MEDIAN}; smooth bytes and triangles <= ${COST_VS_CLASSIC}x classic`);
 printTable(rows);
-console.log('\ntransition lengths: S(end)/S(start) per merge or split; a classic event lasts from phase 0 to the last removal phase of its step');
+console.log('flicker px: pixels that show a class, then another, then the first again, each time 1 px or more from a face boundary (target 0; the tGAP has some of its own); face back px: the same for a face, which only the cube can cause');
+console.log('\ntransition lengths: S(end)/S(start) per merge or split; a classic event lasts from phase 0 to the last removal phase of its step, a smooth tilted merge from its transition\'s start to the merge');
 printTable(transitionRows);
+console.log('\nno sudden changes: horizontal triangles above the floor whose upper and lower faces differ in class (target 0), by the kind of event (mergeFlat: flat triangles inside tilted merges); area in ground units squared');
+printTable(horizontalRows);
 console.log(`\n${((performance.now() - t0) / 1000).toFixed(0)} s in all`);

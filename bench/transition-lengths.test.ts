@@ -2,7 +2,7 @@ import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import type { ScaleInfo } from '../format/scale.js';
 import { EventKind } from '../format/tgap-model.js';
-import { classicTransitions, scaleRatios, transitionLengths } from './transition-lengths.js';
+import { classicTransitions, scaleRatios, smoothTransitions, transitionLengths } from './transition-lengths.js';
 
 // S(z) = 1000 sqrt(100 / alive(z)), alive linear between the knots: S(0) = 1000, S(1) = 2000,
 // S(2) = 5000; alive(0.5) = 62.5.
@@ -45,4 +45,28 @@ test('transitionLengths: median, nearest-rank 10th percentile, frames of an x2 s
   const none = transitionLengths([]);
   assert.equal(none.events, 0);
   assert.ok(Number.isNaN(none.median) && Number.isNaN(none.framesAtMedian));
+});
+
+test('a smooth cube\'s tilted merge lasts from its start to the merge; flat merges and splits as in the classic cube', () => {
+  const events = [
+    { kind: EventKind.Merge, step: 2, loser: 5 },
+    { kind: EventKind.Split, step: 3, loser: 6 },
+    { kind: EventKind.Merge, step: 4, loser: 7 },
+    { kind: EventKind.Reemit, step: 4, loser: 8 },
+  ];
+  const merges = [
+    { step: 2, loser: 5, into: 1, zStart: 0.25, zMerge: 1 + 1 / 9, tilted: true, first: 0, end: 2 },
+    { step: 4, loser: 7, into: 1, zStart: 3 + 1 / 9, zMerge: 3 + 1 / 9, tilted: false, first: 2, end: 4 },
+  ];
+  const ts = smoothTransitions(events, merges);
+  assert.deepEqual(ts[0], { zStart: 0.25, zEnd: 1 + 1 / 9 });
+  // z(k, phase) = k - 1 + (phase + 1) / 9: phases 0 and 6 of steps 3 and 4.
+  const classic = [[2 + 1 / 9, 2 + 7 / 9], [3 + 1 / 9, 3 + 7 / 9]];
+  assert.equal(ts.length, 3);
+  ts.slice(1).forEach((t, i) => assert.ok(Math.abs(t.zStart - classic[i]![0]!) < 1e-12 && Math.abs(t.zEnd - classic[i]![1]!) < 1e-12, `event ${i + 1}: ${t.zStart}..${t.zEnd}`));
+  // With S(z) of the test's scale table, the tilted merge 0.25 -> 10/9 spans more scale than a classic step 2 event.
+  const [smoothRatio] = scaleRatios([ts[0]], info);
+  const [classicRatio] = scaleRatios(classicTransitions([events[0]!]), info);
+  assert.ok(smoothRatio! > classicRatio!, `${smoothRatio} vs ${classicRatio}`);
+  assert.throws(() => smoothTransitions(events, [{ ...merges[0]!, step: 3 }]), /merge of face 5 is at step 2, its transition at step 3/);
 });

@@ -3,9 +3,10 @@
 // and ends, summarised as the median and 10th percentile, and as the number of frames of a
 // default zoom step that show the median event part-way. Any cube can report these from the z
 // range of its events: the classic cube's ranges come from classicTransitions, the smooth
-// cube's from wherever its build records them.
+// cube's from smoothTransitions with the merge transitions its build (buildSurfaces) returns.
 import { scaleAtZ, type ScaleInfo } from '../format/scale.js';
 import { EventKind, LAST_REMOVAL_PHASE, phaseZ, type TgapEvent } from '../format/tgap-model.js';
+import type { MergeTransition } from '../preprocess/ssc/surfaces.js';
 import { median, percentile } from './stats.js';
 
 /** A default zoom step: x2 in scale over 10 frames (issue 11). */
@@ -27,6 +28,20 @@ export function classicTransitions(events: readonly Pick<TgapEvent, 'kind' | 'st
   return events
     .filter((e) => e.kind === EventKind.Merge || e.kind === EventKind.Split)
     .map((e) => ({ zStart: phaseZ(e.step, 0), zEnd: phaseZ(e.step, LAST_REMOVAL_PHASE) }));
+}
+
+/**
+ * The smooth cube's events: a tilted merge lasts its transition, from zStart to the merge; a
+ * merge drawn flat, and a split (still horizontal), last as in the classic cube.
+ */
+export function smoothTransitions(events: readonly Pick<TgapEvent, 'kind' | 'step' | 'loser'>[], merges: readonly MergeTransition[]): Transition[] {
+  const tilted = new Map<number, MergeTransition>();
+  for (const m of merges) if (m.tilted) tilted.set(m.loser, m);
+  return events.flatMap((e) => {
+    const m = e.kind === EventKind.Merge ? tilted.get(e.loser) : undefined;
+    if (m && m.step !== e.step) throw new Error(`the merge of face ${e.loser} is at step ${e.step}, its transition at step ${m.step}`);
+    return m ? [{ zStart: m.zStart, zEnd: m.zMerge }] : classicTransitions([e]);
+  });
 }
 
 /** S(end)/S(start) of each transition, with the scales the map gives those z. */

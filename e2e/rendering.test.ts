@@ -11,7 +11,7 @@ import { fitBbox, pixelToGround, viewBbox, type Bbox } from '../client/src/geome
 import { openMap, type MapPage, type OpenOptions } from './helpers/browser.js';
 import { compareIds, cpuSlice, otterlo400, type BuiltCube, type CubeContents } from './helpers/cube.js';
 import { checkAndClose, setUpTestBed, tearDownTestBed } from './helpers/test-bed.js';
-import { hexColour, pixel, readIds, screenshot, waitIdle, type PageIds, type Rgba } from './helpers/map-page.js';
+import { hexColour, loseAndRestoreContext, pixel, readIds, screenshot, waitIdle, type PageIds, type Rgba } from './helpers/map-page.js';
 import type { TestServer } from './helpers/test-server.js';
 
 const W = 640, H = 480;
@@ -266,20 +266,9 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
     assert.equal(await waitIdle(p.page), true);
     const before = await screenshot(p.page);
     const idsBefore = await readIds(p.page);
-    await p.page.evaluate(async () => {
-      const ext = (map.getCanvas().getContext('webgl2') as { getExtension(n: string): { loseContext(): void; restoreContext(): void } }).getExtension('WEBGL_lose_context');
-      const lost = map.once('contextlost');
-      ext.loseContext();
-      await lost;
-      (globalThis as unknown as { restore: () => void }).restore = () => ext.restoreContext();
+    await loseAndRestoreContext(p.page, async () => {
+      assert.equal(await p.page.evaluate(() => engine.readIds()), null, 'nothing to read while lost');
     });
-    assert.equal(await p.page.evaluate(() => engine.readIds()), null, 'nothing to read while lost');
-    await p.page.evaluate(async () => {
-      const restored = map.once('contextrestored');
-      (globalThis as unknown as { restore: () => void }).restore();
-      await restored;
-    });
-    assert.equal(await waitIdle(p.page), true);
     const idsAfter = await readIds(p.page);
     assert.deepEqual(idsAfter.upper, idsBefore.upper);
     assert.equal(changed(before, await screenshot(p.page)).size, 0, 'the same picture');

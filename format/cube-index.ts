@@ -5,7 +5,7 @@ import * as v from 'valibot';
 import { FormatError } from './format-error.js';
 import { PIXEL_SIZE_MM } from './pixel-size.js';
 import { describeIssues } from './schema-issues.js';
-import { styleClasses, StyleSchema, type StyleClass } from './style.js';
+import { drawnStyle, StyleSchema, type CubeStyle } from './style.js';
 
 export const INDEX_FORMAT = 'ssc-index';
 export const SUBINDEX_FORMAT = 'ssc-subindex';
@@ -110,12 +110,7 @@ const SubIndexSchema = v.object({
 export type CubeIndexJson = v.InferInput<typeof IndexSchema>;
 export type CubeMetaJson = v.InferInput<typeof MetaSchema>;
 
-/** The style as the map draws it: background and the classes in order. */
-export interface CubeStyle {
-  name: string;
-  background: string;
-  classes: StyleClass[];
-}
+export type { CubeStyle };
 
 export type CubeMeta = Omit<v.InferOutput<typeof MetaSchema>, 'style'> & { style: CubeStyle };
 
@@ -156,9 +151,8 @@ export function encodeSubIndex(node: InnerNode): string {
 /** A parsed index.json. */
 export function parseIndex(json: unknown, file = 'index.json'): CubeIndex {
   const out = check(IndexSchema, json, file);
-  const style = out.meta.style;
   return {
-    meta: { ...out.meta, style: { name: style.name, background: style.background.toLowerCase(), classes: styleClasses(style) } },
+    meta: { ...out.meta, style: drawnStyle(out.meta.style) },
     root: out.root,
   };
 }

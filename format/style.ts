@@ -63,7 +63,22 @@ export const StyleSchema = v.object({
   compatibility: v.optional(v.record(v.string(), v.record(v.string(), unit())), {}),
 });
 
+/**
+ * A change to one class at run time (the map's setClassStyle): what the map draws and names,
+ * not what the build uses (weight, linear). Strict: a misspelt key is an error, not ignored.
+ * `pattern: null` takes the class's pattern away.
+ */
+export const ClassStyleSchema = v.strictObject(
+  {
+    label: v.optional(str()),
+    color: v.optional(hex()),
+    pattern: v.optional(v.nullable(PatternSchema)),
+  },
+  'must be an object of label, color and pattern',
+);
+
 export type StyleJson = v.InferInput<typeof StyleSchema>;
+export type ClassStyleJson = v.InferInput<typeof ClassStyleSchema>;
 export type ParsedStyleJson = v.InferOutput<typeof StyleSchema>;
 export type PatternJson = v.InferOutput<typeof PatternSchema>;
 
@@ -76,6 +91,18 @@ export interface StyleClass {
   weight: number;
   linear: boolean;
   pattern?: PatternJson;
+}
+
+/** The style as the map draws it: background and the classes in order. */
+export interface CubeStyle {
+  name: string;
+  background: string;
+  classes: StyleClass[];
+}
+
+/** What the map draws of a parsed style: its name, background and classes (lower-case colours). */
+export function drawnStyle(style: ParsedStyleJson): CubeStyle {
+  return { name: style.name, background: style.background.toLowerCase(), classes: styleClasses(style) };
 }
 
 /** The classes of a parsed style in order, labels defaulting to the key and colours lower case. */

@@ -2,25 +2,17 @@
 // phones and screen readers: a viewport meta tag (else a phone lays out 980 px and the map's
 // canvas is several times the screen) and the map inside a <main> landmark.
 import assert from 'node:assert/strict';
-import { readdirSync, readFileSync } from 'node:fs';
+import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { describe, test } from 'node:test';
-import { htmlCodeBlocks } from './html-code-blocks.js';
+import { docsPageTemplates, htmlCodeBlocks } from './html-code-blocks.js';
 import { repoRoot } from './paths.js';
 
 const VIEWPORT = '<meta name="viewport" content="width=device-width, initial-scale=1">';
 
-/** Every whole page (a block with <html>) in docs/*.md and the demo page, by where it is. */
+/** The docs' pages and the demo page, by where they are. */
 function templates(): [string, string][] {
-  const docs = path.join(repoRoot, 'docs');
-  const pages: [string, string][] = [];
-  for (const name of readdirSync(docs).filter((n) => n.endsWith('.md')).sort()) {
-    htmlCodeBlocks(readFileSync(path.join(docs, name), 'utf8')).forEach((block, i) => {
-      if (/<html\b/i.test(block)) pages.push([`docs/${name}, HTML block ${i + 1}`, block]);
-    });
-  }
-  pages.push(['client/demo.html', readFileSync(path.join(repoRoot, 'client/demo.html'), 'utf8')]);
-  return pages;
+  return [...docsPageTemplates(), ['client/demo.html', readFileSync(path.join(repoRoot, 'client/demo.html'), 'utf8')]];
 }
 
 describe('docs page templates', () => {

@@ -2,7 +2,8 @@
 // Colour pass: from the ID buffer to colours. Per pixel the upper face's class colour (and its
 // pattern within the pattern's z range); near-intersection blending toward the face below when
 // the surface is less than uBlendDistance under the slice; face boundaries where the face id
-// changes between neighbouring pixels.
+// changes between neighbouring pixels; last the paint of faces whose feature state has hover or
+// highlight, on their own pixels only (a fill, and an outline just inside the face's edge).
 precision highp float;
 precision highp int;
 precision highp usampler2D;
@@ -20,8 +21,32 @@ uniform vec4 uBoundaryColour; // rgb, alpha = opacity
 uniform float uPatternCell;   // pattern period, device pixels
 uniform float uPatternLine;   // pattern line width / dot radius, device pixels
 uniform vec2 uPatternShift;   // anchors patterns to the ground, device pixels
+uniform usampler2D uFaceState; // R8UI, one texel per face id (rows of textureSize().x): bit i, state i
+// Per drawn state (0 hover, 1 highlight, painted in that order):
+uniform vec4 uStateFill[2];    // rgb, alpha = opacity
+uniform vec4 uStateOutline[2]; // rgb, alpha = opacity
+uniform int uStateWidth[2];    // outline inside the face, device pixels; 0: none
 
 out vec4 oColour;
+
+uint stateBits(uint face) {
+  ivec2 size = textureSize(uFaceState, 0);
+  int f = int(face);
+  if (face == 0u || f >= size.x * size.y) return 0u;
+  return texelFetch(uFaceState, ivec2(f % size.x, f / size.x), 0).r;
+}
+
+// Whether a pixel within `width` of p (on screen) shows another face than `face`.
+bool nearOtherFace(ivec2 p, ivec2 size, uint face, int width) {
+  for (int dy = -width; dy <= width; dy++) {
+    for (int dx = -width; dx <= width; dx++) {
+      ivec2 q = p + ivec2(dx, dy);
+      if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
+      if (texelFetch(uIds, q, 0).x != face) return true;
+    }
+  }
+  return false;
+}
 
 float patternMask(int kind) {
   vec2 q = gl_FragCoord.xy + uPatternShift;
@@ -79,6 +104,13 @@ void main() {
       if (texelFetch(uIds, a, 0).x != ids.x || texelFetch(uIds, b, 0).x != ids.x) edge = true;
     }
     if (edge) colour = mix(colour, uBoundaryColour.rgb, uBoundaryColour.a);
+  }
+  uint bits = stateBits(ids.x);
+  for (int s = 0; s < 2; s++) {
+    if ((bits & (1u << uint(s))) == 0u) continue;
+    colour = mix(colour, uStateFill[s].rgb, uStateFill[s].a);
+    // The outline: pixels of the face within its width of another face (or of nothing).
+    if (uStateWidth[s] > 0 && nearOtherFace(p, size, ids.x, uStateWidth[s])) colour = mix(colour, uStateOutline[s].rgb, uStateOutline[s].a);
   }
   oColour = vec4(colour, 1.0);
 }

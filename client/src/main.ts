@@ -2,12 +2,13 @@
 // optional view, surface and tools from URL parameters:
 //   center=x,y  scale=n  bbox=x0,y0,x1,y1 (the cube's projected CRS)  z=steps  surface=kind:key=value,...  tool=lens|idw
 //   supersampling=n  boundaries=1  blending=off|moving|always  budget=bytes  ratio=dpr
-//   retries=n  backoff=ms  concurrency=n (chunk loading)
+//   retries=n  backoff=ms  concurrency=n (chunk loading)  legend=1 (the LegendControl)
 // Any scale may be shown (no limits) and no control covers the canvas. `window.map` (and
 // `window.engine`, the map's engine for chunk statuses, frame stats and the ID buffer;
 // `window.lens`, `window.idw`) are there for the console and the tests.
 import { engineOf } from './engine/engine-of.js';
 import { IdwControl } from './ui/idw-control.js';
+import { LegendControl } from './ui/legend-control.js';
 import { LensControl } from './ui/lens-control.js';
 import { VarioMap, type VarioMapOptions } from './vario-map.js';
 
@@ -55,6 +56,7 @@ const lens = new LensControl();
 const idw = new IdwControl();
 if (tool === 'lens') map.addControl(lens.enable());
 if (tool === 'idw') map.addControl(idw.enable());
+if (params.get('legend') === '1') map.addControl(new LegendControl(), 'top-right');
 if (tool !== 'idw') {
   map.on('click', (ev) => {
     const f = ev.feature;

@@ -1,9 +1,10 @@
 // The types of VarioMap's public API: its options, events and camera options.
 import type { SurfaceSpec } from '../../format/slicing-surface.js';
+import type { CubeStyle } from '../../format/style.js';
+import type { Bbox } from './geometry/view.js';
 import type { EngineEvents, EngineOptions } from './engine/map-engine.js';
 import type { LngLatLike } from './geo/lng-lat.js';
 import type { LngLatBoundsLike } from './geo/lng-lat-bounds.js';
-import type { Bbox } from './geometry/view.js';
 import type { MapPointerEvent } from './interaction/feature-events.js';
 import type { HandlerFlags } from './interaction/handlers.js';
 import type { InteractionSettings } from './interaction/interaction-context.js';
@@ -31,6 +32,10 @@ export interface VarioMapOptions extends Partial<HandlerFlags>, Omit<EngineOptio
   /** Smallest scale denominator (most detail) and largest; defaults: a quarter of the base scale, 4x the extent. */
   minScale?: number;
   maxScale?: number;
+  /** The ground box (x0, y0, x1, y1) the visible area stays inside: no pan or zoom out leaves it. */
+  maxBounds?: Bbox;
+  /** A map inside a page that scrolls: the wheel zooms only with Ctrl (or ⌘), one finger scrolls the page and two move the map. */
+  cooperativeGestures?: boolean;
   /** false turns every input handler off. */
   interactive?: boolean;
   /** Keeps the view in the URL's hash as MapLibre's `hash` option does (#zoom/lat/lng). */
@@ -82,6 +87,8 @@ export interface VarioMapEvents extends DataEvents {
   settings: VarioMapSettings;
   /** The slicing surface changed. */
   surface: SurfaceSpec;
+  /** The style drawn is known (after 'meta') or changed (setStyle, setClassStyle). */
+  style: CubeStyle;
   remove: Record<string, never>;
 }
 

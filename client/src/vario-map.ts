@@ -3,12 +3,14 @@
 // one owner of where it looks: the input handlers and these methods change it, and the engine
 // beneath (engine/: canvas, chunks, frame loop, picking; internal) reads it every frame.
 import type { CubeMeta } from '../../format/cube-index.js';
+import type { ClassStyleJson, CubeStyle, StyleJson } from '../../format/style.js';
 import { parseSurface, type SurfaceSpec } from '../../format/slicing-surface.js';
 import { MapView, type MoveEventType } from './camera/map-view.js';
+import { ScaleLimits } from './camera/scale-limits.js';
 import { StepZoom } from './camera/step-zoom.js';
 import { bindEngine } from './engine/engine-of.js';
 import { MapEngine } from './engine/map-engine.js';
-import type { Feature } from './engine/picking.js';
+import type { Feature, QueryOptions } from './engine/picking.js';
 import { Evented } from './events.js';
 import { CrsError, CrsTransform } from './geo/crs-transform.js';
 import { LngLat, type LngLatLike } from './geo/lng-lat.js';
@@ -18,7 +20,8 @@ import { FeatureEvents, type MapPointerEvent } from './interaction/feature-event
 import { Handlers, type HandlerName } from './interaction/handlers.js';
 import type { InteractionContext, InteractionSettings } from './interaction/interaction-context.js';
 import { Pointers } from './interaction/pointers.js';
-import type { BlendingOptions, BlendMode, BoundaryOptions } from './render/colour-options.js';
+import type { BlendingOptions, BlendMode, BoundaryOptions, DrawnState, StatePaint } from './render/colour-options.js';
+import type { FeatureRef, FeatureState } from './style/feature-state.js';
 import { lerpCamera, type Camera } from './geometry/camera.js';
 import { discreteLevels } from './geometry/discrete-scales.js';
 import { easeInOut } from './motion/easing.js';
@@ -30,7 +33,7 @@ import { AttributionControl } from './ui/attribution-control.js';
 import { MapDom, type Control, type ControlPosition } from './ui/map-dom.js';
 import { UrlHash } from './ui/url-hash.js';
 
-export type { Bbox, Feature, BlendingOptions, BlendMode, BoundaryOptions, SurfaceSpec, SourceErrorInfo, Camera, HandlerName, InteractionSettings, MapPointerEvent, Control, ControlPosition };
+export type { Bbox, Feature, QueryOptions, FeatureRef, FeatureState, DrawnState, StatePaint, ClassStyleJson, CubeStyle, StyleJson, BlendingOptions, BlendMode, BoundaryOptions, SurfaceSpec, SourceErrorInfo, Camera, HandlerName, InteractionSettings, MapPointerEvent, Control, ControlPosition };
 export type { LngLatLike, LngLatBoundsLike };
 export type { AnimationOptions, CameraOptions, FitBoundsOptions, FlyToOptions, MapMoveEvent, VarioMapEvents, VarioMapOptions, VarioMapSettings } from './map-options.js';
 
@@ -59,6 +62,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
   private readonly options: VarioMapOptions;
   private readonly motionQuery: MediaQueryList | null;
   private hash: UrlHash | null = null;
+  private readonly scaleLimits: ScaleLimits;
   /** Between longitude/latitude and the cube's CRS; the reason there is none; null before the cube is known. */
   private crs: CrsTransform | CrsError | null = null;
   private pending: PendingView[] = [];
@@ -80,6 +84,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
     this.view = new MapView({
       requestFrame: () => this.engine.requestFrame(),
       reduceMotion: () => this.reducedMotion(),
+      size: () => this.dom.cssSize(),
       emit: (type: MoveEventType, originalEvent) => this.fire(type, originalEvent ? { originalEvent } : {}),
     });
     this.view.place({}, options.sliceZ ?? null);
@@ -89,6 +94,8 @@ export class VarioMap extends Evented<VarioMapEvents> {
     else if (bounds) this.pending.push({ fit: () => this.geo().projectedBox(LngLatBounds.convert(bounds)), options: {} });
     const { center, centerProjected, zoom, scaleDenominator } = options;
     this.pending.push({ camera: { center, centerProjected, zoom, scaleDenominator } });
+    this.scaleLimits = new ScaleLimits(this.view, options.minScale, options.maxScale);
+    if (options.maxBounds) this.view.setLimits({ maxBounds: options.maxBounds });
     if (options.surface) this.view.setSurface(typeof options.surface === 'string' ? parseSurface(options.surface) : options.surface);
     this.engine = new MapEngine(this.dom.canvasContainer, this.view, options);
     bindEngine(this, this.engine);
@@ -112,7 +119,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
       size: () => this.dom.cssSize(),
       pixelSizeMm: () => this.view.pixelSizeMm,
     };
-    this.handlers = interactive ? new Handlers(ctx, { scrollZoom: flag('scrollZoom'), dragPan: flag('dragPan'), keyboard: flag('keyboard'), doubleClickZoom: flag('doubleClickZoom'), touchZoomRotate: flag('touchZoomRotate'), boxZoom: flag('boxZoom') }) : null;
+    this.handlers = interactive ? new Handlers(ctx, { scrollZoom: flag('scrollZoom'), dragPan: flag('dragPan'), keyboard: flag('keyboard'), doubleClickZoom: flag('doubleClickZoom'), touchZoomRotate: flag('touchZoomRotate'), boxZoom: flag('boxZoom') }, options.cooperativeGestures ?? false) : null;
     this.features = new FeatureEvents(cc, {
       listens: (type) => this.listens(type),
       fire: (type, ev) => this.fire(type, ev),
@@ -251,6 +258,41 @@ export class VarioMap extends Evented<VarioMapEvents> {
     return this.view.animate((t) => lerpCamera(from, to, t), { durationMs: o.duration ?? this.settings.panDurationMs, easing: o.easing ?? easeInOut });
   }
 
+  // ---- the limits ------------------------------------------------------------------------------
+
+  /**
+   * The ground box the visible area stays inside (null: none). The view moves within it at
+   * once; no pan, zoom or animation leaves it after.
+   */
+  setMaxBounds(bounds: Bbox | null): this {
+    this.view.setLimits({ maxBounds: bounds });
+    return this;
+  }
+
+  getMaxBounds(): Bbox | null {
+    return this.view.limits.maxBounds;
+  }
+
+  /** The smallest scale denominator (most detail); null: the default, a quarter of the base scale. The view zooms out to it at once if it must. */
+  setMinScale(scale: number | null): this {
+    this.scaleLimits.set('min', scale);
+    return this;
+  }
+
+  getMinScale(): number {
+    return this.view.limits.minScale;
+  }
+
+  /** The largest scale denominator; null: the default, 4x the scale that shows the whole extent. */
+  setMaxScale(scale: number | null): this {
+    this.scaleLimits.set('max', scale);
+    return this;
+  }
+
+  getMaxScale(): number {
+    return this.view.limits.maxScale;
+  }
+
   /** Stops a running animation where it is. */
   stop(): this {
     this.view.stop();
@@ -329,9 +371,62 @@ export class VarioMap extends Evented<VarioMapEvents> {
     return this.view.meta;
   }
 
-  /** The faces under a CSS px point of the map. */
-  queryFeatures(point: [number, number]): Promise<Feature[]> {
-    return this.engine.queryFeatures(point);
+  /** The faces under a CSS px point of the map (`{ outline: true }`: with the face's outline on screen). */
+  queryFeatures(point: [number, number], options?: QueryOptions): Promise<Feature[]> {
+    return this.engine.queryFeatures(point, options);
+  }
+
+  // ---- run-time style and feature state ----------------------------------------------------------
+
+  /** A copy of the style drawn: the cube's, with the changes made since (null until the cube is known). */
+  getStyle(): CubeStyle | null {
+    return this.engine.getStyle();
+  }
+
+  /**
+   * Draws the map in another style from the next frame, without fetching anything: checked with
+   * the cube's style schema, and it must give every class of the cube and no other. A style
+   * that fails throws an Error naming each problem, and the map stays as it was.
+   */
+  setStyle(style: StyleJson): this {
+    this.fire('style', this.engine.setStyle(style));
+    return this;
+  }
+
+  /** Changes one class's colour, label or pattern (`pattern: null` takes it away). */
+  setClassStyle(classKey: string, change: ClassStyleJson): this {
+    this.fire('style', this.engine.setClassStyle(classKey, change));
+    return this;
+  }
+
+  /**
+   * Merges `state` into the face's feature state (as MapLibre's). `highlight: true` and
+   * `hover: true` draw the face with that state's paint (the `statePaint` option), wherever and
+   * at whatever scale that face id is shown.
+   */
+  setFeatureState(feature: FeatureRef, state: FeatureState): this {
+    this.engine.setFeatureState(feature, state);
+    return this;
+  }
+
+  getFeatureState(feature: FeatureRef): FeatureState {
+    return this.engine.getFeatureState(feature);
+  }
+
+  /** Removes one key of the face's state, or all of it. */
+  removeFeatureState(feature: FeatureRef, key?: string): this {
+    this.engine.removeFeatureState(feature, key);
+    return this;
+  }
+
+  /** How faces with `highlight: true` (or `hover: true`) are drawn: fill colour and opacity, outline colour and width. */
+  setStatePaint(state: DrawnState, paint: Partial<StatePaint>): this {
+    this.engine.setStatePaint(state, paint);
+    return this;
+  }
+
+  getStatePaint(state: DrawnState): StatePaint {
+    return this.engine.getStatePaint(state);
   }
 
   /** The absolute URL of the cube's index.json (the `source` option resolved). */
@@ -474,8 +569,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
   private onMeta(meta: CubeMeta): void {
     const [w, h] = this.dom.cssSize();
     const extentScale = scaleAtResolution(Math.max((meta.extent[2] - meta.extent[0]) / w, (meta.extent[3] - meta.extent[1]) / h), meta.pixelSizeMm);
-    this.view.minScale = this.options.minScale ?? meta.baseScale / 4;
-    this.view.maxScale = this.options.maxScale ?? extentScale * 4;
+    this.scaleLimits.setDefaults(meta.baseScale / 4, extentScale * 4);
     this.levels = discreteLevels(meta.baseScale, extentScale, this.options.comparisonFactor ?? 2);
     if (this.settings.comparisonMode) this.view.setLevels(this.levels);
     try {
@@ -487,6 +581,8 @@ export class VarioMap extends Evented<VarioMapEvents> {
     this.placePending();
     this.view.place({ scale: this.view.clamp(this.view.camera.scale) });
     this.fire('meta', meta);
+    const style = this.getStyle();
+    if (style) this.fire('style', style);
     if (this.hash && !(this.crs instanceof CrsTransform)) {
       // The hash is in longitude/latitude, as MapLibre's.
       this.hash.remove();

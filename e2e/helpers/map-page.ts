@@ -101,6 +101,27 @@ export async function screenshot(page: Page): Promise<Rgba> {
   return { width: png.width, height: png.height, data: new Uint8Array(png.data.buffer, png.data.byteOffset, png.data.byteLength) };
 }
 
+/**
+ * Loses the map's WebGL context (WEBGL_lose_context), calls `whileLost`, restores the context
+ * and waits until the map is idle again.
+ */
+export async function loseAndRestoreContext(page: Page, whileLost: () => Promise<void> = async () => {}): Promise<void> {
+  await page.evaluate(async () => {
+    const ext = (map.getCanvas().getContext('webgl2') as { getExtension(n: string): { loseContext(): void; restoreContext(): void } }).getExtension('WEBGL_lose_context');
+    const lost = map.once('contextlost');
+    ext.loseContext();
+    await lost;
+    (globalThis as unknown as { restore: () => void }).restore = () => ext.restoreContext();
+  });
+  await whileLost();
+  await page.evaluate(async () => {
+    const restored = map.once('contextrestored');
+    (globalThis as unknown as { restore: () => void }).restore();
+    await restored;
+  });
+  if (!(await waitIdle(page))) throw new Error('the map is not complete after its context was restored');
+}
+
 export function pixel(img: Rgba, i: number, j: number): [number, number, number] {
   const o = 4 * (j * img.width + i);
   return [img.data[o]!, img.data[o + 1]!, img.data[o + 2]!];

@@ -53,10 +53,10 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const { timings, lap } = lapTimer();
   const { surfaces, stats } = buildSurfaces(t, { smooth: opts.smooth ?? false });
   lap('surfaces');
-  log(`surfaces: ${surfaces.count} triangles (floor ${stats.floor}, merges ${stats.merge}, splits ${stats.split}, simplification ${stats.simplify}, redrawn ${stats.reemit})${opts.smooth ? `, ${stats.tiltedMerges} merges tilted` : ''}`);
+  log(`surfaces: ${surfaces.count} triangles (floor ${stats.floor}, merges ${stats.merge}, splits ${stats.split}, simplification ${stats.simplify}, redrawn ${stats.reemit})${opts.smooth ? `, ${stats.tiltedMerges} merges and ${stats.tiltedRemovals} removals tilted` : ''}`);
   const info = scaleInfoOf(t);
   const plan = planChunks({
-    surfaces, xs: t.xs, ys: t.ys, extent: t.meta.extent,
+    surfaces, xs: surfaces.xs, ys: surfaces.ys, extent: t.meta.extent,
     scaleAt: (z) => scaleAtZ(info, z),
     viewPerScale: [(1280 * PIXEL_SIZE_MM) / 1000, (720 * PIXEL_SIZE_MM) / 1000],
     targetBytes: opts.chunkBytes ?? 256 * 1024,
@@ -69,7 +69,7 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   for (let c = 0; c + 1 < plan.start.length; c++) {
     const tris = plan.order.subarray(plan.start[c], plan.start[c + 1]);
     if (tris.length === 0) continue;
-    const ch = assembleChunk(surfaces, tris, t.xs, t.ys, classOf);
+    const ch = assembleChunk(surfaces, tris, surfaces.xs, surfaces.ys, classOf);
     const { name, sha256 } = hashName('c', ch.bytes, 'bin');
     files.set(name, ch.bytes);
     leaves.push({ bbox: ch.bbox, file: name, bytes: ch.bytes.length, triangles: ch.triangles, sha256 });

@@ -29,21 +29,49 @@ test('vertices no source reaches get the largest distance', () => {
   assert.deepEqual([6, 7, 8].map((v) => d.get(v)), [4, 4, 4]);
 });
 
-test('z rises with the distance from just above zStart to zMerge', () => {
-  // zStart 0, zMerge 16: the ramp starts a 16th of the way up, at 1, and climbs 15 over d = 4.
-  const z = smoothMergeZ(TRIS, xs, ys, [1, 2], 0, 16);
-  assert.deepEqual([0, 1, 2, 3, 4, 5].map((v) => z?.get(v)), [1 + 7.5, 1, 1, 1 + 3.75, 1 + 11.25, 16]);
+const at = (vs: number[], z: number): Map<number, number> => new Map(vs.map((v) => [v, z]));
+const zsOf = (z: Map<number, number> | null): number[] => [0, 1, 2, 3, 4, 5].map((v) => z?.get(v) ?? NaN);
+
+test('z rises with the distance from the shared boundary to zMerge', () => {
+  // Sources 1 and 2 start at zFoot 1; zMerge 16: 15 over the farthest distance, d5 = 4.
+  const z = smoothMergeZ(TRIS, xs, ys, at([1, 2], 0), { zFoot: 1, zMerge: 16 });
+  assert.deepEqual(zsOf(z), [1 + 7.5, 1, 1, 1 + 3.75, 1 + 11.25, 16]);
+});
+
+test('a source starts when the winner comes to lie beside it', () => {
+  // Source 1 from 1, source 2 only from 5. From 1 alone (d 0 1 2 2 4 5 for vertices 1 2 0 3 4 5)
+  // at 3 per unit the front reaches 5 at 16; from 2 it could not before 5 + 3 * 4 = 17.
+  // Vertex 2 is reached from 1 at 4, before its own start; 3 at 1 + 3 * 2 = 7, 4 at 13.
+  const z = smoothMergeZ(TRIS, xs, ys, new Map([[1, 0], [2, 5]]), { zFoot: 1, zMerge: 16 });
+  const want = [7, 1, 4, 7, 13, 16];
+  want.forEach((w, v) => assert.ok(Math.abs(zsOf(z)[v]! - w) < 1e-4, `vertex ${v}: ${zsOf(z)[v]}, expected ${w}`));
+});
+
+test('the front waits above older surfaces, slows to arrive by zMerge, and stays attached', () => {
+  // Vertex 3 may not go below 12: the front waits there, and 4 and 5 beyond it come later.
+  const lowest = new Map([[3, 12]]);
+  const z = smoothMergeZ(TRIS, xs, ys, at([1, 2], 0), { zFoot: 1, zMerge: 16, lowest });
+  const zs = zsOf(z);
+  assert.ok(zs[3]! >= 12, `vertex 3 at ${zs[3]}`);
+  assert.ok(Math.max(...zs) <= 16 && Math.max(...zs) > 16 - 1e-4, `last vertex at ${Math.max(...zs)}, not zMerge`);
+  // Attached: every vertex but the sources has a neighbour the front reached no later.
+  const nbrs: Record<number, number[]> = { 0: [1, 2, 3, 4, 5], 3: [0, 2, 4], 4: [0, 3, 5], 5: [0, 4] };
+  for (const [v, ns] of Object.entries(nbrs)) assert.ok(ns.some((n) => zs[n]! <= zs[Number(v)]!), `vertex ${v} is a local minimum`);
+  // To arrive by zMerge all the same, the front moves faster where the wait does not hold it.
+  const free = zsOf(smoothMergeZ(TRIS, xs, ys, at([1, 2], 0), { zFoot: 1, zMerge: 16 }));
+  assert.ok(zs[0]! < free[0]!, `vertex 0 at ${zs[0]}, ${free[0]} without the wait`);
 });
 
 test('a face all on the shared boundary is swept from one end of its longest path', () => {
   // From vertex 0 (the first) the farthest is 4 (sqrt 10, straight). From 4: d5 = 1, d3 = 2,
   // d2 = 3, d0 = sqrt 10 and d1 = 4, the largest: z = 1 + 15 d / 4.
-  const z = smoothMergeZ(TRIS, xs, ys, [0, 1, 2, 3, 4, 5], 0, 16);
+  const z = smoothMergeZ(TRIS, xs, ys, at([0, 1, 2, 3, 4, 5], 0), { zFoot: 1, zMerge: 16 });
   const want = [1 + 3.75 * Math.sqrt(10), 16, 12.25, 8.5, 1, 4.75];
   want.forEach((w, v) => assert.ok(Math.abs((z?.get(v) ?? NaN) - w) < 1e-12, `vertex ${v}: ${z?.get(v)}, expected ${w}`));
 });
 
 test('without a shared boundary or room in z it does not tilt', () => {
-  assert.equal(smoothMergeZ(TRIS, xs, ys, [], 0, 16), null);
-  assert.equal(smoothMergeZ(TRIS, xs, ys, [1, 2], 16, 16), null);
+  assert.equal(smoothMergeZ(TRIS, xs, ys, new Map(), { zFoot: 0, zMerge: 16 }), null);
+  assert.equal(smoothMergeZ(TRIS, xs, ys, at([1, 2], 0), { zFoot: 16, zMerge: 16 }), null);
+  assert.equal(smoothMergeZ(TRIS, xs, ys, at([1, 2], 16), { zFoot: 0, zMerge: 16 }), null);
 });

@@ -1,7 +1,60 @@
 // Smooth merge (docs/FORMAT.md, "Smooth cube"): the z of each vertex of the loser's
-// triangulated area rises with its distance inside the loser from the boundary it shares with
-// the winner, so the winner takes the loser's area from that boundary outwards.
+// triangulated area is the time at which a front, starting on the boundary the loser shares
+// with the winner and advancing along the triangulation's edges at an even speed, reaches it;
+// where an older surface still lies in the loser's area the front waits above it. The winner
+// thus takes the loser's area from that boundary outwards, and what it takes stays attached.
 import FlatQueue from 'flatqueue';
+
+/** The vertices of a triangulation and their neighbours along its edges. */
+class MeshGraph {
+  readonly nbrs = new Map<number, number[]>();
+
+  constructor(tris: ArrayLike<number>) {
+    const link = (a: number, b: number): void => {
+      let l = this.nbrs.get(a);
+      if (!l) this.nbrs.set(a, (l = []));
+      l.push(b);
+    };
+    for (let i = 0; i + 2 < tris.length; i += 3) {
+      for (let j = 0; j < 3; j++) {
+        const a = tris[i + j]!, b = tris[i + ((j + 1) % 3)]!;
+        link(a, b);
+        link(b, a);
+      }
+    }
+  }
+
+  /**
+   * Earliest arrival of a front leaving each source at its start and taking `perUnit` (z) per
+   * unit of edge length, held at each vertex until its `lowest` (Dijkstra: every step only adds).
+   * Vertices no source reaches are left out.
+   */
+  arrivals(xs: Float64Array, ys: Float64Array, sources: Iterable<[vertex: number, start: number]>, perUnit: number, lowest?: ReadonlyMap<number, number>): Map<number, number> {
+    const at = new Map<number, number>();
+    const queue = new FlatQueue<number>();
+    for (const [s, start] of sources) {
+      if (!this.nbrs.has(s)) continue;
+      const a = Math.max(start, lowest?.get(s) ?? -Infinity);
+      if (a < (at.get(s) ?? Infinity)) {
+        at.set(s, a);
+        queue.push(s, a);
+      }
+    }
+    while (queue.length > 0) {
+      const av = queue.peekValue() ?? 0;
+      const v = queue.pop() ?? -1;
+      if (av > (at.get(v) ?? Infinity)) continue; // a stale entry
+      for (const w of this.nbrs.get(v) ?? []) {
+        const aw = Math.max(av + perUnit * Math.hypot(xs[w]! - xs[v]!, ys[w]! - ys[v]!), lowest?.get(w) ?? -Infinity);
+        if (aw < (at.get(w) ?? Infinity)) {
+          at.set(w, aw);
+          queue.push(w, aw);
+        }
+      }
+    }
+    return at;
+  }
+}
 
 /**
  * Shortest distances along the triangles' edges (Euclidean edge lengths) from the source
@@ -11,50 +64,15 @@ import FlatQueue from 'flatqueue';
  * reaches get the largest distance found.
  */
 export function meshDistances(tris: ArrayLike<number>, xs: Float64Array, ys: Float64Array, sources: Iterable<number>): Map<number, number> {
-  const nbrs = new Map<number, number[]>();
-  const link = (a: number, b: number): void => {
-    let l = nbrs.get(a);
-    if (!l) nbrs.set(a, (l = []));
-    l.push(b);
-  };
-  for (let i = 0; i + 2 < tris.length; i += 3) {
-    for (let j = 0; j < 3; j++) {
-      const a = tris[i + j]!, b = tris[i + ((j + 1) % 3)]!;
-      link(a, b);
-      link(b, a);
-    }
-  }
-  const d = new Map<number, number>();
-  const queue = new FlatQueue<number>();
-  for (const s of sources) {
-    if (!nbrs.has(s) || d.has(s)) continue;
-    d.set(s, 0);
-    queue.push(s, 0);
-  }
-  while (queue.length > 0) {
-    const dv = queue.peekValue() ?? 0;
-    const v = queue.pop() ?? -1;
-    if (dv > (d.get(v) ?? Infinity)) continue; // a stale entry
-    for (const w of nbrs.get(v) ?? []) {
-      const dw = dv + Math.hypot(xs[w]! - xs[v]!, ys[w]! - ys[v]!);
-      if (dw < (d.get(w) ?? Infinity)) {
-        d.set(w, dw);
-        queue.push(w, dw);
-      }
-    }
-  }
-  let dMax = 0;
-  for (const x of d.values()) dMax = Math.max(dMax, x);
-  for (const v of nbrs.keys()) if (!d.has(v)) d.set(v, dMax);
+  const graph = new MeshGraph(tris);
+  const d = graph.arrivals(xs, ys, [...sources].map((s): [number, number] => [s, 0]), 1);
+  fillUnreached(graph, d, largest(d)[1]);
   return d;
 }
 
-/**
- * Where the ramp starts above zStart, as a share of the transition: the loser's latest surface
- * may lie at zStart itself, and a triangle with all three corners on the shared boundary would
- * tie with it in depth (16ths of a phase still differ in float32 up to about 2^16 steps).
- */
-const START_GAP = 1 / 16;
+function fillUnreached(graph: MeshGraph, at: Map<number, number>, value: number): void {
+  for (const v of graph.nbrs.keys()) if (!at.has(v)) at.set(v, value);
+}
 
 const largest = (d: Map<number, number>): [vertex: number, d: number] => {
   let best: [number, number] = [-1, 0];
@@ -62,28 +80,74 @@ const largest = (d: Map<number, number>): [vertex: number, d: number] => {
   return best;
 };
 
+/** Bisections of the front's pace when older surfaces hold it back (to a 2^-20 share of the slowest). */
+const SPEED_BISECTIONS = 20;
+
+export interface RampBounds {
+  /** No vertex below this: where the transition may start at the earliest. */
+  zFoot: number;
+  /** The merge's z: the transition is over here. */
+  zMerge: number;
+  /** Per vertex, the lowest z it may take: above the older surfaces in its triangles' area. */
+  lowest?: ReadonlyMap<number, number>;
+}
+
 /**
- * z of every vertex of a smooth merge: just above zStart on the shared boundary, rising with the
- * distance to zMerge at the farthest vertex. When every vertex lies on the shared boundary (an
- * enclave in the winner, or a sliver), the distance is taken from one end of the face's longest
+ * z of every vertex of a smooth merge: the arrival of a front leaving each vertex of the
+ * shared boundary (`shared`: vertex -> the z from which the winner lies beside it) no earlier
+ * than zFoot, advancing at one speed along the edges and waiting at a vertex until its
+ * `lowest`. The speed is the slowest at which the last vertex is reached by zMerge: without
+ * waits the farthest vertex gets zMerge exactly; with them, the front moves faster elsewhere. When every vertex lies on the shared boundary
+ * (an enclave in the winner, or a sliver), the front leaves from one end of the face's longest
  * path instead (two sweeps): the winner then sweeps across it from that vertex, still attached.
- * null when it cannot tilt: no room in z, or no shared boundary.
+ * Every vertex but a source has a neighbour the front reached earlier, so the winner's gain
+ * stays attached to the winner. null when it cannot tilt: no room in z, or no shared boundary.
  */
 export function smoothMergeZ(
-  tris: ArrayLike<number>, xs: Float64Array, ys: Float64Array, shared: Iterable<number>, zStart: number, zMerge: number,
+  tris: ArrayLike<number>, xs: Float64Array, ys: Float64Array, shared: ReadonlyMap<number, number>, b: RampBounds,
 ): Map<number, number> | null {
-  if (!(zStart < zMerge) || tris.length === 0) return null;
-  let d = meshDistances(tris, xs, ys, shared);
+  const { zFoot, zMerge } = b;
+  let lowest = b.lowest;
+  if (!(zFoot < zMerge) || tris.length === 0) return null;
+  const graph = new MeshGraph(tris);
+  let sources: [number, number][] = [...shared].filter(([v]) => graph.nbrs.has(v)).map(([v, z]) => [v, Math.max(z, zFoot)]);
+  if (sources.length === 0) return null;
+  let d = graph.arrivals(xs, ys, sources.map(([v]): [number, number] => [v, 0]), 1);
   let [, dMax] = largest(d);
   if (dMax === 0) {
-    if (![...shared].some((v) => d.has(v))) return null;
-    const [end] = largest(meshDistances(tris, xs, ys, [tris[0]!]));
-    if (end < 0) return null;
-    d = meshDistances(tris, xs, ys, [end]);
+    const [end] = largest(graph.arrivals(xs, ys, [[tris[0]!, 0]], 1));
+    d = graph.arrivals(xs, ys, [[end, 0]], 1);
     [, dMax] = largest(d);
+    if (dMax === 0) return null;
+    // Every vertex lies beside the winner, each from its own time: the front waits for it.
+    const waits = new Map(lowest);
+    for (const [v, z] of shared) waits.set(v, Math.max(waits.get(v) ?? -Infinity, z));
+    lowest = waits;
+    sources = [[end, zFoot]];
   }
-  const z = new Map<number, number>();
-  const z0 = zStart + (zMerge - zStart) * START_GAP;
-  for (const [v, dv] of d) z.set(v, dv < dMax ? z0 + ((zMerge - z0) * dv) / dMax : zMerge);
+  // From the earliest start across the farthest distance: without waits, and with every
+  // source starting together, the farthest vertex gets zMerge exactly.
+  let first = Infinity;
+  for (const [, z] of sources) first = Math.min(first, z);
+  if (!(first < zMerge)) return null;
+  const slowest = (zMerge - first) / dMax; // z per unit of distance
+  const reach = (perUnit: number): Map<number, number> => graph.arrivals(xs, ys, sources, perUnit, lowest);
+  // Rounding may carry the farthest vertex a hair past zMerge: not a wait.
+  const late = (at: Map<number, number>): boolean => largest(at)[1] > zMerge + 1e-9 * Math.max(1, zMerge);
+  let z = reach(slowest);
+  if (late(z)) {
+    // Waits made the front late: the slowest pace that still arrives everywhere by zMerge.
+    let lo = 0, hi = slowest;
+    for (let i = 0; i < SPEED_BISECTIONS; i++) {
+      const mid = (lo + hi) / 2;
+      if (late(reach(mid))) hi = mid;
+      else lo = mid;
+    }
+    z = reach(lo);
+    // Even standing still, a wait past zMerge or a source starting after it leaves no room.
+    if (late(z)) return null;
+  }
+  for (const [v, zv] of z) if (zv > zMerge) z.set(v, zMerge);
+  fillUnreached(graph, z, zMerge);
   return z;
 }

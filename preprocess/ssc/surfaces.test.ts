@@ -8,12 +8,12 @@
 //
 // Equal weights: L goes first (step 1), into W (a tie of shared lengths, 4 and 4, goes to the
 // lower id); then Z (16 against 24) into W (step 2).
-// Merge 1: L was made at the floor and W too: zStart = 0, zMerge = phaseZ(1, 0) = 1/9. The ramp
-// starts a 16th of the way up, at 1/144, on the shared side x = 4, and reaches 1/9 at x = 6
-// (distance 2 along L's edges): z = 1/144 + (1/9 - 1/144) (x - 4) / 2.
-// Merge 2: L's merge relabelled Z's west side (L|Z became W|Z) at 1/9, so zStart = 1/9,
-// zMerge = phaseZ(2, 0) = 10/9; the ramp starts at 1/9 + 1/16 = 25/144 at x = 6 and reaches
-// 10/9 at x = 10.
+// Merge 1: nothing lies in L's area above the floor and W has always been beside it, so the
+// ramp starts a gap (SURFACE_GAP) above the floor on the shared side x = 4 and reaches
+// zMerge = phaseZ(1, 0) = 1/9 at x = 6 (distance 2 along L's edges).
+// Merge 2: W came to lie beside Z (L|Z became W|Z) at merge 1, so the ramp starts a gap above
+// 1/9 at x = 6 and reaches zMerge = phaseZ(2, 0) = 10/9 at x = 10.
+// Both are less than a zoom level (MAX_TRANSITION_RATIO) long, so that cap does not bind.
 import test from 'node:test';
 import assert from 'node:assert/strict';
 import { decodeChunk } from '../../format/chunk.js';
@@ -22,7 +22,7 @@ import { fixtureTgap, rect, type FixtureFace } from '../../testing/planar-fixtur
 import { fitView, type View } from '../map/rasterize.js';
 import { assembleChunk } from './assemble-chunk.js';
 import { CpuSlicer, sliceChunk } from './cpu-slicer.js';
-import { buildSurfaces, type Surfaces } from './surfaces.js';
+import { buildSurfaces, SURFACE_GAP, type Surfaces } from './surfaces.js';
 
 const W = 1, L = 2, Z = 3;
 const THREE: FixtureFace[] = [
@@ -52,11 +52,14 @@ test('a smooth merge tilts the loser from the shared boundary (hand-worked z and
   const t = fixtureTgap(THREE, ['a']);
   assert.deepEqual(t.events.map((e) => [e.kind, e.step, e.loser, e.into]), [[EventKind.Merge, 1, L, W], [EventKind.Merge, 2, Z, W]]);
   const { surfaces: s, transitions } = buildSurfaces(t, { smooth: true });
-  assert.deepEqual(transitions.map((m) => [m.loser, m.into, m.zStart, m.zMerge]), [[L, W, 0, phaseZ(1, 0)], [Z, W, phaseZ(1, 0), phaseZ(2, 0)]]);
+  // L's ramp starts a gap above the floor at x = 4; Z's a gap above merge 1 at x = 6, where W
+  // came to lie beside Z when it took L (the side of Z's boundary with W changed then).
   const ramps: Record<number, { x0: number; z0: number; x1: number; z1: number }> = {
-    [L]: { x0: 4, z0: 1 / 144, x1: 6, z1: 1 / 9 },
-    [Z]: { x0: 6, z0: 25 / 144, x1: 10, z1: 10 / 9 },
+    [L]: { x0: 4, z0: SURFACE_GAP, x1: 6, z1: phaseZ(1, 0) },
+    [Z]: { x0: 6, z0: phaseZ(1, 0) + SURFACE_GAP, x1: 10, z1: phaseZ(2, 0) },
   };
+  // Each transition starts half a gap under its ramp's foot: the loser is whole there.
+  assert.deepEqual(transitions.map((m) => [m.loser, m.into, m.zStart, m.zMerge]), [L, Z].map((f) => [f, W, ramps[f]!.z0 - SURFACE_GAP / 2, ramps[f]!.z1]));
   let tilted = 0;
   for (let i = 0; i < s.count; i++) {
     const r = ramps[s.lower[i]!];
@@ -81,7 +84,7 @@ test('a smooth merge tilts the loser from the shared boundary (hand-worked z and
   // A chunk of merge 2's triangles alone: its box starts at their lowest vertex, the ramp's foot.
   const merge2 = Uint32Array.from({ length: s.count }, (_, i) => i).filter((i) => s.lower[i] === Z && s.upper[i] === W);
   const box = assembleChunk(s, merge2, t.xs, t.ys, () => 0).bbox;
-  assert.equal(box[2], 25 / 144);
+  assert.equal(box[2], ramps[Z]!.z0);
   assert.equal(box[5], s.zEnd[merge2[0]!]);
 
   // 100 x 40 pixels of 0.1: column c has its centre at x = 0.05 + 0.1 c.
@@ -89,10 +92,10 @@ test('a smooth merge tilts the loser from the shared boundary (hand-worked z and
   const slice = slicer(t, s, view);
   const faceAt = (row: number[], x: number): number => row[Math.round((x - 0.05) / 0.1)]!;
   // A quarter of the way up merge 1's ramp: W has taken L up to x = 4 + 2/4 = 4.5.
-  const row1 = middleRow(slice(1 / 144 + (1 / 9 - 1 / 144) / 4), view);
+  const row1 = middleRow(slice(ramps[L]!.z0 + (ramps[L]!.z1 - ramps[L]!.z0) / 4), view);
   for (const [x, f] of [[0.05, W], [3.95, W], [4.45, W], [4.55, L], [5.95, L], [6.05, Z], [9.95, Z]] as const) assert.equal(faceAt(row1, x), f, `x = ${x}`);
   // Half way up merge 2's ramp: W has taken Z up to x = 6 + 4/2 = 8.
-  const row2 = middleRow(slice(25 / 144 + (10 / 9 - 25 / 144) / 2), view);
+  const row2 = middleRow(slice(ramps[Z]!.z0 + (ramps[Z]!.z1 - ramps[Z]!.z0) / 2), view);
   for (const [x, f] of [[5.05, W], [7.95, W], [8.05, Z], [9.95, Z]] as const) assert.equal(faceAt(row2, x), f, `x = ${x}`);
 });
 

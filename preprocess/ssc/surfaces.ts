@@ -3,17 +3,29 @@
 // new one (upper), at the z of the step's phase (docs/FORMAT.md):
 // - the floor (z = 0): every input face, nothing below;
 // - a merge: the loser's area (and, when the winner is replaced by a new face, the winner's);
-//   with `smooth`, tilted instead: rising from the boundary the loser shares with the winner,
-//   from the loser's last change to the merge (smooth-merge.ts);
+//   with `smooth`, tilted instead: a front rising from the boundary the loser shares with the
+//   winner, up to a zoom level before the merge, above the older surfaces (smooth-merge.ts);
 // - a split: the triangles the split gave each receiving face;
-// - simplification: each removed vertex's triangle, between the faces on either side.
+// - simplification: each removed vertex's triangle, between the faces on either side; with
+//   `smooth`, tilted from the removed corner up to the removal.
 import { orient } from '../geom/predicates.js';
-import { EventKind, faceEndZ, LAST_REMOVAL_PHASE, phaseZ, REEMIT_PHASE, resolveFace, resolveFaceAt, type Tgap } from '../../format/tgap-model.js';
+import { scaleAtZ, zAtScale } from '../../format/scale.js';
+import { EventKind, faceEndZ, LAST_REMOVAL_PHASE, phaseZ, REEMIT_PHASE, resolveFace, resolveFaceAt, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
 import { smoothMergeZ } from './smooth-merge.js';
+import { EdgeSideTimes, Side } from './edge-side-times.js';
+import { edgeKey, splitChords } from './split-chords.js';
+import { SurfacesByFace } from './surfaces-by-face.js';
 import { triangulateFace, type FaceEdge, type TriangulateStats } from './triangulate-face.js';
 
 export class Surfaces {
   count = 0;
+  /**
+   * Vertex coordinates by id: the tGAP's, and after them the few a smooth cube adds (chord
+   * midpoints, split-chords.ts).
+   */
+  xs: Float64Array;
+  ys: Float64Array;
+  vertexCount: number;
   /** tGAP vertex ids, 3 per triangle, counterclockwise. */
   v = new Int32Array(3 * 1024);
   /** z of each vertex of each triangle (3 per triangle): equal on a horizontal one. */
@@ -33,6 +45,28 @@ export class Surfaces {
   pieces = 0;
   private readonly pieceIds = new Map<string, number>();
   private lastFlat = false;
+
+  constructor(xs: Float64Array = new Float64Array(0), ys: Float64Array = new Float64Array(0)) {
+    this.xs = xs;
+    this.ys = ys;
+    this.vertexCount = xs.length;
+  }
+
+  /** A new vertex at (x, y); returns its id. */
+  addVertex(x: number, y: number): number {
+    if (this.vertexCount === this.xs.length) {
+      // Copied on the first one: the tGAP's own arrays are not ours to grow.
+      const n = Math.max(16, this.xs.length + (this.xs.length >> 3));
+      for (const k of ['xs', 'ys'] as const) {
+        const a = new Float64Array(n);
+        a.set(this[k]);
+        this[k] = a;
+      }
+    }
+    this.xs[this.vertexCount] = x;
+    this.ys[this.vertexCount] = y;
+    return this.vertexCount++;
+  }
 
   /** A horizontal triangle at z. */
   add(a: number, b: number, c: number, z: number, upper: number, lower: number): void {
@@ -99,6 +133,10 @@ export interface SurfaceStats extends TriangulateStats {
   reemit: number;
   /** Merges drawn tilted (smooth), of `merge`'s triangles' events. */
   tiltedMerges: number;
+  /** Simplification triangles drawn tilted (smooth), of `simplify`. */
+  tiltedRemovals: number;
+  /** Triangles added by splitting chords between shared-boundary vertices (smooth merges). */
+  chordSplits: number;
 }
 
 export interface SurfaceOptions {
@@ -107,8 +145,21 @@ export interface SurfaceOptions {
 }
 
 /**
- * A merge's transition: from zStart, the last change of the loser, of its boundary or the
- * winner's creation, to zMerge, the merge's z (zStart = zMerge: no room, drawn horizontal).
+ * How far a smooth merge may reach back: at most this factor in scale before the merge (one
+ * zoom level, the map's default zoom step).
+ */
+export const MAX_TRANSITION_RATIO = 2;
+
+/**
+ * How far a tilted surface stays above an older one it overlaps, in steps: a 32nd of a step
+ * still differs in float32 up to about 2^17 steps, so the two never tie in depth.
+ */
+export const SURFACE_GAP = 1 / 32;
+
+/**
+ * A merge's transition: from zStart, the last z at which the loser is whole (half a gap below
+ * its tilted surface's lowest vertex, above every older surface there), to zMerge, the merge's
+ * z, from which it is gone (zStart = zMerge: no room, drawn horizontal).
  */
 export interface MergeTransition {
   step: number;
@@ -118,13 +169,16 @@ export interface MergeTransition {
   zMerge: number;
   /** Drawn tilted (with --smooth, room in z and a vertex off the shared boundary). */
   tilted: boolean;
+  /** Its triangles in the surfaces: from `first` up to (not including) `end`. */
+  first: number;
+  end: number;
 }
 
 export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: Surfaces; stats: SurfaceStats; transitions: MergeTransition[] } {
   const steps = t.meta.steps;
   const zTop = steps + 1;
-  const out = new Surfaces();
-  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0 };
+  const out = new Surfaces(t.xs, t.ys);
+  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, chordSplits: 0 };
   const { xs, ys, faces, edges } = t;
   // Edges by the state they start and end in.
   const born: number[][] = Array.from({ length: steps + 2 }, () => []);
@@ -143,21 +197,21 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
       set.add(e);
     }
   };
-  // What bounds a smooth merge's start (MergeTransition): per face, the z of its creation and of
-  // the last change of its area (no other surface may lie in the loser's area during the
-  // transition); per edge, the z of its birth or of the last change of a face on its sides (a
-  // boundary the loser came to share with the winner when a neighbour merged into the winner:
+  // What bounds a smooth merge's start besides the older surfaces in the loser's area
+  // (SurfacesByFace): per face, the z of its re-emit (the winner's id must be the one shown
+  // beside the loser); per edge, the z of its birth or of the last change of a face on its sides
+  // (a boundary the loser came to share with the winner when a neighbour merged into the winner:
   // the winner's side must be the winner's, the neighbour's transition over, so that what the
   // winner gains stays attached to it).
   const createdZ = new Float64Array(faces.length);
-  const areaChange = new Float64Array(faces.length);
-  const sideChange = Float64Array.from(edges, (e) => (e.stepLow > 0 ? phaseZ(e.stepLow, 0) : 0));
-  const touch = (f: number, z: number): void => {
-    if (f > 0) areaChange[f] = Math.max(areaChange[f]!, z);
-  };
-  /** The faces on f's edges changed at z (f merged, split or was replaced). */
-  const relabel = (f: number, z: number): void => {
-    for (const e of faceEdges.get(f) ?? []) sideChange[e] = Math.max(sideChange[e]!, z);
+  const sides = new EdgeSideTimes(edges);
+  /** f's side of its edges changed at z (f merged, split or was replaced; `at` resolves an edge's faces as f had them). */
+  const relabel = (f: number, z: number, at: (face: number) => number): void => {
+    for (const e of faceEdges.get(f) ?? []) {
+      const edge = edges[e]!;
+      if (at(edge.left) === f) sides.relabel(e, Side.Left, z);
+      if (at(edge.right) === f) sides.relabel(e, Side.Right, z);
+    }
   };
   /** The loser's edges shared with the winner at state s. */
   const sharedEdges = (loser: number, into: number, s: number): number[] => {
@@ -171,6 +225,17 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
     return out;
   };
   const tris: number[] = [];
+  const scaleInfo = scaleInfoOf(t);
+  /**
+   * The earliest z of a transition ending at z: one zoom level before. It grows with z, and z
+   * only grows as the tGAP is replayed, so older surfaces below it are never needed again.
+   */
+  const reachBack = (z: number): number => zAtScale(scaleInfo, scaleAtZ(scaleInfo, z) / MAX_TRANSITION_RATIO);
+  const byFace = opts.smooth ? new SurfacesByFace(out) : undefined;
+  /** Surfaces from `from` up to the last one added lie in `face`'s area (smooth cubes only). */
+  const lieIn = (face: number, from: number): void => {
+    if (byFace) for (let i = from; i < out.count; i++) byFace.add(face, i);
+  };
   /** Triangulates face f's area at state s into `tris`; returns the triangle count. */
   const triangulate = (f: number, s: number): number => {
     tris.length = 0;
@@ -193,22 +258,57 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
     return n;
   };
   /**
-   * The loser's area (state s) tilted from its boundary with the winner (zStart) to zMerge, or
-   * flat at zMerge when it cannot tilt; returns whether it tilted.
+   * The loser's area (state s) tilted: a front leaves the boundary shared with the winner, no
+   * earlier than zFoot, and waits above the older surfaces still in the loser's area
+   * (smooth-merge.ts); or flat at zMerge when it cannot tilt. Returns the transition's zStart.
    */
-  const emitSmoothMerge = (loser: number, into: number, s: number, sharedWithInto: number[], zStart: number, zMerge: number, key: string): boolean => {
-    stats.merge += triangulate(loser, s);
-    const shared = new Set<number>();
-    for (const e of sharedWithInto) for (const v of edges[e]!.verts) shared.add(v);
-    const z = smoothMergeZ(tris, xs, ys, shared, zStart, zMerge);
+  const emitSmoothMerge = (byFace: SurfacesByFace, loser: number, into: number, s: number, sharedWithInto: number[], zFoot: number, zMerge: number, key: string): number => {
+    triangulate(loser, s);
+    // A vertex of the shared boundary may start once the winner lies beside it.
+    const shared = new Map<number, number>();
+    const segments = new Set<string>();
+    for (const e of sharedWithInto) {
+      const intoSide = resolveFace(faces, edges[e]!.left, s) === into ? Side.Left : Side.Right;
+      for (const [v, z] of sides.vertexTimes(e, intoSide)) shared.set(v, Math.max(shared.get(v) ?? -Infinity, z + SURFACE_GAP));
+      const verts = edges[e]!.verts;
+      for (let i = 0; i + 1 < verts.length; i++) segments.add(edgeKey(verts[i]!, verts[i + 1]!));
+    }
+    const own = splitChords(tris, out.xs, out.ys, (v) => shared.has(v), (a, b) => segments.has(edgeKey(a, b)), (x, y) => out.addVertex(x, y));
+    stats.merge += own.length / 3;
+    stats.chordSplits += (own.length - tris.length) / 3;
+    tris.length = 0;
+    for (const v of own) tris.push(v);
+    const lowest = byFace.lowestZ(loser, tris, zFoot, SURFACE_GAP, reachBack(zMerge));
+    const z = smoothMergeZ(tris, out.xs, out.ys, shared, { zFoot, zMerge, lowest });
     const zOf = (v: number): number => z?.get(v) ?? zMerge;
+    let zLow = zMerge;
     for (let i = 0; i < tris.length; i += 3) {
       const a = tris[i]!, b = tris[i + 1]!, c = tris[i + 2]!;
-      if (z) out.addTilted(a, b, c, zOf(a), zOf(b), zOf(c), into, loser, key);
-      else out.add(a, b, c, zMerge, into, loser);
+      if (z) {
+        out.addTilted(a, b, c, zOf(a), zOf(b), zOf(c), into, loser, key);
+        zLow = Math.min(zLow, zOf(a), zOf(b), zOf(c));
+      } else {
+        out.add(a, b, c, zMerge, into, loser);
+      }
     }
-    if (z) stats.tiltedMerges++;
-    return z !== null;
+    if (!z) return zMerge;
+    stats.tiltedMerges++;
+    return zLow - SURFACE_GAP / 2;
+  };
+  /**
+   * Where a smooth removal's corner starts to recede: the triangle (a, v, b) tilts from its
+   * corner v (the receding vertex) up to the removal's z on its chord, so the upper face takes
+   * it from the corner, beside which it lies. No further back than one zoom level, nor before
+   * the upper face was created or lay beside the corner (its side of the parent chain), and
+   * above the older surfaces in the triangle's area.
+   */
+  const smoothRemovalStart = (byFace: SurfacesByFace, tri: number[], upper: number, lower: number, parent: number, side: Side, z: number): number => {
+    const zCap = reachBack(z);
+    let start = Math.max(SURFACE_GAP, zCap, createdZ[upper]! + SURFACE_GAP);
+    const times = parent >= 0 ? sides.vertexTimes(parent, side) : sides.vertexTimes(-parent - 1, side === Side.Left ? Side.Right : Side.Left);
+    for (const w of tri) start = Math.max(start, (times.get(w) ?? z) + SURFACE_GAP);
+    for (const w of byFace.lowestZ(lower, tri, start, SURFACE_GAP, zCap).values()) start = Math.max(start, w);
+    return Math.min(start, z);
   };
   const transitions: MergeTransition[] = [];
 
@@ -219,6 +319,7 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
   let ev = 0;
   for (let k = 1; k <= steps; k++) {
     const z0 = phaseZ(k, 0);
+    const before = (f: number): number => resolveFace(faces, f, k - 1);
     // Phase 0: the areas that change face in this step, as they were in state k - 1.
     const handOn: [number, number][] = []; // [face, into]: faces whose edges go to another face
     const reemits: [number, number][] = [];
@@ -226,30 +327,35 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
       const e = t.events[ev]!;
       if (e.kind === EventKind.Merge) {
         const shared = sharedEdges(e.loser, e.into, k - 1);
-        let zStart = Math.max(areaChange[e.loser]!, createdZ[e.into]!);
-        for (const se of shared) zStart = Math.max(zStart, sideChange[se]!);
-        let tilted = false;
-        if (opts.smooth) tilted = emitSmoothMerge(e.loser, e.into, k - 1, shared, zStart, z0, `m${ev}`);
-        else stats.merge += emitFace(e.loser, k - 1, z0, e.into, e.loser);
-        transitions.push({ step: k, loser: e.loser, into: e.into, zStart, zMerge: z0, tilted });
+        const first = out.count;
+        let zStart = z0;
+        if (byFace) {
+          // No further back than one zoom level, and not before the winner was (re)created: the
+          // upper face must be the one shown beside it.
+          zStart = emitSmoothMerge(byFace, e.loser, e.into, k - 1, shared, Math.max(SURFACE_GAP, reachBack(z0), createdZ[e.into]! + SURFACE_GAP), z0, `m${ev}`);
+          lieIn(e.into, first);
+          byFace.hand(e.loser, e.into);
+        } else {
+          stats.merge += emitFace(e.loser, k - 1, z0, e.into, e.loser);
+        }
+        transitions.push({ step: k, loser: e.loser, into: e.into, zStart, zMerge: z0, tilted: zStart < z0, first, end: out.count });
         // The winner grows; the loser's neighbours now border the winner.
-        touch(e.into, z0);
-        relabel(e.loser, z0);
+        relabel(e.loser, z0, before);
         handOn.push([e.loser, e.into]);
       } else if (e.kind === EventKind.Split) {
         const tv = e.tris!, tf = e.triFaces!;
         for (let i = 0; i < tf.length; i++) {
           out.add(tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!, z0, tf[i]!, e.loser);
-          touch(tf[i]!, z0);
+          lieIn(tf[i]!, out.count - 1);
         }
+        byFace?.drop(e.loser);
         stats.split += tf.length;
-        relabel(e.loser, z0);
+        relabel(e.loser, z0, before);
         faceEdges.delete(e.loser);
       } else {
         const zRe = phaseZ(k, REEMIT_PHASE);
-        relabel(e.loser, zRe);
+        relabel(e.loser, zRe, (f) => resolveFaceAt(faces, f, k, LAST_REMOVAL_PHASE));
         createdZ[e.into] = zRe;
-        touch(e.into, zRe);
         handOn.push([e.loser, e.into]);
         reemits.push([e.loser, e.into]);
       }
@@ -295,15 +401,26 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
         if (o === 0) continue;
         // v left of the new chord: the triangle passes from the right face to the left one.
         const z = phaseZ(k, edge.removedPhase[r]!);
-        if (o > 0) out.add(a, b, v, z, left, right);
-        else out.add(a, v, b, z, right, left);
-        touch(left, z);
-        touch(right, z);
+        const [upper, lower] = o > 0 ? [left, right] : [right, left];
+        const tri = o > 0 ? [a, b, v] : [a, v, b];
+        const zCorner = byFace ? smoothRemovalStart(byFace, tri, upper, lower, p, upper === left ? Side.Left : Side.Right, z) : z;
+        if (zCorner < z) {
+          out.addTilted(tri[0]!, tri[1]!, tri[2]!, tri[0] === v ? zCorner : z, tri[1] === v ? zCorner : z, tri[2] === v ? zCorner : z, upper, lower, `s${out.count}`);
+          stats.tiltedRemovals++;
+        } else {
+          out.add(tri[0]!, tri[1]!, tri[2]!, z, upper, lower);
+        }
+        lieIn(upper, out.count - 1);
         stats.simplify++;
       }
     }
     // Replaced faces: their whole area, as it is at the end of the step, drawn again.
-    for (const [f, g] of reemits) stats.reemit += emitFace(g, k, phaseZ(k, REEMIT_PHASE), g, f);
+    for (const [f, g] of reemits) {
+      const first = out.count;
+      stats.reemit += emitFace(g, k, phaseZ(k, REEMIT_PHASE), g, f);
+      byFace?.drop(f);
+      lieIn(g, first);
+    }
   }
   // Each triangle matters until its upper face ends; after that newer surfaces cover it.
   for (let i = 0; i < out.count; i++) {

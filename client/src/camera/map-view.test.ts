@@ -4,25 +4,9 @@
 // jump yield, the scale limits, and fitting a box to device pixels as `ssc slice --bbox` does.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import type { CubeMeta } from '../../../format/cube-index.js';
 import { scaleAtZ, zAtScale } from '../../../format/scale.js';
+import { makeView, testMeta as meta } from '../../../testing/map-view-fixture.js';
 import { fitBbox } from '../geometry/view.js';
-import { MapView, type MoveEventType } from './map-view.js';
-
-const meta = {
-  name: 'test', crs: '', extent: [0, 0, 1000, 500], zMax: 100, steps: 100, phases: 8,
-  baseScale: 1000, baseFaces: 10000, pixelSizeMm: 0.25, scaleTable: [[0, 10000], [100, 1]],
-  style: { name: 'test', background: '#ffffff', classes: [] }, attribution: '',
-  faces: { count: 0, pages: [] }, attributes: { count: 0, pages: [] },
-} as unknown as CubeMeta;
-
-function makeView(): { view: MapView; events: MoveEventType[]; changes: boolean[] } {
-  const events: MoveEventType[] = [];
-  const changes: boolean[] = [];
-  const view = new MapView({ requestFrame: () => undefined, reduceMotion: () => true, emit: (type) => events.push(type) });
-  view.onChange((sliceMoved) => changes.push(sliceMoved));
-  return { view, events, changes };
-}
 
 describe('MapView', () => {
   test('the first view fits the cube, keeping the centre or the scale the options gave', () => {
@@ -79,13 +63,42 @@ describe('MapView', () => {
   test('the scale stays within the limits', async () => {
     const { view } = makeView();
     view.setMeta(meta, () => ({ x: 0, y: 0, scale: 2000 }));
-    view.minScale = 500;
-    view.maxScale = 8000;
+    view.setLimits({ minScale: 500, maxScale: 8000 });
     view.jump({ x: 0, y: 0, scale: 100 });
     assert.equal(view.camera.scale, 500);
     // Reduced motion: an animation jumps to its end at once.
     assert.equal(await view.zoomAbout(1e6, [0, 0], { durationMs: 300 }), true);
     assert.equal(view.camera.scale, 8000);
+  });
+
+  test('a new minimum scale brings the view within it at once, with movement events', () => {
+    const { view, events } = makeView();
+    view.setMeta(meta, () => ({ x: 0, y: 0, scale: 2000 }));
+    view.setLimits({ minScale: 3000 });
+    assert.equal(view.camera.scale, 3000);
+    assert.deepEqual(events, ['movestart', 'zoomstart', 'move', 'zoom', 'zoomend', 'moveend']);
+    events.length = 0;
+    view.setLimits({ maxScale: 5000 });
+    assert.deepEqual(events, [], 'the view was within: nothing moves');
+    assert.throws(() => view.setLimits({ maxScale: 1000 }), /maxScale \(1000\) must be at least minScale \(3000\)/);
+    assert.equal(view.limits.maxScale, 5000, 'a refused change leaves the limits as they were');
+  });
+
+  test('with maxBounds no movement leaves the box: pans, zooms and animations alike', async () => {
+    const { view } = makeView();
+    view.setMeta(meta, () => ({ x: 500, y: 250, scale: 4000 }));
+    view.setLimits({ maxBounds: [0, 0, 1000, 500] });
+    // The box fills the 400 x 200 px view at 2.5 units a px: 1:10000.
+    view.jump({ x: 500, y: 250, scale: 1e6 });
+    assert.deepEqual(view.camera, { x: 500, y: 250, scale: 10000 });
+    view.set({ x: -1e6, y: 1e6, scale: 4000 });
+    view.end();
+    assert.deepEqual(view.camera, { x: 200, y: 400, scale: 4000 }, 'the corner of the box at the corner of the view');
+    assert.equal(await view.zoomAbout(1e9, [150, 50], { durationMs: 300 }), true);
+    assert.deepEqual(view.camera, { x: 500, y: 250, scale: 10000 });
+    assert.equal(view.clamp(1e6), 10000, 'zoom steps aim at the largest scale the box allows');
+    view.setLimits({ maxBounds: null });
+    assert.equal(view.clamp(1e6), 1e6);
   });
 
   test('fitting a box to device pixels is the view `ssc slice --bbox` shows', () => {

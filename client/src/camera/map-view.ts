@@ -1,6 +1,7 @@
 // The one owner of where a map looks (as OpenLayers' View): the centre, the scale denominator,
 // the slice's base z (following the scale, snapped to the comparison scales, or pinned), the
-// slicing surface, the limits on the scale and the running animation. Input handlers and the
+// slicing surface, the limits on the scale and place (view-limits.ts: min and max scale, a box
+// the visible area stays inside) and the running animation. Input handlers and the
 // API change it; the frame loop reads it. Every change of the camera also yields the movement
 // events (movestart, move, moveend; zoomstart, zoom, zoomend), whatever made it.
 import type { CubeMeta } from '../../../format/cube-index.js';
@@ -8,7 +9,8 @@ import { PIXEL_SIZE_MM } from '../../../format/pixel-size.js';
 import { zAtScale } from '../../../format/scale.js';
 import type { Surface, SurfaceSpec } from '../../../format/slicing-surface.js';
 import { levelFor } from '../geometry/discrete-scales.js';
-import { cameraAround, clampScale, groundAt, zoomAboutPath, type Camera } from '../geometry/camera.js';
+import { cameraAround, groundAt, zoomAboutPath, type Camera } from '../geometry/camera.js';
+import { checkViewLimits, constrainCamera, limitScale, type ViewLimits } from '../geometry/view-limits.js';
 import { easeInOut, type Easing } from '../motion/easing.js';
 import { resolutionAtScale, type Bbox, type ViewGeometry } from '../geometry/view.js';
 import { CameraAnimation, type AnimationSpec } from './camera-animation.js';
@@ -20,6 +22,8 @@ export interface ViewHost {
   requestFrame(): void;
   /** Whether animations are replaced by jumps (prefers-reduced-motion or the option). */
   reduceMotion(): boolean;
+  /** CSS px of the map (what maxBounds must hold). */
+  size(): [number, number];
   emit(type: MoveEventType, originalEvent: Event | undefined): void;
 }
 
@@ -34,8 +38,7 @@ export interface AnimateOptions {
 export type ViewListener = (sliceMoved: boolean) => void;
 
 export class MapView {
-  minScale = 1;
-  maxScale = Infinity;
+  private bounds: ViewLimits = { minScale: 1, maxScale: Infinity, maxBounds: null };
   /** Where the map looks; NaN until set or fitted to the cube's extent. */
   private current: Camera = { x: NaN, y: NaN, scale: NaN };
   private zPinned: number | null = null;
@@ -86,7 +89,7 @@ export class MapView {
       // What the options gave wins over the fitted box.
       this.current = Number.isFinite(c.x) ? { ...f, x: c.x, y: c.y } : Number.isFinite(c.scale) ? { ...f, scale: c.scale } : f;
     }
-    this.current.scale = this.clamp(this.current.scale);
+    this.current = this.within(this.current);
     this.changed(true);
   }
 
@@ -98,8 +101,39 @@ export class MapView {
     this.changed(this.z() !== zBefore);
   }
 
+  /** The scale denominator within the limits (with maxBounds, at most the one that fills the view). */
   clamp(scale: number): number {
-    return clampScale(scale, this.minScale, this.maxScale);
+    return limitScale(scale, this.bounds, this.host.size(), this.pixelSizeMm);
+  }
+
+  get limits(): ViewLimits {
+    return { ...this.bounds, maxBounds: this.bounds.maxBounds && [...this.bounds.maxBounds] };
+  }
+
+  /**
+   * Changes the limits (throwing, with the limits unchanged, when they are wrong) and brings the
+   * view within them at once: a jump with its movement events, or with `quiet` none (the first
+   * view). Every later change of the view is kept within them too.
+   */
+  setLimits(l: Partial<ViewLimits>, quiet = false): void {
+    const next: ViewLimits = { ...this.bounds, ...l };
+    checkViewLimits(next);
+    this.bounds = { ...next, maxBounds: next.maxBounds && [...next.maxBounds] };
+    this.keepWithinLimits(quiet);
+  }
+
+  /** Brings the view within the limits (after they or the map's size changed); see setLimits. */
+  keepWithinLimits(quiet = false): void {
+    const c = this.current;
+    if (!this.cube || !Number.isFinite(c.x) || !Number.isFinite(c.scale)) return;
+    const to = this.within(c);
+    if (to.x === c.x && to.y === c.y && to.scale === c.scale) return;
+    if (quiet) this.place(to);
+    else this.jump(to);
+  }
+
+  private within(c: Camera): Camera {
+    return constrainCamera(c, this.bounds, this.host.size(), this.pixelSizeMm);
   }
 
   // ---- the slice -------------------------------------------------------------------------------
@@ -152,7 +186,7 @@ export class MapView {
 
   /** Moves now, as part of a movement that goes on (a gesture); end() closes it. */
   set(c: Camera, originalEvent?: Event): void {
-    const next = { ...c, scale: this.clamp(c.scale) };
+    const next = this.within(c);
     const zoomed = next.scale !== this.current.scale;
     const moved = zoomed || next.x !== this.current.x || next.y !== this.current.y;
     if (!this.moving) {

@@ -4,7 +4,7 @@
 // the first complete map ('load') and the moment nothing more is to come ('idle').
 import { boxMeets } from '../../../format/index-query.js';
 import type { MapView } from '../camera/map-view.js';
-import { colourParams, type BlendingOptions, type BoundaryOptions } from '../render/colour-options.js';
+import { colourParams, type BlendingOptions, type BoundaryOptions, type StatePaints } from '../render/colour-options.js';
 import type { GpuChunk } from '../render/gpu-chunk.js';
 import type { Renderer } from '../render/renderer.js';
 import { jitter, weight } from '../render/supersampling.js';
@@ -17,6 +17,8 @@ const MOVING_MS = 300;
 export interface RenderSettings {
   blending: BlendingOptions;
   boundaries: BoundaryOptions;
+  /** How faces with `highlight: true` or `hover: true` in their feature state are drawn. */
+  paints: StatePaints;
   /** Frames accumulated (jittered) while the view is still; 1: off. */
   supersampling: number;
   /** Chunks are also fetched this fraction of the view's size around it. */
@@ -156,7 +158,7 @@ export class FrameLoop {
     // jittered frame averaged in would blur its edges. Every change resets `accumulated`.
     if (this.accumulated < supersampling) {
       const n = this.accumulated;
-      const colour = colourParams({ view: q.view, ratio: this.canvas.deviceRatio(), background: meta.style.background, boundaries, blendDistance: blendOn ? blending.distance : 0, weight: weight(n) });
+      const colour = colourParams({ view: q.view, ratio: this.canvas.deviceRatio(), boundaries, paints: this.settings.paints, blendDistance: blendOn ? blending.distance : 0, weight: weight(n) });
       const triangles = r.render({ view: q.view, surface: this.view.surface(), zMax: meta.zMax, jitter: jitter(n), colour }, chunks);
       this.accumulated = n + 1;
       this.lastStats = { frame: this.frameNo, triangles, chunks: chunks.length, queryMs: this.residency.queryMs, gpuBytes: r.store.bytes, jittered: n > 0 };

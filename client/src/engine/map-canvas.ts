@@ -18,7 +18,8 @@ export class MapCanvas {
   ) {
     const c = document.createElement('canvas');
     c.className = 'ssc-canvas';
-    c.style.cssText = 'position:absolute;left:0;top:0;width:100%;height:100%;display:block;touch-action:none';
+    // No touch-action of its own: the container's governs (cooperative gestures leave one finger to the page).
+    c.style.cssText = 'position:absolute;left:0;top:0;width:100%;height:100%;display:block';
     container.appendChild(c);
     this.element = c;
     this.resizeObserver = new ResizeObserver(() => this.measure());

@@ -1,28 +1,35 @@
 // The engine beneath VarioMap (internal, not exported from the library): the chunk source
 // (worker), the renderer (WebGL2), the canvas, which chunks stay on the GPU, and the frame loop
-// that reads the map's view and draws it. Its events are VarioMap's data and render events.
+// that reads the map's view and draws it, in the style and feature state of the moment. Its
+// events are VarioMap's data and render events.
 import type { CubeMeta } from '../../../format/cube-index.js';
+import type { CubeStyle } from '../../../format/style.js';
 import type { MapView } from '../camera/map-view.js';
 import { Evented } from '../events.js';
-import type { BlendingOptions, BoundaryOptions } from '../render/colour-options.js';
+import { DEFAULT_STATE_PAINTS, DRAWN_STATES, type BlendingOptions, type BoundaryOptions, type DrawnState, type StatePaint } from '../render/colour-options.js';
 import type { IdBuffer } from '../render/id-buffer.js';
 import { Renderer } from '../render/renderer.js';
+import { parseColour } from '../render/style-texture.js';
 import type { Camera } from '../geometry/camera.js';
 import { groundToPixel, pixelToGround, type Bbox, type ViewGeometry } from '../geometry/view.js';
 import { ChunkSource } from '../source/chunk-source.js';
+import { FeatureStates, type FeatureRef, type FeatureState } from '../style/feature-state.js';
+import { copyStyle, parseMapStyle, withClassStyle } from '../style/map-style.js';
 import type { ChunkStatus, SourceErrorInfo, SourceOptions } from '../source/worker-protocol.js';
 import { showLoadError } from '../ui/load-error.js';
 import { showWebGl2Missing } from '../ui/webgl-missing.js';
 import { ChunkResidency } from './chunk-residency.js';
 import { FrameLoop, type RenderSettings, type RenderStats } from './frame-loop.js';
 import { MapCanvas } from './map-canvas.js';
-import { featuresAt, type Feature } from './picking.js';
+import { featuresAt, type Feature, type QueryOptions } from './picking.js';
 
 export interface EngineOptions {
   /** URL of the cube's directory (with or without a trailing /) or of its index.json. */
   source: string;
   blending?: Partial<BlendingOptions>;
   boundaries?: Partial<BoundaryOptions>;
+  /** How faces with `highlight: true` and `hover: true` in their feature state are drawn. */
+  statePaint?: Partial<Record<DrawnState, Partial<StatePaint>>>;
   /** Frames accumulated (jittered) while the view is still; 1: off. */
   supersampling?: number;
   /** GPU memory for chunks, bytes. */
@@ -61,6 +68,9 @@ export class MapEngine extends Evented<EngineEvents> {
   private readonly loop: FrameLoop | null = null;
   private readonly settings: RenderSettings;
   private readonly startTime = performance.now();
+  /** The style drawn: the cube's until changed at run time (null until the cube is known). */
+  private style: CubeStyle | null = null;
+  private readonly featureStates = new FeatureStates();
   /** The index could not be loaded: nothing will ever be drawn. */
   private failed = false;
 
@@ -70,10 +80,18 @@ export class MapEngine extends Evented<EngineEvents> {
     options: EngineOptions,
   ) {
     super();
-    this.canvas = new MapCanvas(container, options.pixelRatio, () => this.loop?.viewChanged(false));
+    this.canvas = new MapCanvas(container, options.pixelRatio, () => {
+      // A larger map may show more than maxBounds allows.
+      view.keepWithinLimits();
+      this.loop?.viewChanged(false);
+    });
     this.settings = {
       blending: { mode: 'moving', distance: 0.5, ...options.blending },
       boundaries: { enabled: false, width: 1, color: '#000000', opacity: 0.35, ...options.boundaries },
+      paints: {
+        highlight: checkedPaint('highlight', { ...DEFAULT_STATE_PAINTS.highlight, ...options.statePaint?.highlight }),
+        hover: checkedPaint('hover', { ...DEFAULT_STATE_PAINTS.hover, ...options.statePaint?.hover }),
+      },
       supersampling: Math.max(1, Math.floor(options.supersampling ?? 16)),
       prefetchMargin: options.prefetchMargin ?? 0.25,
     };
@@ -95,6 +113,8 @@ export class MapEngine extends Evented<EngineEvents> {
       const g = this.canvas.deviceSize();
       // VarioMap then shows what its options ask for (they may need the cube's CRS).
       view.setMeta(meta, () => view.fitCamera(meta.extent, g.width, g.height, this.canvas.deviceRatio()));
+      this.style = meta.style;
+      this.featureStates.faceCount = meta.faces.count;
       this.renderer?.setMeta(meta);
       this.fire('meta', meta);
     });
@@ -174,6 +194,46 @@ export class MapEngine extends Evented<EngineEvents> {
     this.redraw();
   }
 
+  getStatePaint(state: DrawnState): StatePaint {
+    return { ...this.settings.paints[drawnState(state)] };
+  }
+
+  setStatePaint(state: DrawnState, h: Partial<StatePaint>): void {
+    const s = drawnState(state);
+    this.settings.paints = { ...this.settings.paints, [s]: checkedPaint(s, { ...this.settings.paints[s], ...h }) };
+    this.redraw();
+  }
+
+  // ---- the style and feature state ---------------------------------------------------------------
+
+  /** A copy of the style drawn (null until the cube is known). */
+  getStyle(): CubeStyle | null {
+    return this.style && copyStyle(this.style);
+  }
+
+  /** Checks `json` against the schema and the cube's classes; draws it from the next frame. */
+  setStyle(json: unknown): CubeStyle {
+    return this.changeStyle('setStyle', (meta) => parseMapStyle(json, meta.style.classes));
+  }
+
+  setClassStyle(key: string, change: unknown): CubeStyle {
+    return this.changeStyle('setClassStyle', (_, style) => withClassStyle(style, key, change));
+  }
+
+  setFeatureState(ref: FeatureRef, state: FeatureState): void {
+    const face = this.featureStates.set(ref, state);
+    this.showFeatureState(face);
+  }
+
+  getFeatureState(ref: FeatureRef): FeatureState {
+    return this.featureStates.get(ref);
+  }
+
+  removeFeatureState(ref: FeatureRef, key?: string): void {
+    const face = this.featureStates.remove(ref, key);
+    this.showFeatureState(face);
+  }
+
   setSupersampling(frames: number): void {
     this.settings.supersampling = Math.max(1, Math.floor(frames));
     this.redraw();
@@ -232,15 +292,15 @@ export class MapEngine extends Evented<EngineEvents> {
   }
 
   /** The face under a CSS px point of the container, with its class, attributes and steps. */
-  async queryFeatures(point: [number, number]): Promise<Feature[]> {
+  async queryFeatures(point: [number, number], options: QueryOptions = {}): Promise<Feature[]> {
     const meta = this.view.meta;
-    if (!this.renderer || !meta) return [];
+    if (!this.renderer || !meta || !this.style) return [];
     this.loop?.renderNowIfDirty();
     const r = this.canvas.deviceRatio();
     const x = Math.floor(point[0] * r), y = Math.floor(point[1] * r);
     const g = this.canvas.deviceSize();
     if (x < 0 || y < 0 || x >= g.width || y >= g.height) return [];
-    return featuresAt(this.renderer, this.source, meta, x, y);
+    return featuresAt({ renderer: this.renderer, source: this.source, meta, style: this.style, view: this.getView() }, x, y, options);
   }
 
   /** The absolute URL of the cube's index.json. */
@@ -272,8 +332,38 @@ export class MapEngine extends Evented<EngineEvents> {
   }
 
   private contextRestored(): void {
-    if (this.view.meta) this.renderer?.setMeta(this.view.meta);
+    if (this.view.meta) this.renderer?.setMeta(this.view.meta, this.style ?? this.view.meta.style);
     this.fire('contextrestored', {});
     this.loop?.redraw();
   }
+
+  /** A new style from `make`, or an error naming what is wrong with the style as it was. */
+  private changeStyle(caller: string, make: (meta: CubeMeta, style: CubeStyle) => CubeStyle): CubeStyle {
+    const meta = this.view.meta;
+    if (!meta || !this.style) throw new Error(`${caller}: the cube's classes are not known yet; call it once the map's 'meta' event has fired`);
+    const style = make(meta, this.style);
+    this.style = style;
+    this.renderer?.setStyle(style);
+    this.redraw();
+    return copyStyle(style);
+  }
+
+  private showFeatureState(face: number): void {
+    this.renderer?.setFaceState(face, this.featureStates.bits(face, DRAWN_STATES));
+    this.redraw();
+  }
+}
+
+function drawnState(state: string): DrawnState {
+  const s = DRAWN_STATES.find((d) => d === state);
+  if (!s) throw new Error(`state paint: ${JSON.stringify(state)} is not a drawn feature state (${DRAWN_STATES.join(', ')})`);
+  return s;
+}
+
+/** A state's paint, or an error naming the value that is wrong. */
+function checkedPaint(state: DrawnState, h: StatePaint): StatePaint {
+  for (const k of ['color', 'outlineColor'] as const) parseColour(h[k], `${state} paint ${k}`);
+  if (!(h.opacity >= 0 && h.opacity <= 1)) throw new Error(`${state} paint opacity must be in [0, 1], not ${h.opacity}`);
+  if (!(h.outlineWidth >= 0 && Number.isFinite(h.outlineWidth))) throw new Error(`${state} paint outlineWidth must be a number of CSS px >= 0, not ${h.outlineWidth}`);
+  return h;
 }

@@ -38,7 +38,3 @@ export function zoomAboutPath(a: Camera, scale: number, offset: readonly [number
   const ground = groundAt(a, offset, pixelSizeMm);
   return (t) => cameraAround(ground, offset, a.scale * Math.pow(scale / a.scale, t), pixelSizeMm);
 }
-
-export function clampScale(scale: number, min: number, max: number): number {
-  return Math.min(Math.max(scale, min), max);
-}

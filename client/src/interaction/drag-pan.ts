@@ -1,10 +1,12 @@
 // Drag to pan (mouse, one finger or a pen), gliding on after the release with MapLibre's
-// inertia. A second finger hands the gesture to the pinch; lifting it hands it back.
+// inertia. A second finger hands the gesture to the pinch; lifting it hands it back. With
+// cooperative gestures one finger is the page's.
+import type { CooperativeGestures } from './cooperative-gestures.js';
 import { inertiaEasing } from '../motion/easing.js';
 import { InertiaBuffer } from '../motion/inertia.js';
 import type { Camera } from '../geometry/camera.js';
 import { resolutionAtScale } from '../geometry/view.js';
-import { InputHandler, type ListenerSpec } from './interaction-context.js';
+import { InputHandler, type InteractionContext, type ListenerSpec } from './interaction-context.js';
 
 /** A mouse must move this far (CSS px) before a press becomes a drag (a click stays a click). */
 const CLICK_TOLERANCE_PX = 3;
@@ -19,6 +21,13 @@ interface Drag {
 export class DragPan extends InputHandler {
   private drag: Drag | null = null;
   private readonly inertia = new InertiaBuffer();
+
+  constructor(
+    ctx: InteractionContext,
+    private readonly cooperative: CooperativeGestures,
+  ) {
+    super(ctx);
+  }
 
   protected listeners(): ListenerSpec[] {
     return this.pointerListeners(this.onDown, this.onMove, this.onUp);
@@ -37,6 +46,7 @@ export class DragPan extends InputHandler {
 
   private readonly onDown = (ev: PointerEvent): void => {
     if (ev.pointerType === 'mouse' && (ev.button !== 0 || ev.shiftKey)) return; // shift-drag: box zoom
+    if (!this.cooperative.dragPans(ev)) return;
     if (this.ctx.pointers.touches().length > 1) {
       // A second finger: the pinch takes over from here.
       this.drag = null;
@@ -65,7 +75,7 @@ export class DragPan extends InputHandler {
     const d = this.drag;
     if (!d) {
       // The pinch ended with one finger still down: it pans on from where it is.
-      if (ev.pointerType === 'touch' && this.ctx.pointers.down.has(ev.pointerId) && this.ctx.pointers.touches().length === 1) this.begin(ev);
+      if (ev.pointerType === 'touch' && this.ctx.pointers.down.has(ev.pointerId) && this.ctx.pointers.touches().length === 1 && this.cooperative.dragPans(ev)) this.begin(ev);
       return;
     }
     if (d.id !== ev.pointerId) return;

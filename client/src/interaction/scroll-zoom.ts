@@ -1,7 +1,9 @@
 // Wheel zoom about the cursor. A mouse wheel click is one zoom step (eased, many slices); a
-// trackpad's stream of small deltas zooms continuously, as it comes.
+// trackpad's stream of small deltas zooms continuously, as it comes. With cooperative gestures
+// a wheel without Ctrl (or ⌘) is the page's.
+import type { CooperativeGestures } from './cooperative-gestures.js';
 import { CLASSIFY_WAIT_MS, WheelClassifier, wheelDeltaPx, wheelZoomLevels, type WheelInput } from '../motion/wheel.js';
-import { InputHandler, type ListenerSpec } from './interaction-context.js';
+import { InputHandler, type InteractionContext, type ListenerSpec } from './interaction-context.js';
 
 /** A trackpad gesture ends after this long without an event. */
 const TRACKPAD_END_MS = 200;
@@ -10,6 +12,13 @@ export class ScrollZoom extends InputHandler {
   private readonly classifier = new WheelClassifier();
   private waiting: ReturnType<typeof setTimeout> | undefined;
   private trackpadEnd: ReturnType<typeof setTimeout> | undefined;
+
+  constructor(
+    ctx: InteractionContext,
+    private readonly cooperative: CooperativeGestures,
+  ) {
+    super(ctx);
+  }
 
   protected listeners(): ListenerSpec[] {
     return [
@@ -23,6 +32,7 @@ export class ScrollZoom extends InputHandler {
   }
 
   private readonly onWheel = (ev: WheelEvent): void => {
+    if (!this.cooperative.wheelZooms(ev)) return;
     ev.preventDefault();
     // Shift turns the wheel sideways on some systems; the vertical delta is what zooms.
     const delta = wheelDeltaPx(ev.deltaY || (ev.shiftKey ? ev.deltaX : 0), ev.deltaMode);

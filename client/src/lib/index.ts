@@ -11,16 +11,24 @@ export type {
   BoundaryOptions,
   Camera,
   CameraOptions,
+  ClassStyleJson,
   Control,
   ControlPosition,
+  CubeStyle,
+  DrawnState,
   Feature,
+  FeatureRef,
+  FeatureState,
   FitBoundsOptions,
   FlyToOptions,
   HandlerName,
   InteractionSettings,
   MapMoveEvent,
   MapPointerEvent,
+  QueryOptions,
   SourceErrorInfo,
+  StatePaint,
+  StyleJson,
   SurfaceSpec,
   VarioMapEvents,
   VarioMapOptions,
@@ -31,6 +39,7 @@ export type { CubeMeta } from '../../../format/cube-index.js';
 export { AttributionControl } from '../ui/attribution-control.js';
 export { FullscreenControl, type FullscreenOptions } from '../ui/fullscreen-control.js';
 export { IdwControl, type IdwPoint } from '../ui/idw-control.js';
+export { LegendControl, type LegendOptions } from '../ui/legend-control.js';
 export { LensControl, type LensOptions } from '../ui/lens-control.js';
 export { ScaleBar } from '../ui/scale-bar.js';
 export { SettingsPanel, type SurfaceMode } from '../ui/settings-panel.js';

@@ -19,8 +19,20 @@ export interface ColourParams {
   patternCell: number;
   patternLine: number;
   patternShift: [number, number];
+  /** R8UI, one texel per face id (face-state-texture.ts): bit i set where state i is on. */
+  faceState: WebGLTexture;
+  /** Per drawn state (colour-options.ts, DRAWN_STATES), in the order painted. */
+  statePaints: StatePaintParams[];
   /** Weight of this frame in the accumulated colour: 1 for the first. */
   weight: number;
+}
+
+export interface StatePaintParams {
+  /** rgb, alpha = opacity. */
+  fill: Rgba;
+  outline: Rgba;
+  /** Device pixels of the outline inside the face (0: none). */
+  width: number;
 }
 
 export class ColourPass {
@@ -43,6 +55,7 @@ export class ColourPass {
     bind(1, targets.aux, 'uAux');
     bind(2, targets.surface, 'uSurface');
     bind(3, c.style, 'uStyle');
+    bind(4, c.faceState, 'uFaceState');
     gl.uniform1i(p.loc('uClassCount'), c.classCount);
     gl.uniform4fv(p.loc('uBackground'), c.background);
     gl.uniform1f(p.loc('uBlendDistance'), c.blendDistance);
@@ -52,6 +65,9 @@ export class ColourPass {
     gl.uniform1f(p.loc('uPatternCell'), c.patternCell);
     gl.uniform1f(p.loc('uPatternLine'), c.patternLine);
     gl.uniform2f(p.loc('uPatternShift'), c.patternShift[0], c.patternShift[1]);
+    gl.uniform4fv(p.loc('uStateFill'), c.statePaints.flatMap((s) => s.fill));
+    gl.uniform4fv(p.loc('uStateOutline'), c.statePaints.flatMap((s) => s.outline));
+    gl.uniform1iv(p.loc('uStateWidth'), c.statePaints.map((s) => s.width));
     gl.bindFramebuffer(gl.FRAMEBUFFER, targets.colourFb);
     gl.viewport(0, 0, targets.width, targets.height);
     gl.disable(gl.DEPTH_TEST);
@@ -65,7 +81,7 @@ export class ColourPass {
     }
     gl.drawArrays(gl.TRIANGLES, 0, 3);
     gl.disable(gl.BLEND);
-    for (let u = 3; u >= 0; u--) {
+    for (let u = 4; u >= 0; u--) {
       gl.activeTexture(gl.TEXTURE0 + u);
       gl.bindTexture(gl.TEXTURE_2D, null);
     }

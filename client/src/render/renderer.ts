@@ -1,17 +1,19 @@
 // The GPU side of the map: the WebGL2 context and everything made in it (passes, targets, the
-// style texture, the chunks), one frame at a time, and reading the ID buffer back. A lost
+// style and feature state textures, the chunks), one frame at a time, and reading the ID buffer back. A lost
 // context is given up quietly and rebuilt on restore; the chunks then have to be uploaded again.
 import type { CubeMeta } from '../../../format/cube-index.js';
+import type { CubeStyle } from '../../../format/style.js';
 import type { Surface } from '../../../format/slicing-surface.js';
 import type { ViewGeometry } from '../geometry/view.js';
 import type { ChunkPayload } from '../source/worker-protocol.js';
 import { ChunkStore } from './chunk-store.js';
 import { ColourPass, type ColourParams } from './colour-pass.js';
+import { FaceStateTexture } from './face-state-texture.js';
 import type { GpuChunk } from './gpu-chunk.js';
 import type { IdBuffer } from './id-buffer.js';
 import { IdPass } from './id-pass.js';
 import { PresentPass } from './present-pass.js';
-import { createStyleTexture } from './style-texture.js';
+import { createStyleTexture, parseColour } from './style-texture.js';
 import { SurfacePass } from './surface-pass.js';
 import { Targets } from './targets.js';
 
@@ -21,8 +23,11 @@ export interface FrameParams {
   zMax: number;
   /** Sub-pixel offset of this frame (device pixels); [0, 0] for the plain image. */
   jitter: [number, number];
-  colour: Omit<ColourParams, 'style' | 'classCount'>;
+  colour: Omit<ColourParams, RendererColourParams>;
 }
+
+/** What the renderer adds to the colour pass's parameters: its own textures and the style's background. */
+type RendererColourParams = 'style' | 'classCount' | 'background' | 'faceState';
 
 interface Gpu {
   surface: SurfacePass;
@@ -32,12 +37,16 @@ interface Gpu {
   targets: Targets;
   emptyVao: WebGLVertexArrayObject;
   style: { texture: WebGLTexture; classCount: number } | null;
+  faceState: FaceStateTexture | null;
 }
 
 export class Renderer {
   readonly store: ChunkStore;
   private gpu: Gpu | null = null;
   private meta: CubeMeta | null = null;
+  private style: CubeStyle | null = null;
+  /** Each face's drawn states (bits), kept to make the feature state texture again after a lost context. */
+  private readonly faceStates = new Map<number, number>();
   private lastFrame: FrameParams | null = null;
   private lastChunks: GpuChunk[] = [];
   private idsJittered = false;
@@ -86,8 +95,20 @@ export class Renderer {
       present: new PresentPass(gl),
       targets,
       emptyVao: gl.createVertexArray(),
-      style: this.meta ? createStyleTexture(gl, this.meta) : null,
+      style: null,
+      faceState: null,
     };
+    this.makeStyleTextures();
+  }
+
+  /** The style and feature state textures, made again for the current meta and style. */
+  private makeStyleTextures(): void {
+    const g = this.gpu, meta = this.meta;
+    if (!g || !meta) return;
+    if (g.style) this.gl.deleteTexture(g.style.texture);
+    g.style = createStyleTexture(this.gl, this.style ?? meta.style, meta);
+    g.faceState?.delete();
+    g.faceState = new FaceStateTexture(this.gl, meta.faces.count, this.faceStates);
   }
 
   private readonly lostHandler = (ev: Event): void => {
@@ -103,12 +124,27 @@ export class Renderer {
     this.onRestored();
   };
 
-  setMeta(meta: CubeMeta): void {
+  /** The cube, drawn in `style` (its own style unless changed at run time). */
+  setMeta(meta: CubeMeta, style: CubeStyle = meta.style): void {
     this.meta = meta;
-    if (this.gpu) {
-      if (this.gpu.style) this.gl.deleteTexture(this.gpu.style.texture);
-      this.gpu.style = createStyleTexture(this.gl, meta);
-    }
+    this.style = style;
+    this.makeStyleTextures();
+  }
+
+  /** The style changed: the next frame draws in it. */
+  setStyle(style: CubeStyle): void {
+    this.style = style;
+    const g = this.gpu, meta = this.meta;
+    if (!g || !meta) return;
+    if (g.style) this.gl.deleteTexture(g.style.texture);
+    g.style = createStyleTexture(this.gl, style, meta);
+  }
+
+  /** The face's drawn states from the next frame on (bit i: DRAWN_STATES[i]). */
+  setFaceState(face: number, bits: number): void {
+    if (bits) this.faceStates.set(face, bits);
+    else this.faceStates.delete(face);
+    this.gpu?.faceState?.set(face, bits);
   }
 
   upload(payload: ChunkPayload, frame: number): boolean {
@@ -125,7 +161,7 @@ export class Renderer {
   /** Draws a frame; returns the triangles submitted. */
   render(f: FrameParams, chunks: GpuChunk[]): number {
     const g = this.gpu;
-    if (!g || !g.style) return 0;
+    if (!g || !g.style || !g.faceState || !this.style) return 0;
     const gl = this.gl;
     g.targets.resize(f.view.width, f.view.height);
     gl.bindVertexArray(g.emptyVao);
@@ -133,7 +169,7 @@ export class Renderer {
     const triangles = g.id.draw(g.targets, f.view, chunks, f.zMax + 1, f.jitter);
     this.idsJittered = f.jitter[0] !== 0 || f.jitter[1] !== 0;
     gl.bindVertexArray(g.emptyVao);
-    g.colour.draw(g.targets, { ...f.colour, style: g.style.texture, classCount: g.style.classCount });
+    g.colour.draw(g.targets, { ...f.colour, style: g.style.texture, classCount: g.style.classCount, background: parseColour(this.style.background), faceState: g.faceState.texture });
     g.present.draw(g.targets);
     gl.bindVertexArray(null);
     this.lastFrame = f;
@@ -141,30 +177,55 @@ export class Renderer {
     return triangles;
   }
 
-  /** The ID buffer of the last frame, without jitter. Null before the first frame or when lost. */
-  readIds(x = 0, y = 0, w?: number, h?: number): IdBuffer | null {
+  /** The ID targets as drawn without jitter (drawn again if the last frame was jittered); null when lost. */
+  private unjittered(): Gpu | null {
     const g = this.gpu;
     const f = this.lastFrame;
     if (!g || !f) return null;
-    const gl = this.gl;
-    const T = g.targets;
     if (this.idsJittered) {
       // Only chunks still on the GPU (some may have been evicted since).
       const chunks = this.lastChunks.filter((c) => this.store.get(c.file) === c);
-      g.id.draw(T, f.view, chunks, f.zMax + 1, [0, 0]);
+      g.id.draw(g.targets, f.view, chunks, f.zMax + 1, [0, 0]);
       this.idsJittered = false;
     }
+    return g;
+  }
+
+  /** W x H pixels of a target's attachment from GL row glY up (4 values a pixel, rows from the bottom). */
+  private readRect(fb: WebGLFramebuffer, attachment: number, integer: boolean, x: number, glY: number, W: number, H: number): Uint32Array | Float32Array {
+    const gl = this.gl;
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, fb);
+    gl.readBuffer(gl.COLOR_ATTACHMENT0 + attachment);
+    const out = integer ? new Uint32Array(W * H * 4) : new Float32Array(W * H * 4);
+    gl.readPixels(x, glY, W, H, integer ? gl.RGBA_INTEGER : gl.RGBA, integer ? gl.UNSIGNED_INT : gl.FLOAT, out);
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
+    return out;
+  }
+
+  /** The upper face of every pixel of the last frame, without jitter (rows from the top): a third of readIds' reading. */
+  readUpperFaces(): { width: number; height: number; upper: Uint32Array } | null {
+    const g = this.unjittered();
+    if (!g) return null;
+    const T = g.targets;
+    const W = T.width, H = T.height;
+    const ids = this.readRect(T.idFb, 0, true, 0, 0, W, H);
+    const upper = new Uint32Array(W * H);
+    for (let r = 0; r < H; r++) {
+      const src = (H - 1 - r) * W;
+      for (let i = 0; i < W; i++) upper[r * W + i] = ids[4 * (src + i)]!;
+    }
+    return { width: W, height: H, upper };
+  }
+
+  /** The ID buffer of the last frame, without jitter. Null before the first frame or when lost. */
+  readIds(x = 0, y = 0, w?: number, h?: number): IdBuffer | null {
+    const g = this.unjittered();
+    if (!g) return null;
+    const T = g.targets;
     const W = w ?? T.width - x, H = h ?? T.height - y;
     // Rows from the top in the result; GL counts them from the bottom.
     const glY = T.height - y - H;
-    const read = (fb: WebGLFramebuffer, attachment: number, integer: boolean): Uint32Array | Float32Array => {
-      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, fb);
-      gl.readBuffer(gl.COLOR_ATTACHMENT0 + attachment);
-      const out = integer ? new Uint32Array(W * H * 4) : new Float32Array(W * H * 4);
-      gl.readPixels(x, glY, W, H, integer ? gl.RGBA_INTEGER : gl.RGBA, integer ? gl.UNSIGNED_INT : gl.FLOAT, out);
-      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
-      return out;
-    };
+    const read = (fb: WebGLFramebuffer, attachment: number, integer: boolean): Uint32Array | Float32Array => this.readRect(fb, attachment, integer, x, glY, W, H);
     const ids = read(T.idFb, 0, true) as Uint32Array;
     const aux = read(T.idFb, 1, true) as Uint32Array;
     let slice: Float32Array;
@@ -207,6 +268,7 @@ export class Renderer {
       g.targets.delete();
       this.gl.deleteVertexArray(g.emptyVao);
       if (g.style) this.gl.deleteTexture(g.style.texture);
+      g.faceState?.delete();
     }
     this.gpu = null;
     // Gives the context itself back now rather than whenever the canvas is collected.

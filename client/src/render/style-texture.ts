@@ -1,28 +1,27 @@
 // The style as a texture the colour pass looks classes up in (one column per class):
 // row 0 the fill colour, row 1 the pattern colour and kind, row 2 the z range in which the
 // pattern shows (its scale range turned into steps, so the pass compares with the slice's z).
-import type { CubeMeta } from '../../../format/cube-index.js';
-import { zAtScale } from '../../../format/scale.js';
+import { zAtScale, type ScaleInfo } from '../../../format/scale.js';
+import type { CubeStyle } from '../../../format/style.js';
 import { texture2d } from './targets.js';
 
 export type Rgba = [number, number, number, number];
 
 const PATTERN_KIND = { hatch: 1, dots: 2, cross: 3 } as const;
 
-/** "#rrggbb", "#rgb" or "#rrggbbaa" as 0..1 components. */
-export function parseColour(css: string): Rgba {
+/** "#rrggbb", "#rgb" or "#rrggbbaa" as 0..1 components; `what` names it in the error. */
+export function parseColour(css: string, what = 'colour'): Rgba {
   let h = css.trim().replace(/^#/, '');
   if (h.length === 3) h = [...h].map((c) => c + c).join('');
-  if (!/^[0-9a-fA-F]{6}([0-9a-fA-F]{2})?$/.test(h)) throw new Error(`bad colour ${JSON.stringify(css)} (expected #rrggbb)`);
+  if (!/^[0-9a-fA-F]{6}([0-9a-fA-F]{2})?$/.test(h)) throw new Error(`${what} must be a colour "#rrggbb", not ${JSON.stringify(css)}`);
   const n = (i: number): number => parseInt(h.slice(i, i + 2), 16) / 255;
   return [n(0), n(2), n(4), h.length === 8 ? n(6) : 1];
 }
 
-export function styleData(meta: CubeMeta): { width: number; data: Float32Array } {
-  const classes = meta.style.classes;
+export function styleData(style: CubeStyle, info: ScaleInfo): { width: number; data: Float32Array } {
+  const classes = style.classes;
   const width = Math.max(1, classes.length);
   const data = new Float32Array(width * 3 * 4);
-  const info = { baseScale: meta.baseScale, baseFaces: meta.baseFaces, scaleTable: meta.scaleTable, zMax: meta.zMax };
   classes.forEach((c, i) => {
     const fill = parseColour(c.color);
     data.set([fill[0], fill[1], fill[2], 1], 4 * i);
@@ -38,11 +37,12 @@ export function styleData(meta: CubeMeta): { width: number; data: Float32Array }
   return { width, data };
 }
 
-export function createStyleTexture(gl: WebGL2RenderingContext, meta: CubeMeta): { texture: WebGLTexture; classCount: number } {
-  const { width, data } = styleData(meta);
+/** The style's texture; `info` turns the patterns' scale ranges into z (steps). */
+export function createStyleTexture(gl: WebGL2RenderingContext, style: CubeStyle, info: ScaleInfo): { texture: WebGLTexture; classCount: number } {
+  const { width, data } = styleData(style, info);
   const texture = texture2d(gl, gl.RGBA32F, width, 3);
   gl.bindTexture(gl.TEXTURE_2D, texture);
   gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, width, 3, gl.RGBA, gl.FLOAT, data);
   gl.bindTexture(gl.TEXTURE_2D, null);
-  return { texture, classCount: meta.style.classes.length };
+  return { texture, classCount: style.classes.length };
 }

@@ -1,5 +1,5 @@
 // The elements controls are made of: a group box and a labelled button (keyboard-operable as
-// a native button is).
+// a native button is), and SVG drawings.
 
 export function controlGroup(className: string): HTMLElement {
   const d = document.createElement('div');
@@ -50,4 +50,16 @@ export function select(options: [string, string][], value: string): HTMLSelectEl
   }
   s.value = value;
   return s;
+}
+
+/** An SVG element with these attributes (a drawing of `size` px square when `name` is 'svg'). */
+export function svgNode<K extends keyof SVGElementTagNameMap>(name: K, attributes: Record<string, string | number>): SVGElementTagNameMap[K] {
+  const el = document.createElementNS('http://www.w3.org/2000/svg', name);
+  for (const [k, v] of Object.entries(attributes)) el.setAttribute(k, String(v));
+  return el;
+}
+
+/** A decorative drawing (hidden from screen readers), `size` CSS px square in its own units. */
+export function svgIcon(size: number): SVGSVGElement {
+  return svgNode('svg', { viewBox: `0 0 ${size} ${size}`, width: size, height: size, 'aria-hidden': 'true' });
 }

@@ -2,7 +2,7 @@
 // too), as MapLibre's: its label says what a press does. The map follows the new size by
 // itself (its canvas watches its container).
 import type { Control, VarioMap } from '../vario-map.js';
-import { controlButton, controlGroup } from './control-dom.js';
+import { controlButton, controlGroup, svgIcon, svgNode } from './control-dom.js';
 
 export interface FullscreenOptions {
   /** What goes fullscreen: by default the map's container, controls and all. */
@@ -54,18 +54,8 @@ export class FullscreenControl implements Control {
 
 /** Four corners, drawn: the fullscreen glyph (U+26F6) is missing from many fonts. */
 function cornersIcon(): SVGSVGElement {
-  const ns = 'http://www.w3.org/2000/svg';
-  const svg = document.createElementNS(ns, 'svg');
-  svg.setAttribute('viewBox', '0 0 18 18');
-  svg.setAttribute('width', '18');
-  svg.setAttribute('height', '18');
-  svg.setAttribute('aria-hidden', 'true');
+  const svg = svgIcon(18);
   svg.style.verticalAlign = 'middle';
-  const path = document.createElementNS(ns, 'path');
-  path.setAttribute('d', 'M2 7V2h5M11 2h5v5M16 11v5h-5M7 16H2v-5');
-  path.setAttribute('fill', 'none');
-  path.setAttribute('stroke', 'currentColor');
-  path.setAttribute('stroke-width', '2');
-  svg.append(path);
+  svg.append(svgNode('path', { d: 'M2 7V2h5M11 2h5v5M16 11v5h-5M7 16H2v-5', fill: 'none', stroke: 'currentColor', 'stroke-width': 2 }));
   return svg;
 }

@@ -1,0 +1,68 @@
+// Horizontal class changes on a hand-drawn partition with a merge, a split and a simplification:
+//
+//   +-------------------------------------+  y = 6
+//   |                 A (class a)         |       A: the top strip (face 4)
+//   +--------+--+------------/\-----------+  y = 4  W: the west square (face 1, class a)
+//   |        |  |       B (class b)       |       /\: a bump of B into A at x 6.8..7, height 0.1
+//   |  W (a) |R |                         |       R: a road (linear class r), x 4..5
+//   |        |  |                         |
+//   +--------+--+-------------------------+  y = 0
+//   0        4  5                         9
+//
+// Generalized: R splits between W and B (step 1), W merges into A (same class), then A
+// (class a) into B (class b, weight 3). The bump's vertex goes by simplification.
+import test from 'node:test';
+import assert from 'node:assert/strict';
+import { fixtureStyle, fixtureTgap, rect, type XY } from '../../testing/planar-fixtures.js';
+import { horizontalChanges } from './horizontal-changes.js';
+import { buildSurfaces } from './surfaces.js';
+
+const BUMP: XY[] = [[7, 4], [6.9, 4.1], [6.8, 4]];
+const t = fixtureTgap([
+  { cls: 'a', rings: [rect(0, 0, 4, 4)] },
+  { cls: 'r', rings: [rect(4, 0, 5, 4)] },
+  { cls: 'b', rings: [[[5, 0], [9, 0], [9, 4], ...BUMP, [5, 4]]] },
+  { cls: 'a', rings: [[[0, 4], [4, 4], [5, 4], ...[...BUMP].reverse(), [9, 4], [9, 6], [0, 6]]] },
+], ['a', 'r', 'b'], fixtureStyle([{ key: 'a' }, { key: 'r', linear: true }, { key: 'b', weight: 3 }]));
+
+const near = (a: number, b: number, what: string): void => assert.ok(Math.abs(a - b) < 1e-9, `${what}: ${a}, expected ${b}`);
+
+test('the classic cube: the road\'s split, the bump\'s simplification and the merge of a into b change class at one z', () => {
+  const { surfaces, transitions } = buildSurfaces(t);
+  const h = horizontalChanges(t, surfaces, transitions);
+  // The whole road (4 x 1) goes to W and B, both of another class than r.
+  near(h.areaByKind.split, 4, 'split area');
+  // The bump's triangle: base 0.2, height 0.1.
+  near(h.areaByKind.simplify, 0.01, 'simplified area');
+  // W into A changes no class; A into B does: all of A but what B already had.
+  assert.ok(h.byKind.merge > 0 && h.areaByKind.merge > 30, `merge: ${h.byKind.merge} triangles, area ${h.areaByKind.merge}`);
+  assert.equal(h.byKind.reemit, 0);
+  assert.equal(h.byKind.mergeFlat, 0, 'no merge is tilted');
+  assert.equal(h.total, h.byKind.merge + h.byKind.split + h.byKind.simplify);
+  assert.equal(h.total, [...Array(surfaces.count).keys()].filter((i) => surfaces.zMin[i]! > 0 && t.faces[surfaces.upper[i]!]!.classIndex !== t.faces[surfaces.lower[i]!]!.classIndex).length,
+    'every class-changing triangle above the floor (all are horizontal here)');
+});
+
+test('the smooth cube tilts the merges and the simplification: only the split is left', () => {
+  const classic = buildSurfaces(t);
+  const smooth = buildSurfaces(t, { smooth: true });
+  const c = horizontalChanges(t, classic.surfaces, classic.transitions);
+  const s = horizontalChanges(t, smooth.surfaces, smooth.transitions);
+  assert.equal(s.byKind.merge + s.byKind.mergeFlat + s.byKind.simplify, 0);
+  assert.ok(c.byKind.simplify > 0, 'the classic cube has the bump\'s simplification flat');
+  assert.deepEqual([s.byKind.split, s.byKind.reemit], [c.byKind.split, c.byKind.reemit]);
+  assert.equal(s.total, c.total - c.byKind.merge - c.byKind.simplify);
+});
+
+test('a flat triangle inside a tilted merge counts as mergeFlat, with its area', () => {
+  // W = [0,4] x [0,4] (class a) and L = [4,6] x [0,4] (class b): L merges into W, tilted from x = 4.
+  const two = fixtureTgap([{ cls: 'a', rings: [rect(0, 0, 4, 4)] }, { cls: 'b', rings: [rect(4, 0, 6, 4)] }], ['a', 'b']);
+  const { surfaces: s, transitions } = buildSurfaces(two, { smooth: true });
+  assert.deepEqual(horizontalChanges(two, s, transitions).byKind, { merge: 0, mergeFlat: 0, split: 0, simplify: 0, reemit: 0 });
+  // Lay L's first triangle flat at its lowest corner's z: half of L (area 4) now goes at once.
+  const i = [...Array(s.count).keys()].find((k) => s.lower[k] === 2 && s.upper[k] === 1)!;
+  s.z.fill(s.zMin[i]!, 3 * i, 3 * i + 3);
+  const h = horizontalChanges(two, s, transitions);
+  assert.equal(h.byKind.mergeFlat, 1);
+  near(h.areaByKind.mergeFlat, 4, 'flat area');
+});
