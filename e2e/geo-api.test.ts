@@ -15,6 +15,7 @@ import { openDemo, resolution, settle, type VarioWindow } from './helpers/vario-
 
 type LngLatJson = { lng: number; lat: number };
 type XY = [number, number];
+type XY4 = [number, number, number, number];
 
 /** Metres between a place given in longitude/latitude and a point of RD New, through proj4 in Node. */
 const metresOff = (ll: LngLatJson, rd: XY): number => {
@@ -104,6 +105,23 @@ describe('longitude/latitude and zoom in the API (bgt_otterlo_400m, EPSG:28992)'
     assert.ok(inside, `the box ${want.join(', ')} is within the view ${shown.join(', ')}`);
     const fitsWidth = Math.abs(shown[0] - want[0]!) < CM && Math.abs(shown[2] - want[2]!) < CM;
     assert.ok(fitsWidth, `the wide box fills the view's width: ${shown.join(', ')} for ${want.join(', ')}`);
+  });
+
+  test('setMaxBounds() of a longitude/latitude box limits the view to the RD New box around it', async () => {
+    bed.page = await openDemo(bed.browser, bed.server.url);
+    const page = bed.page.page;
+    const [sw, ne] = [rdToLngLat([middle()[0] - 400, middle()[1] - 300]), rdToLngLat([middle()[0] + 400, middle()[1] + 300])];
+    const r = await page.evaluate(async (bx) => {
+      const m = (globalThis as unknown as VarioWindow & { map: { setMaxBounds(b: number[]): unknown; getMaxBoundsProjected(): XY4 } }).map;
+      m.setMaxBounds(bx);
+      // A flight far to the north-east ends in the box's corner.
+      await m.flyTo({ centerProjected: [1e9, 1e9], scaleDenominator: 1000, duration: 0 });
+      return { limit: m.getMaxBoundsProjected(), view: m.getBoundsProjected() };
+    }, [sw[0], sw[1], ne[0], ne[1]]);
+    const rd = ([[sw[0], sw[1]], [ne[0], sw[1]], [ne[0], ne[1]], [sw[0], ne[1]]] as XY[]).map(lngLatToRd);
+    const want = [Math.min(...rd.map((p) => p[0])), Math.min(...rd.map((p) => p[1])), Math.max(...rd.map((p) => p[0])), Math.max(...rd.map((p) => p[1]))];
+    r.limit.forEach((v, i) => assert.ok(Math.abs(v - want[i]!) < CM, `limit ${r.limit.join(', ')} vs ${want.join(', ')}`));
+    assert.ok(Math.abs(r.view[2] - want[2]!) < CM && Math.abs(r.view[3] - want[3]!) < CM, `the view ends in the north-east corner: ${r.view.join(', ')}`);
   });
 
   test("getZoom() is MapLibre's zoom at the view's latitude, and setZoom() and the zoom option mean the same", async () => {

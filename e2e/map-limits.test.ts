@@ -13,7 +13,8 @@ type Bbox = [number, number, number, number];
 /** The limit methods, beside what the other tests use. */
 interface LimitsApi extends VarioApi {
   setMaxBounds(b: Bbox | null): unknown;
-  getMaxBounds(): Bbox | null;
+  setMaxBoundsProjected(b: Bbox | null): unknown;
+  getMaxBoundsProjected(): Bbox | null;
   setMinScale(s: number | null): unknown;
   getMinScale(): number;
   setMaxScale(s: number | null): unknown;
@@ -41,8 +42,8 @@ describe('map limits (bgt_otterlo_400m)', () => {
     const c = await camera(page);
     const r = px(3000);
     const box: Bbox = [c.x - 600 * r, c.y - 450 * r, c.x + 600 * r, c.y + 450 * r];
-    await page.evaluate((b) => (globalThis as unknown as LimitsWindow).map.setMaxBounds(b), box);
-    assert.deepEqual(await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.getMaxBounds()), box);
+    await page.evaluate((b) => (globalThis as unknown as LimitsWindow).map.setMaxBoundsProjected(b), box);
+    assert.deepEqual(await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.getMaxBoundsProjected()), box);
     await record(page);
     return { page, box };
   }

@@ -32,8 +32,10 @@ export interface VarioMapOptions extends Partial<HandlerFlags>, Omit<EngineOptio
   /** Smallest scale denominator (most detail) and largest; defaults: a quarter of the base scale, 4x the extent. */
   minScale?: number;
   maxScale?: number;
-  /** The ground box (x0, y0, x1, y1) the visible area stays inside: no pan or zoom out leaves it. */
-  maxBounds?: Bbox;
+  /** The longitude/latitude box the visible area stays inside (the projected box around it): no pan or zoom out leaves it. */
+  maxBounds?: LngLatBoundsLike;
+  /** The same in the cube's projected CRS: x0, y0, x1, y1. */
+  maxBoundsProjected?: Bbox;
   /** A map inside a page that scrolls: the wheel zooms only with Ctrl (or ⌘), one finger scrolls the page and two move the map. */
   cooperativeGestures?: boolean;
   /** false turns every input handler off. */

@@ -44,7 +44,7 @@ const DATA_EVENTS: (keyof DataEvents)[] = ['load', 'idle', 'error', 'contextlost
 const FLIGHT_SAMPLES = 16;
 
 /** A view asked for before the cube (and so its CRS) is known: shown when it is. */
-type PendingView = { camera: CameraOptions } | { fit: ProjectedBox; options: FitBoundsOptions };
+type PendingView = { camera: CameraOptions } | { fit: ProjectedBox; options: FitBoundsOptions } | { maxBounds: ProjectedBox };
 
 /** A box in the cube's CRS, computed when asked (a longitude/latitude box needs the CRS). */
 type ProjectedBox = () => Bbox;
@@ -95,7 +95,10 @@ export class VarioMap extends Evented<VarioMapEvents> {
     const { center, centerProjected, zoom, scaleDenominator } = options;
     this.pending.push({ camera: { center, centerProjected, zoom, scaleDenominator } });
     this.scaleLimits = new ScaleLimits(this.view, options.minScale, options.maxScale);
-    if (options.maxBounds) this.view.setLimits({ maxBounds: options.maxBounds });
+    const { maxBounds, maxBoundsProjected } = options;
+    if (maxBoundsProjected) this.view.setLimits({ maxBounds: maxBoundsProjected });
+    // Before the views, so that they keep to it.
+    else if (maxBounds) this.pending.unshift({ maxBounds: () => this.geo().projectedBox(LngLatBounds.convert(maxBounds)) });
     if (options.surface) this.view.setSurface(typeof options.surface === 'string' ? parseSurface(options.surface) : options.surface);
     this.engine = new MapEngine(this.dom.canvasContainer, this.view, options);
     bindEngine(this, this.engine);
@@ -261,15 +264,30 @@ export class VarioMap extends Evented<VarioMapEvents> {
   // ---- the limits ------------------------------------------------------------------------------
 
   /**
-   * The ground box the visible area stays inside (null: none). The view moves within it at
-   * once; no pan, zoom or animation leaves it after.
+   * The longitude/latitude box the visible area stays inside (the projected box around it;
+   * null: none). The view moves within it at once; no pan, zoom or animation leaves it after.
    */
-  setMaxBounds(bounds: Bbox | null): this {
+  setMaxBounds(bounds: LngLatBoundsLike | null): this {
+    if (bounds === null) return this.setMaxBoundsProjected(null);
+    const box = (): Bbox => this.geo().projectedBox(LngLatBounds.convert(bounds));
+    if (this.view.meta) return this.setMaxBoundsProjected(box());
+    this.pending.push({ maxBounds: box });
+    return this;
+  }
+
+  /** setMaxBounds for a box in the cube's projected CRS: x0, y0, x1, y1. */
+  setMaxBoundsProjected(bounds: Bbox | null): this {
     this.view.setLimits({ maxBounds: bounds });
     return this;
   }
 
-  getMaxBounds(): Bbox | null {
+  /** The longitude/latitude box around the limit (null: none). */
+  getMaxBounds(): LngLatBounds | null {
+    const b = this.getMaxBoundsProjected();
+    return b ? this.geo().lngLatBox(b) : null;
+  }
+
+  getMaxBoundsProjected(): Bbox | null {
     return this.view.limits.maxBounds;
   }
 
@@ -533,6 +551,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
     for (const p of pending) {
       try {
         if ('camera' in p) this.view.place(this.target(p.camera));
+        else if ('maxBounds' in p) this.view.setLimits({ maxBounds: p.maxBounds() });
         else {
           if (p.options.sliceZ !== undefined) this.view.pinZ(p.options.sliceZ);
           this.view.place(this.engine.fitCamera(p.fit(), p.options.padding ?? 0));
