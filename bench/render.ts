@@ -21,8 +21,8 @@ const WIDTH = 1280, HEIGHT = 720, FRAMES = 60, WARMUP = 5;
 /** The test page's map (a VarioMap) and its engine (engineOf(map)), as the page has them. */
 interface PageMap {
   whenIdle(): Promise<{ complete: boolean }>;
-  getCenter(): [number, number];
-  jumpTo(v: { center: [number, number] }): void;
+  getCenterProjected(): [number, number];
+  jumpTo(v: { centerProjected: [number, number] }): void;
   getMetadata(): unknown;
 }
 interface PageEngine {
@@ -97,7 +97,7 @@ async function main(): Promise<void> {
               ([n]) =>
                 new Promise<{ t: number; triangles: number; queryMs: number }[]>((resolve) => {
                   const out: { t: number; triangles: number; queryMs: number }[] = [];
-                  const [cx, cy] = map.getCenter();
+                  const [cx, cy] = map.getCenterProjected();
                   const f = (s: { triangles: number; queryMs: number }): void => {
                     out.push({ t: performance.now(), triangles: s.triangles, queryMs: s.queryMs });
                     if (out.length >= n) {
@@ -106,7 +106,7 @@ async function main(): Promise<void> {
                       return;
                     }
                     // A new view every frame (a millimetre pan): a full redraw and an index query.
-                    map.jumpTo({ center: [cx + (out.length % 2) * 1e-3, cy] });
+                    map.jumpTo({ centerProjected: [cx + (out.length % 2) * 1e-3, cy] });
                   };
                   engine.on('render', f);
                   engine.redraw();
@@ -128,7 +128,7 @@ async function main(): Promise<void> {
                     engine.off('render', f);
                     resolve(st.triangles);
                   };
-                  map.jumpTo({ center: at });
+                  map.jumpTo({ centerProjected: at });
                   void map.whenIdle().then(() => {
                     engine.on('render', f);
                     engine.redraw();

@@ -115,7 +115,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   }
 
   async function goTo(p: MapPage, bbox: Bbox, z: number): Promise<void> {
-    await p.page.evaluate(([b, zz]) => map.fitBounds(b, { sliceZ: zz, duration: 0 }), [bbox, z] as const);
+    await p.page.evaluate(([b, zz]) => map.fitBoundsProjected(b, { sliceZ: zz, duration: 0 }), [bbox, z] as const);
   }
 
   async function assertMatchesSlicer(p: MapPage, bbox: Bbox, z: number, label: string): Promise<void> {

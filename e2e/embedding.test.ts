@@ -2,13 +2,11 @@
 // (UMD) build with its inlined worker, and the ES module build with its worker file; and
 // remove(), which must leave no worker, no GPU context and no listener behind.
 import assert from 'node:assert/strict';
-import { after, afterEach, before, describe, test } from 'node:test';
+import { describe, test } from 'node:test';
 import type { Page } from 'playwright-core';
-import { openMap, type MapPage } from './helpers/browser.js';
-import { readCube, type CubeContents } from './helpers/cube.js';
-import { LIB_PAGE_HEAD, startLibSite, type LibSite } from './helpers/lib-site.js';
+import { openMap } from './helpers/browser.js';
+import { LIB_PAGE_HEAD, useLibSite } from './helpers/lib-site.js';
 import { hexColour, pixel, screenshot } from './helpers/map-page.js';
-import { checkAndClose } from './helpers/test-bed.js';
 import { camera, idle, settle, type VarioWindow } from './helpers/vario-page.js';
 
 const PAGES: Record<string, string> = {
@@ -50,32 +48,16 @@ const PAGES: Record<string, string> = {
 };
 
 describe('the library builds in plain pages (bgt_otterlo_400m)', () => {
-  let lib: LibSite;
-  let contents: CubeContents;
-  let mp: MapPage | null = null;
-
-  before(async () => {
-    lib = await startLibSite(PAGES);
-    contents = await readCube(lib.cube.dir);
-  });
-
-  afterEach(async () => {
-    await checkAndClose(mp);
-    mp = null;
-  });
-
-  after(async () => {
-    await lib?.close();
-  });
+  const bed = useLibSite(PAGES);
 
   async function open(name: string): Promise<{ page: Page }> {
-    mp = await openMap(lib.browser, lib.server.url, {}, { page: name });
-    return { page: mp.page };
+    bed.page = await openMap(bed.site.browser, bed.site.server.url, {}, { page: name });
+    return { page: bed.page.page };
   }
 
   /** Share of the screen in one of the style's class colours: a map is drawn. */
   async function mapShare(page: Page): Promise<number> {
-    const colours = contents.meta.style.classes.map((c) => hexColour(c.color).join());
+    const colours = bed.contents.meta.style.classes.map((c) => hexColour(c.color).join());
     const img = await screenshot(page);
     let n = 0;
     for (let j = 0; j < img.height; j += 4) for (let i = 0; i < img.width; i += 4) if (colours.includes(pixel(img, i, j).join())) n++;
@@ -115,7 +97,7 @@ describe('the library builds in plain pages (bgt_otterlo_400m)', () => {
 
   test('remove() ends the worker, gives the GPU context back and leaves no listener', async () => {
     const { page } = await open('remove.html');
-    const cdp = await mp!.context.newCDPSession(page);
+    const cdp = await bed.page!.context.newCDPSession(page);
     // Which script added a listener: only the library's count (Playwright's input adds its own).
     const scripts = new Map<string, string>();
     cdp.on('Debugger.scriptParsed', (e: { scriptId: string; url: string }) => scripts.set(e.scriptId, e.url));

@@ -7,7 +7,8 @@ import { describe, test } from 'node:test';
 import { boxMeets } from '../format/index-query.js';
 import { growBbox } from '../client/src/geometry/view.js';
 import { useTestBed } from './helpers/test-bed.js';
-import { camera, openDemo, record, recorded, settle, type VarioWindow } from './helpers/vario-page.js';
+import { mapLibreZoom, rdToLngLat } from './helpers/geo.js';
+import { camera, openDemo, record, recorded, resolution, settle, type VarioWindow } from './helpers/vario-page.js';
 
 describe('flyTo (bgt_otterlo_400m in small chunks)', () => {
   const bed = useTestBed(['--no-precompress', '--chunk-bytes', '16384']);
@@ -19,13 +20,15 @@ describe('flyTo (bgt_otterlo_400m in small chunks)', () => {
     const scale = bed.contents.meta.baseScale;
     // Opened at the start (the demo keeps its view in the hash): only its chunks are loaded.
     const start = at(0.15, 0.15);
-    bed.page = await openDemo(bed.browser, bed.server.url, {}, { hash: `#${start[0]}/${start[1]}/${scale}` });
+    const [lng, lat] = rdToLngLat(start);
+    const zoom = mapLibreZoom(resolution(scale, bed.contents.meta.pixelSizeMm), lat);
+    bed.page = await openDemo(bed.browser, bed.server.url, {}, { hash: `#${zoom}/${lat}/${lng}` });
     const page = bed.page.page;
     await record(page);
     const target = at(0.85, 0.85);
     const flight = await page.evaluate(async (c) => {
       const t0 = performance.now();
-      const done = await (globalThis as unknown as VarioWindow).map.flyTo({ center: c, scaleDenominator: 1000, duration: 4000 });
+      const done = await (globalThis as unknown as VarioWindow).map.flyTo({ centerProjected: c, scaleDenominator: 1000, duration: 4000 });
       return { t0, done };
     }, target);
     const arrived = flight.done;

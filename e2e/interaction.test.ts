@@ -24,7 +24,7 @@ describe('interaction (bgt_otterlo_400m)', () => {
     return bed.page.page;
   }
 
-  async function startAt(page: Page, cam: { center?: [number, number]; scaleDenominator: number }): Promise<Camera> {
+  async function startAt(page: Page, cam: { centerProjected?: [number, number]; scaleDenominator: number }): Promise<Camera> {
     await page.evaluate((c) => (globalThis as unknown as VarioWindow).map.jumpTo(c), cam);
     await page.evaluate(() => (globalThis as unknown as VarioWindow).map.whenIdle());
     return camera(page);
@@ -105,7 +105,7 @@ describe('interaction (bgt_otterlo_400m)', () => {
     await page.evaluate(() => {
       const w = globalThis as unknown as VarioWindow & { atRelease: [number, number] | null };
       w.atRelease = null;
-      (globalThis as unknown as PageWindow).document.addEventListener('pointerup', () => (w.atRelease = w.map.getCenter()), { capture: true, once: true });
+      (globalThis as unknown as PageWindow).document.addEventListener('pointerup', () => (w.atRelease = w.map.getCenterProjected()), { capture: true, once: true });
     });
     const before = await camera(page);
     await page.mouse.move(560, 240);
@@ -139,7 +139,7 @@ describe('interaction (bgt_otterlo_400m)', () => {
       (c) => {
         const w = globalThis as unknown as VarioWindow & { wheelAt: number };
         (globalThis as unknown as PageWindow).document.addEventListener('wheel', () => (w.wheelAt = performance.now()), { capture: true, once: true });
-        void w.map.easeTo({ center: c, duration: 20_000 });
+        void w.map.easeTo({ centerProjected: c, duration: 20_000 });
       },
       far,
     );
@@ -195,11 +195,11 @@ describe('interaction (bgt_otterlo_400m)', () => {
     assert.ok(Math.abs(c.scale - start.scale / 2) < 1e-6 * start.scale);
     assert.ok(Math.hypot(c.x - start.x, c.y - start.y) < 1e-6, 'about the centre');
     await page.keyboard.press('ArrowRight');
-    await settle(page, `window.map.getCenter()[0] > ${c.x + 50 * px(c.scale)}`);
+    await settle(page, `window.map.getCenterProjected()[0] > ${c.x + 50 * px(c.scale)}`);
     const r = await camera(page);
     assert.ok(Math.abs((r.x - c.x) / px(c.scale) - 100) < 0.5 && Math.abs(r.y - c.y) < 1e-6, `moved ${((r.x - c.x) / px(c.scale)).toFixed(2)} px`);
     await page.keyboard.press('ArrowUp');
-    await settle(page, `window.map.getCenter()[1] > ${r.y + 50 * px(c.scale)}`);
+    await settle(page, `window.map.getCenterProjected()[1] > ${r.y + 50 * px(c.scale)}`);
     c = await camera(page);
     assert.ok(Math.abs((c.y - r.y) / px(c.scale) - 100) < 0.5, 'up shows what is north');
     await page.keyboard.press('-');
@@ -337,7 +337,7 @@ describe('interaction (bgt_otterlo_400m)', () => {
     assert.ok(Math.abs(moves[0]!.scale - start.scale / 2) < 1e-6 * start.scale);
     await record(page);
     const target: [number, number] = [start.x + 100, start.y - 80];
-    await page.evaluate((c) => (globalThis as unknown as VarioWindow).map.flyTo({ center: c, scaleDenominator: 1500 }), target);
+    await page.evaluate((c) => (globalThis as unknown as VarioWindow).map.flyTo({ centerProjected: c, scaleDenominator: 1500 }), target);
     moves = (await recorded(page)).filter((r) => r.type === 'move');
     assert.equal(moves.length, 1);
     assert.deepEqual([moves[0]!.x, moves[0]!.y, moves[0]!.scale], [...target, 1500]);

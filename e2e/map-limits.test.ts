@@ -13,7 +13,8 @@ type Bbox = [number, number, number, number];
 /** The limit methods, beside what the other tests use. */
 interface LimitsApi extends VarioApi {
   setMaxBounds(b: Bbox | null): unknown;
-  getMaxBounds(): Bbox | null;
+  setMaxBoundsProjected(b: Bbox | null): unknown;
+  getMaxBoundsProjected(): Bbox | null;
   setMinScale(s: number | null): unknown;
   getMinScale(): number;
   setMaxScale(s: number | null): unknown;
@@ -41,8 +42,8 @@ describe('map limits (bgt_otterlo_400m)', () => {
     const c = await camera(page);
     const r = px(3000);
     const box: Bbox = [c.x - 600 * r, c.y - 450 * r, c.x + 600 * r, c.y + 450 * r];
-    await page.evaluate((b) => (globalThis as unknown as LimitsWindow).map.setMaxBounds(b), box);
-    assert.deepEqual(await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.getMaxBounds()), box);
+    await page.evaluate((b) => (globalThis as unknown as LimitsWindow).map.setMaxBoundsProjected(b), box);
+    assert.deepEqual(await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.getMaxBoundsProjected()), box);
     await record(page);
     return { page, box };
   }
@@ -63,13 +64,13 @@ describe('map limits (bgt_otterlo_400m)', () => {
     for (let i = 1; i <= 12; i++) await page.mouse.move(20 + 50 * i, 240);
     await page.mouse.up();
     await settle(page, 'true');
-    const bounds = await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.getBounds());
+    const bounds = await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.getBoundsProjected());
     assert.ok(Math.abs(bounds[0] - box[0]) < 1e-6, `the west edges meet: ${bounds[0]} vs ${box[0]}`);
     assert.ok((await allInside(page, box)) >= 5, 'the drag moved the map');
     // 160 px wider, about the centre: the view would reach 80 px past the west edge.
     await page.setViewportSize({ width: 800, height: 480 });
-    await page.waitForFunction(`Math.abs(window.map.getBounds()[2] - window.map.getBounds()[0] - ${800 * px(3000)}) < 1e-6`);
-    const wider = await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.getBounds());
+    await page.waitForFunction(`Math.abs(window.map.getBoundsProjected()[2] - window.map.getBoundsProjected()[0] - ${800 * px(3000)}) < 1e-6`);
+    const wider = await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.getBoundsProjected());
     assert.ok(Math.abs(wider[0] - box[0]) < 1e-6, `after a resize the west edges still meet: ${wider[0]} vs ${box[0]}`);
   });
 
@@ -81,13 +82,13 @@ describe('map limits (bgt_otterlo_400m)', () => {
     // 1200 x 900 px of 1:3000 fill 640 x 480 px at 1:3000 x min(1200/640, 900/480) = 1:5625.
     const end = await camera(page);
     assert.ok(Math.abs(end.scale - 5625) < 1e-6, `scale 1:${end.scale}`);
-    await page.evaluate((b) => (globalThis as unknown as LimitsWindow).map.flyTo({ center: [b[2] + 5000, b[3] + 5000], scaleDenominator: 3000, duration: 400 }), box);
+    await page.evaluate((b) => (globalThis as unknown as LimitsWindow).map.flyTo({ centerProjected: [b[2] + 5000, b[3] + 5000], scaleDenominator: 3000, duration: 400 }), box);
     await settle(page, 'true');
-    const bounds = await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.getBounds());
+    const bounds = await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.getBoundsProjected());
     assert.ok(Math.abs(bounds[2] - box[2]) < 1e-6 && Math.abs(bounds[3] - box[3]) < 1e-6, `in the north-east corner: ${bounds} vs ${box}`);
     await allInside(page, box);
     await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.setMaxBounds(null));
-    await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.jumpTo({ center: [0, 0] }));
+    await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.jumpTo({ centerProjected: [0, 0] }));
     assert.deepEqual((await camera(page)).x, 0, 'without maxBounds the view goes anywhere');
   });
 

@@ -234,7 +234,7 @@ describe('the demo map served by nginx with the documented config (bgt_otterlo_4
   async function view(p: Page): Promise<{ bounds: [number, number, number, number]; z: number }> {
     return p.evaluate(() => {
       const m = (globalThis as unknown as VarioWindow).map;
-      return { bounds: m.getBounds(), z: m.getSliceZ() };
+      return { bounds: m.getBoundsProjected(), z: m.getSliceZ() };
     });
   }
 
@@ -382,7 +382,7 @@ describe('the demo map served by nginx with the documented config (bgt_otterlo_4
     const here = await camera(p);
     const other = await openDemo(browser!, server!.url);
     try {
-      await other.page.evaluate((c) => (globalThis as unknown as VarioWindow).map.jumpTo({ center: [c.x, c.y], scaleDenominator: c.scale }), here);
+      await other.page.evaluate((c) => (globalThis as unknown as VarioWindow).map.jumpTo({ centerProjected: [c.x, c.y], scaleDenominator: c.scale }), here);
       await idle(other.page);
       assert.deepEqual(await camera(other.page), here);
       const fromNginx = await screenshot(p);

@@ -35,7 +35,7 @@ function uncached(page: Page): Promise<string[]> {
 const names = (urls: string[]): string[] => urls.map((u) => decodeURIComponent(new URL(u).pathname.split('/').pop()!)).sort();
 
 async function jumpAndShoot(page: Page, cam: Camera): Promise<{ complete: boolean; png: Buffer }> {
-  await page.evaluate((c) => (globalThis as unknown as VarioWindow).map.jumpTo({ center: [c.x, c.y], scaleDenominator: c.scale }), cam);
+  await page.evaluate((c) => (globalThis as unknown as VarioWindow).map.jumpTo({ centerProjected: [c.x, c.y], scaleDenominator: c.scale }), cam);
   const r = await page.evaluate(() => (globalThis as unknown as VarioWindow).map.whenIdle());
   return { complete: r.complete, png: await page.locator('#map canvas').screenshot() };
 }
@@ -128,7 +128,7 @@ describe('offline use (bgt_otterlo_400m, service worker)', () => {
       assert.ok(off.png.equals(online[i]!.png), `view ${i} offline looks as it did online`);
     }
     // Real input within what was seen: from the second view, zoom in a step about the same point.
-    await page.evaluate((c) => (globalThis as unknown as VarioWindow).map.jumpTo({ center: [c.x, c.y], scaleDenominator: c.scale }), views[2]!);
+    await page.evaluate((c) => (globalThis as unknown as VarioWindow).map.jumpTo({ centerProjected: [c.x, c.y], scaleDenominator: c.scale }), views[2]!);
     await page.mouse.move(250, 200);
     await page.mouse.wheel(0, -100);
     await settle(page, `window.map.getScaleDenominator() < ${views[2]!.scale * 0.75}`);

@@ -255,7 +255,7 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
     await p.page.setViewportSize({ width: 500, height: 300 });
     await p.page.waitForFunction(() => engine.getView().width === 500 && engine.getView().height === 300);
     const bbox: Bbox = [ext()[0] + 50, ext()[1] + 80, ext()[0] + 300, ext()[1] + 230];
-    const ids = await set(p, `map.fitBounds([${bbox.join(',')}], { sliceZ: ${z}, duration: 0 })`);
+    const ids = await set(p, `map.fitBoundsProjected([${bbox.join(',')}], { sliceZ: ${z}, duration: 0 })`);
     assert.deepEqual([ids.width, ids.height], [500, 300]);
     const ref = await cpuSlice(cube.dir, { step: z, width: 500, height: 300, bbox });
     assert.ok(compareIds(ids.upper, ref, 500, 300).share >= 0.995);

@@ -51,7 +51,7 @@ interface StyleMap {
   on(type: string, fn: (ev: { feature: PickedFeature | null }) => void): unknown;
   off(type: string, fn: (ev: { feature: PickedFeature | null }) => void): unknown;
   getScaleDenominator(): number;
-  getBounds(): [number, number, number, number];
+  getBoundsProjected(): [number, number, number, number];
 }
 interface StyleWindow {
   map: StyleMap;
@@ -226,7 +226,7 @@ describe('run-time style and feature state (bgt_otterlo_400m)', () => {
     // Its outline on screen encloses exactly the face's pixels: the rings' signed area (outer
     // rings counter-clockwise, holes clockwise) is the face's pixel count times a pixel's area.
     const [picked] = await p.page.evaluate((pt) => (globalThis as unknown as StyleWindow).map.queryFeatures(pt, { outline: true }), [(k0 % W) + 0.5, Math.floor(k0 / W) + 0.5] as [number, number]);
-    const bounds = await p.page.evaluate(() => (globalThis as unknown as StyleWindow).map.getBounds());
+    const bounds = await p.page.evaluate(() => (globalThis as unknown as StyleWindow).map.getBoundsProjected());
     const pixelArea = ((bounds[2] - bounds[0]) / W) * ((bounds[3] - bounds[1]) / H);
     let area = 0;
     for (const ring of picked?.outline ?? []) for (let n = 0; n + 1 < ring.length; n++) area += (ring[n]![0] * ring[n + 1]![1] - ring[n + 1]![0] * ring[n]![1]) / 2;

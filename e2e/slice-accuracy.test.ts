@@ -73,7 +73,7 @@ for (const smooth of [false, true]) describe(`GPU slicing equals the CPU referen
   async function check(label: string, bbox: [number, number, number, number], z: number, surface?: string): Promise<void> {
     await mp.page.evaluate(([b, zz, s]) => {
       map.setSlicingSurface(s ?? 'flat');
-      map.fitBounds(b, { sliceZ: zz, duration: 0 });
+      map.fitBoundsProjected(b, { sliceZ: zz, duration: 0 });
     }, [bbox, z, surface] as const);
     assert.equal(await waitIdle(mp.page), true, `${label}: the map is complete`);
     const gpu = await readIds(mp.page);
@@ -105,7 +105,7 @@ for (const smooth of [false, true]) describe(`GPU slicing equals the CPU referen
       const cx = (extent[0] + extent[2]) / 2 + 17.3, cy = (extent[1] + extent[3]) / 2 - 9.1;
       await mp.page.evaluate(([c, s]) => {
         map.setSlicingSurface('flat');
-        map.jumpTo({ center: c, scaleDenominator: s, sliceZ: null });
+        map.jumpTo({ centerProjected: c, scaleDenominator: s, sliceZ: null });
       }, [[cx, cy] as [number, number], scale] as const);
       assert.equal(await waitIdle(mp.page), true);
       const view = await mp.page.evaluate(() => engine.getView());

@@ -47,9 +47,9 @@ class InfoBox implements Control {
       const e = meta().extent;
       return [e[0] + fx * (e[2] - e[0]), e[1] + fy * (e[3] - e[1])];
     };
-    fly('Overview', () => ({ center: at(0.5, 0.5), scaleDenominator: m.getComparisonScales().at(-1) ?? meta().baseScale * 16 }));
-    fly('North-west', () => ({ center: at(0.2, 0.8), scaleDenominator: meta().baseScale }));
-    fly('South-east', () => ({ center: at(0.8, 0.2), scaleDenominator: meta().baseScale }));
+    fly('Overview', () => ({ centerProjected: at(0.5, 0.5), scaleDenominator: m.getComparisonScales().at(-1) ?? meta().baseScale * 16 }));
+    fly('North-west', () => ({ centerProjected: at(0.2, 0.8), scaleDenominator: meta().baseScale }));
+    fly('South-east', () => ({ centerProjected: at(0.8, 0.2), scaleDenominator: meta().baseScale }));
     this.feature = document.createElement('p');
     this.feature.className = 'demo-feature';
     this.feature.setAttribute('aria-live', 'polite');

@@ -1,6 +1,6 @@
 // The test page (index.html): a VarioMap over the cube named by the URL (?source=dir/), with
 // optional view, surface and tools from URL parameters:
-//   center=x,y  scale=n  bbox=x0,y0,x1,y1  z=steps  surface=kind:key=value,...  tool=lens|idw
+//   center=x,y  scale=n  bbox=x0,y0,x1,y1 (the cube's projected CRS)  z=steps  surface=kind:key=value,...  tool=lens|idw
 //   supersampling=n  boundaries=1  blending=off|moving|always  budget=bytes  ratio=dpr
 //   retries=n  backoff=ms  concurrency=n (chunk loading)  legend=1 (the LegendControl)
 // Any scale may be shown (no limits) and no control covers the canvas. `window.map` (and
@@ -20,9 +20,9 @@ const num = (k: string): number | undefined => {
 const pair = (k: string): number[] | undefined => params.get(k)?.split(',').map(Number);
 const options: VarioMapOptions = { container: 'map', source: params.get('source') ?? 'cube/', minScale: 1e-9, maxScale: Infinity, attributionControl: false };
 const center = pair('center');
-if (center) options.center = [center[0] ?? NaN, center[1] ?? NaN];
+if (center) options.centerProjected = [center[0] ?? NaN, center[1] ?? NaN];
 const bbox = pair('bbox');
-if (bbox) options.bounds = [bbox[0] ?? NaN, bbox[1] ?? NaN, bbox[2] ?? NaN, bbox[3] ?? NaN];
+if (bbox) options.boundsProjected = [bbox[0] ?? NaN, bbox[1] ?? NaN, bbox[2] ?? NaN, bbox[3] ?? NaN];
 const scale = num('scale');
 if (scale !== undefined) options.scaleDenominator = scale;
 const z = num('z');

@@ -3,6 +3,8 @@ import type { SurfaceSpec } from '../../format/slicing-surface.js';
 import type { CubeStyle } from '../../format/style.js';
 import type { Bbox } from './geometry/view.js';
 import type { EngineEvents, EngineOptions } from './engine/map-engine.js';
+import type { LngLatLike } from './geo/lng-lat.js';
+import type { LngLatBoundsLike } from './geo/lng-lat-bounds.js';
 import type { MapPointerEvent } from './interaction/feature-events.js';
 import type { HandlerFlags } from './interaction/handlers.js';
 import type { InteractionSettings } from './interaction/interaction-context.js';
@@ -12,9 +14,15 @@ export interface VarioMapOptions extends Partial<HandlerFlags>, Omit<EngineOptio
   container: HTMLElement | string;
   /** URL of the cube's index.json (a path ending in .json), or of its directory (with or without a trailing /). */
   source: string;
-  /** Ground coordinates of the centre (default: the centre of `bounds`, or of the extent). */
-  center?: [number, number];
-  /** Scale denominator; or `zoom` (web map levels: 1:559082264 / 2^zoom). Default: `bounds` (or the extent) fits. */
+  /** The centre, longitude/latitude (default: the centre of `bounds`, or of the extent). */
+  center?: LngLatLike;
+  /** The centre in the cube's projected CRS, instead of `center`. */
+  centerProjected?: [number, number];
+  /** Instead of the whole extent: the longitude/latitude box the first view shows whole. */
+  bounds?: LngLatBoundsLike;
+  /** The same in the cube's projected CRS: x0, y0, x1, y1. */
+  boundsProjected?: Bbox;
+  /** Scale denominator; or `zoom`, MapLibre's zoom at the centre's latitude. Default: `bounds` (or the extent) fits. */
   scaleDenominator?: number;
   zoom?: number;
   /** Pins the slice's base z (steps) instead of following the scale. */
@@ -24,13 +32,15 @@ export interface VarioMapOptions extends Partial<HandlerFlags>, Omit<EngineOptio
   /** Smallest scale denominator (most detail) and largest; defaults: a quarter of the base scale, 4x the extent. */
   minScale?: number;
   maxScale?: number;
-  /** The ground box (x0, y0, x1, y1) the visible area stays inside: no pan or zoom out leaves it. */
-  maxBounds?: Bbox;
+  /** The longitude/latitude box the visible area stays inside (the projected box around it): no pan or zoom out leaves it. */
+  maxBounds?: LngLatBoundsLike;
+  /** The same in the cube's projected CRS: x0, y0, x1, y1. */
+  maxBoundsProjected?: Bbox;
   /** A map inside a page that scrolls: the wheel zooms only with Ctrl (or ⌘), one finger scrolls the page and two move the map. */
   cooperativeGestures?: boolean;
   /** false turns every input handler off. */
   interactive?: boolean;
-  /** Keeps centre and scale in the URL's hash (#x/y/scale). */
+  /** Keeps the view in the URL's hash as MapLibre's `hash` option does (#zoom/lat/lng). */
   hash?: boolean;
   /** Replace animations with jumps; default: the user's prefers-reduced-motion. */
   reduceMotion?: boolean;
@@ -85,10 +95,20 @@ export interface VarioMapEvents extends DataEvents {
 }
 
 export interface CameraOptions {
-  center?: [number, number];
-  scaleDenominator?: number;
-  zoom?: number;
+  /** Longitude/latitude. */
+  center?: LngLatLike | undefined;
+  /** The centre in the cube's projected CRS, instead of `center`. */
+  centerProjected?: [number, number] | undefined;
+  scaleDenominator?: number | undefined;
+  /** MapLibre's zoom at the latitude of the new centre. */
+  zoom?: number | undefined;
   /** Pins the slice's base z (steps); null: it follows the scale again. Taken at the start. */
+  sliceZ?: number | null;
+}
+
+export interface FitBoundsOptions extends AnimationOptions {
+  /** CSS px kept free around the box. */
+  padding?: number;
   sliceZ?: number | null;
 }
 

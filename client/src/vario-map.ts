@@ -12,7 +12,10 @@ import { bindEngine } from './engine/engine-of.js';
 import { MapEngine } from './engine/map-engine.js';
 import type { Feature, QueryOptions } from './engine/picking.js';
 import { Evented } from './events.js';
-import type { AnimationOptions, CameraOptions, DataEvents, FlyToOptions, VarioMapEvents, VarioMapOptions, VarioMapSettings } from './map-options.js';
+import { CrsError, CrsTransform } from './geo/crs-transform.js';
+import { LngLat, type LngLatLike } from './geo/lng-lat.js';
+import { LngLatBounds, type LngLatBoundsLike } from './geo/lng-lat-bounds.js';
+import type { AnimationOptions, CameraOptions, DataEvents, FitBoundsOptions, FlyToOptions, VarioMapEvents, VarioMapOptions, VarioMapSettings } from './map-options.js';
 import { FeatureEvents, type MapPointerEvent } from './interaction/feature-events.js';
 import { Handlers, type HandlerName } from './interaction/handlers.js';
 import type { InteractionContext, InteractionSettings } from './interaction/interaction-context.js';
@@ -31,13 +34,20 @@ import { MapDom, type Control, type ControlPosition } from './ui/map-dom.js';
 import { UrlHash } from './ui/url-hash.js';
 
 export type { Bbox, Feature, QueryOptions, FeatureRef, FeatureState, DrawnState, StatePaint, ClassStyleJson, CubeStyle, StyleJson, BlendingOptions, BlendMode, BoundaryOptions, SurfaceSpec, SourceErrorInfo, Camera, HandlerName, InteractionSettings, MapPointerEvent, Control, ControlPosition };
-export type { AnimationOptions, CameraOptions, FlyToOptions, MapMoveEvent, VarioMapEvents, VarioMapOptions, VarioMapSettings } from './map-options.js';
+export type { LngLatLike, LngLatBoundsLike };
+export type { AnimationOptions, CameraOptions, FitBoundsOptions, FlyToOptions, MapMoveEvent, VarioMapEvents, VarioMapOptions, VarioMapSettings } from './map-options.js';
 
 /** Passed on from the engine as they are ('meta' after the map's own state follows it). */
 const DATA_EVENTS: (keyof DataEvents)[] = ['load', 'idle', 'error', 'contextlost', 'contextrestored', 'dataloading', 'data'];
 
 /** How many views along a flight's path are prefetched. */
 const FLIGHT_SAMPLES = 16;
+
+/** A view asked for before the cube (and so its CRS) is known: shown when it is. */
+type PendingView = { camera: CameraOptions } | { fit: ProjectedBox; options: FitBoundsOptions } | { maxBounds: ProjectedBox };
+
+/** A box in the cube's CRS, computed when asked (a longitude/latitude box needs the CRS). */
+type ProjectedBox = () => Bbox;
 
 export class VarioMap extends Evented<VarioMapEvents> {
   readonly handlers: Handlers | null;
@@ -53,6 +63,9 @@ export class VarioMap extends Evented<VarioMapEvents> {
   private readonly motionQuery: MediaQueryList | null;
   private hash: UrlHash | null = null;
   private readonly scaleLimits: ScaleLimits;
+  /** Between longitude/latitude and the cube's CRS; the reason there is none; null before the cube is known. */
+  private crs: CrsTransform | CrsError | null = null;
+  private pending: PendingView[] = [];
   private removed = false;
 
   constructor(options: VarioMapOptions) {
@@ -74,10 +87,18 @@ export class VarioMap extends Evented<VarioMapEvents> {
       size: () => this.dom.cssSize(),
       emit: (type: MoveEventType, originalEvent) => this.fire(type, originalEvent ? { originalEvent } : {}),
     });
-    const scale = options.scaleDenominator ?? (options.zoom !== undefined ? scaleAtZoom(options.zoom) : undefined);
-    this.view.place({ ...(options.center ? { x: options.center[0], y: options.center[1] } : {}), ...(scale !== undefined ? { scale } : {}) }, options.sliceZ ?? null);
+    this.view.place({}, options.sliceZ ?? null);
+    // Longitude/latitude and zoom need the cube's CRS: the first view is set when it is known.
+    const { bounds, boundsProjected } = options;
+    if (boundsProjected) this.pending.push({ fit: () => boundsProjected, options: {} });
+    else if (bounds) this.pending.push({ fit: () => this.geo().projectedBox(LngLatBounds.convert(bounds)), options: {} });
+    const { center, centerProjected, zoom, scaleDenominator } = options;
+    this.pending.push({ camera: { center, centerProjected, zoom, scaleDenominator } });
     this.scaleLimits = new ScaleLimits(this.view, options.minScale, options.maxScale);
-    if (options.maxBounds) this.view.setLimits({ maxBounds: options.maxBounds });
+    const { maxBounds, maxBoundsProjected } = options;
+    if (maxBoundsProjected) this.view.setLimits({ maxBounds: maxBoundsProjected });
+    // Before the views, so that they keep to it.
+    else if (maxBounds) this.pending.unshift({ maxBounds: () => this.geo().projectedBox(LngLatBounds.convert(maxBounds)) });
     if (options.surface) this.view.setSurface(typeof options.surface === 'string' ? parseSurface(options.surface) : options.surface);
     this.engine = new MapEngine(this.dom.canvasContainer, this.view, options);
     bindEngine(this, this.engine);
@@ -106,7 +127,8 @@ export class VarioMap extends Evented<VarioMapEvents> {
       listens: (type) => this.listens(type),
       fire: (type, ev) => this.fire(type, ev),
       point: (ev) => this.dom.localPoint(ev),
-      unproject: (p) => this.unproject(p),
+      unprojectProjected: (p) => this.unprojectProjected(p),
+      lngLatAt: (p) => (this.crs instanceof CrsTransform ? this.crs.toLngLat(this.unprojectProjected(p)) : null),
       queryFeatures: (p) => this.queryFeatures(p),
     });
     if (options.hash) this.hash = new UrlHash(this);
@@ -115,7 +137,12 @@ export class VarioMap extends Evented<VarioMapEvents> {
 
   // ---- the camera -----------------------------------------------------------------------------
 
-  getCenter(): [number, number] {
+  getCenter(): LngLat {
+    return this.geo().toLngLat(this.getCenterProjected());
+  }
+
+  /** The centre in the cube's projected CRS. */
+  getCenterProjected(): [number, number] {
     const c = this.view.camera;
     return [c.x, c.y];
   }
@@ -124,13 +151,26 @@ export class VarioMap extends Evented<VarioMapEvents> {
     return this.view.camera.scale;
   }
 
-  /** The scale as a web map zoom level (see the zoom option). */
+  /** MapLibre's zoom at the centre's latitude: the same zoom there shows the same scale. */
   getZoom(): number {
-    return zoomAtScale(this.getScaleDenominator());
+    return zoomAtScale(this.getScaleDenominator(), this.getCenter().lat, this.view.pixelSizeMm);
   }
 
-  /** The ground box on screen: x0, y0, x1, y1. */
-  getBounds(): Bbox {
+  setZoom(zoom: number): this {
+    return this.jumpTo({ zoom });
+  }
+
+  setCenter(center: LngLatLike): this {
+    return this.jumpTo({ center });
+  }
+
+  /** The longitude/latitude box around the screen (its edges are curves in longitude/latitude). */
+  getBounds(): LngLatBounds {
+    return this.geo().lngLatBox(this.getBoundsProjected());
+  }
+
+  /** The box on screen in the cube's projected CRS: x0, y0, x1, y1. */
+  getBoundsProjected(): Bbox {
     return viewBbox(this.engine.getView());
   }
 
@@ -143,11 +183,10 @@ export class VarioMap extends Evented<VarioMapEvents> {
     return this.view.isMoving;
   }
 
-  /** Goes there at once (before the cube is known too, without movement events then). */
+  /** Goes there at once (asked before the cube is known: when it is, without movement events). */
   jumpTo(o: CameraOptions): this {
-    const to = this.target(o);
-    if (this.view.meta) this.view.jump(to);
-    else this.view.place(to);
+    if (this.view.meta) this.view.jump(this.target(o));
+    else this.pending.push({ camera: o });
     return this;
   }
 
@@ -189,14 +228,20 @@ export class VarioMap extends Evented<VarioMapEvents> {
   }
 
   /**
-   * Shows the box whole and centred, with `padding` CSS px around it: the box `ssc slice --bbox`
-   * shows on a canvas of this size when there is no padding. Eased over the zoom duration
-   * unless `duration` says otherwise (0: at once). Resolves true if it completed.
+   * Shows the longitude/latitude box whole and centred (the projected box around it), with
+   * `padding` CSS px around it. Eased over the zoom duration unless `duration` says otherwise
+   * (0: at once). Resolves true if it completed.
    */
-  fitBounds(bbox: Bbox, o: AnimationOptions & { padding?: number; sliceZ?: number | null } = {}): Promise<boolean> {
-    const c = this.engine.fitCamera(bbox, o.padding ?? 0);
-    const sliceZ = o.sliceZ !== undefined ? { sliceZ: o.sliceZ } : {};
-    return this.easeTo({ center: [c.x, c.y], scaleDenominator: c.scale, ...sliceZ, duration: o.duration ?? this.settings.zoomDurationMs, ...(o.easing ? { easing: o.easing } : {}) });
+  fitBounds(bounds: LngLatBoundsLike, o: FitBoundsOptions = {}): Promise<boolean> {
+    return this.fitBox(() => this.geo().projectedBox(LngLatBounds.convert(bounds)), o);
+  }
+
+  /**
+   * fitBounds for a box in the cube's projected CRS: without padding exactly the box
+   * `ssc slice --bbox` shows on a canvas of this size.
+   */
+  fitBoundsProjected(bbox: Bbox, o: FitBoundsOptions = {}): Promise<boolean> {
+    return this.fitBox(() => bbox, o);
   }
 
   /** One zoom step (the zoom step factor) in or out about the centre, as the + and - keys. */
@@ -219,15 +264,30 @@ export class VarioMap extends Evented<VarioMapEvents> {
   // ---- the limits ------------------------------------------------------------------------------
 
   /**
-   * The ground box the visible area stays inside (null: none). The view moves within it at
-   * once; no pan, zoom or animation leaves it after.
+   * The longitude/latitude box the visible area stays inside (the projected box around it;
+   * null: none). The view moves within it at once; no pan, zoom or animation leaves it after.
    */
-  setMaxBounds(bounds: Bbox | null): this {
+  setMaxBounds(bounds: LngLatBoundsLike | null): this {
+    if (bounds === null) return this.setMaxBoundsProjected(null);
+    const box = (): Bbox => this.geo().projectedBox(LngLatBounds.convert(bounds));
+    if (this.view.meta) return this.setMaxBoundsProjected(box());
+    this.pending.push({ maxBounds: box });
+    return this;
+  }
+
+  /** setMaxBounds for a box in the cube's projected CRS: x0, y0, x1, y1. */
+  setMaxBoundsProjected(bounds: Bbox | null): this {
     this.view.setLimits({ maxBounds: bounds });
     return this;
   }
 
-  getMaxBounds(): Bbox | null {
+  /** The longitude/latitude box around the limit (null: none). */
+  getMaxBounds(): LngLatBounds | null {
+    const b = this.getMaxBoundsProjected();
+    return b ? this.geo().lngLatBox(b) : null;
+  }
+
+  getMaxBoundsProjected(): Bbox | null {
     return this.view.limits.maxBounds;
   }
 
@@ -257,13 +317,23 @@ export class VarioMap extends Evented<VarioMapEvents> {
     return this;
   }
 
-  /** CSS px in the map of a ground point. */
-  project(ground: [number, number]): [number, number] {
-    return this.engine.project(ground);
+  /** CSS px in the map of a place. */
+  project(lngLat: LngLatLike): [number, number] {
+    return this.engine.project(this.geo().toProjected(LngLat.convert(lngLat)));
   }
 
-  /** The ground point at CSS px in the map. */
-  unproject(point: [number, number]): [number, number] {
+  /** The place at CSS px in the map. */
+  unproject(point: [number, number]): LngLat {
+    return this.geo().toLngLat(this.engine.unproject(point));
+  }
+
+  /** CSS px in the map of a point in the cube's projected CRS. */
+  projectProjected(xy: [number, number]): [number, number] {
+    return this.engine.project(xy);
+  }
+
+  /** The point in the cube's projected CRS at CSS px in the map. */
+  unprojectProjected(point: [number, number]): [number, number] {
     return this.engine.unproject(point);
   }
 
@@ -450,11 +520,47 @@ export class VarioMap extends Evented<VarioMapEvents> {
 
   // ---- internals ---------------------------------------------------------------------------------
 
-  /** Before the cube is known there is nothing to animate over: the view is just set (true). */
+  /** The fit of a box in the cube's CRS (before the cube is known: when it is). */
+  private fitBox(box: ProjectedBox, o: FitBoundsOptions): Promise<boolean> {
+    if (!this.view.meta) {
+      this.pending.push({ fit: box, options: o });
+      return Promise.resolve(true);
+    }
+    const c = this.engine.fitCamera(box(), o.padding ?? 0);
+    const sliceZ = o.sliceZ !== undefined ? { sliceZ: o.sliceZ } : {};
+    return this.easeTo({ centerProjected: [c.x, c.y], scaleDenominator: c.scale, ...sliceZ, duration: o.duration ?? this.settings.zoomDurationMs, ...(o.easing ? { easing: o.easing } : {}) });
+  }
+
+  /** Before the cube is known there is nothing to animate over: the view is just set then (true). */
   private setBeforeMeta(o: CameraOptions): boolean {
     if (this.view.meta) return false;
-    this.jumpTo(o);
+    this.pending.push({ camera: o });
     return true;
+  }
+
+  /** The conversion of longitude/latitude, or a clear error why there is none. */
+  private geo(): CrsTransform {
+    if (this.crs instanceof CrsTransform) return this.crs;
+    throw new CrsError(this.crs?.message ?? `longitude/latitude need the cube's CRS, known once its index (${this.getSourceUrl()}) has loaded: wait for the 'meta' event`);
+  }
+
+  /** The views asked for before the cube was known, in order, set without movement events. */
+  private placePending(): void {
+    const pending = this.pending;
+    this.pending = [];
+    for (const p of pending) {
+      try {
+        if ('camera' in p) this.view.place(this.target(p.camera));
+        else if ('maxBounds' in p) this.view.setLimits({ maxBounds: p.maxBounds() });
+        else {
+          if (p.options.sliceZ !== undefined) this.view.pinZ(p.options.sliceZ);
+          this.view.place(this.engine.fitCamera(p.fit(), p.options.padding ?? 0));
+        }
+      } catch (err) {
+        // Nobody is there to catch it now: the page hears of it as a load error of the index.
+        this.fire('error', { kind: 'index', message: err instanceof Error ? err.message : String(err), url: this.getSourceUrl() });
+      }
+    }
   }
 
   private reducedMotion(): boolean {
@@ -463,11 +569,14 @@ export class VarioMap extends Evented<VarioMapEvents> {
 
   /** The camera the options ask for (pinning or freeing the slice's z at once). */
   private target(o: CameraOptions): Camera {
+    if (o.center !== undefined && o.centerProjected !== undefined) throw new Error('give center (longitude/latitude) or centerProjected, not both');
     const c = this.view.camera;
-    const scale = o.scaleDenominator ?? (o.zoom !== undefined ? scaleAtZoom(o.zoom) : undefined);
+    const [x, y] = o.centerProjected ?? (o.center !== undefined ? this.geo().toProjected(LngLat.convert(o.center)) : [c.x, c.y]);
+    // MapLibre's zoom at the latitude of where the view goes.
+    const scale = o.scaleDenominator ?? (o.zoom !== undefined ? scaleAtZoom(o.zoom, this.geo().toLngLat([x, y]).lat, this.view.pixelSizeMm) : undefined);
     if (scale !== undefined && !(scale > 0)) throw new Error('scaleDenominator must be > 0');
     if (o.sliceZ !== undefined) this.view.pinZ(o.sliceZ);
-    return { x: o.center?.[0] ?? c.x, y: o.center?.[1] ?? c.y, scale: scale ?? c.scale };
+    return { x, y, scale: scale ?? c.scale };
   }
 
   private zoomSteps(n: number): Promise<boolean> {
@@ -482,9 +591,23 @@ export class VarioMap extends Evented<VarioMapEvents> {
     this.scaleLimits.setDefaults(meta.baseScale / 4, extentScale * 4);
     this.levels = discreteLevels(meta.baseScale, extentScale, this.options.comparisonFactor ?? 2);
     if (this.settings.comparisonMode) this.view.setLevels(this.levels);
+    try {
+      this.crs = CrsTransform.of(meta, this.getSourceUrl());
+    } catch (err) {
+      if (!(err instanceof CrsError)) throw err;
+      this.crs = err;
+    }
+    this.placePending();
+    this.view.place({ scale: this.view.clamp(this.view.camera.scale) });
     this.fire('meta', meta);
     const style = this.getStyle();
     if (style) this.fire('style', style);
+    if (this.hash && !(this.crs instanceof CrsTransform)) {
+      // The hash is in longitude/latitude, as MapLibre's.
+      this.hash.remove();
+      this.hash = null;
+      this.fire('error', { kind: 'index', message: `hash: ${this.crs?.message ?? ''}`, url: this.getSourceUrl() });
+    }
     this.hash?.apply();
   }
 

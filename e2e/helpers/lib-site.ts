@@ -4,9 +4,11 @@
 import { cp, mkdtemp, rm, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
+import { after, afterEach, before } from 'node:test';
 import type { Browser } from 'playwright-core';
-import { launchChromium } from './browser.js';
-import { buildCube, otterlo400, repoRoot, type BuiltCube } from './cube.js';
+import { launchChromium, type MapPage } from './browser.js';
+import { buildCube, otterlo400, readCube, repoRoot, type BuiltCube, type CubeContents } from './cube.js';
+import { checkAndClose } from './test-bed.js';
 import { startTestServer, type TestServer } from './test-server.js';
 
 /** A page's start, to its map container (#map, filling the window). */
@@ -52,4 +54,32 @@ export async function startLibSite(pages: Record<string, string>): Promise<LibSi
       await rm(dir, { recursive: true, force: true });
     },
   };
+}
+
+export interface LibSiteBed {
+  site: LibSite;
+  contents: CubeContents;
+  /** The running test's page: checked for console errors and closed after the test. */
+  page: MapPage | null;
+}
+
+/**
+ * In a describe(): the site with these pages up before its tests and down after them, and
+ * each test's page (bed.page) checked and closed after it. The fields are there from the first
+ * test on.
+ */
+export function useLibSite(pages: Record<string, string>): LibSiteBed {
+  const bed = { page: null } as LibSiteBed;
+  before(async () => {
+    bed.site = await startLibSite(pages);
+    bed.contents = await readCube(bed.site.cube.dir);
+  });
+  afterEach(async () => {
+    await checkAndClose(bed.page);
+    bed.page = null;
+  });
+  after(async () => {
+    await bed.site?.close();
+  });
+  return bed;
 }

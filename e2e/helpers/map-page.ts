@@ -17,9 +17,9 @@ export interface PageCubeMeta {
 export interface MapApi {
   whenIdle(): Promise<{ complete: boolean }>;
   loaded(): boolean;
-  fitBounds(b: [number, number, number, number], o?: { sliceZ?: number | null; duration?: number; padding?: number }): Promise<boolean>;
-  jumpTo(v: { center?: [number, number]; scaleDenominator?: number; sliceZ?: number | null }): unknown;
-  getCenter(): [number, number];
+  fitBoundsProjected(b: [number, number, number, number], o?: { sliceZ?: number | null; duration?: number; padding?: number }): Promise<boolean>;
+  jumpTo(v: { centerProjected?: [number, number]; scaleDenominator?: number; sliceZ?: number | null }): unknown;
+  getCenterProjected(): [number, number];
   getSliceZ(): number;
   getScaleDenominator(): number;
   getSlicingSurface(): { kind: string } & Record<string, unknown>;

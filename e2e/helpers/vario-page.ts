@@ -5,20 +5,27 @@ import { openMap, type MapPage, type OpenOptions } from './browser.js';
 
 /** The part of VarioMap the tests use, as seen from the page (structural, no DOM types). */
 export interface VarioApi {
-  getCenter(): [number, number];
+  getCenter(): { lng: number; lat: number };
+  getCenterProjected(): [number, number];
+  getZoom(): number;
   getScaleDenominator(): number;
   getSliceZ(): number;
-  getBounds(): [number, number, number, number];
+  getBoundsProjected(): [number, number, number, number];
+  getBounds(): { getWest(): number; getSouth(): number; getEast(): number; getNorth(): number };
+  setZoom(zoom: number): unknown;
+  fitBounds(b: [number, number, number, number], o?: { duration?: number; padding?: number }): Promise<boolean>;
   getMetadata(): { zMax: number; baseScale: number; pixelSizeMm: number; extent: [number, number, number, number] } | null;
   getSettings(): { zoomStep: number; zoomDurationMs: number; panDurationMs: number; minZoomFrames: number; comparisonMode: boolean };
   setSettings(s: object): unknown;
   getSlicingSurface(): { kind: string } & Record<string, unknown>;
   isMoving(): boolean;
-  jumpTo(o: { center?: [number, number]; scaleDenominator?: number }): unknown;
-  easeTo(o: { center?: [number, number]; scaleDenominator?: number; duration?: number }): Promise<boolean>;
-  flyTo(o: { center?: [number, number]; scaleDenominator?: number; duration?: number; speed?: number }): Promise<boolean>;
-  project(g: [number, number]): [number, number];
-  unproject(p: [number, number]): [number, number];
+  jumpTo(o: { center?: [number, number]; centerProjected?: [number, number]; scaleDenominator?: number; zoom?: number }): unknown;
+  easeTo(o: { centerProjected?: [number, number]; scaleDenominator?: number; duration?: number }): Promise<boolean>;
+  flyTo(o: { centerProjected?: [number, number]; scaleDenominator?: number; duration?: number; speed?: number }): Promise<boolean>;
+  project(lngLat: [number, number]): [number, number];
+  unproject(p: [number, number]): { lng: number; lat: number };
+  projectProjected(xy: [number, number]): [number, number];
+  unprojectProjected(p: [number, number]): [number, number];
   whenIdle(): Promise<{ complete: boolean }>;
   remove(): void;
   getCanvasContainer(): { getAttribute(n: string): string | null; tabIndex: number };
@@ -71,7 +78,7 @@ export async function idle(page: Page): Promise<void> {
 export function camera(page: Page): Promise<Camera> {
   return page.evaluate(() => {
     const m = (globalThis as unknown as VarioWindow).map;
-    const [x, y] = m.getCenter();
+    const [x, y] = m.getCenterProjected();
     return { x, y, scale: m.getScaleDenominator() };
   });
 }
@@ -85,8 +92,8 @@ export async function record(page: Page): Promise<void> {
     w.recording = true;
     for (const type of ['move', 'render', 'movestart', 'moveend', 'dataloading']) {
       w.map.on(type, (ev) => {
-        const [x, y] = w.map.getCenter();
-        const r: Rec = { t: performance.now(), type, x, y, scale: w.map.getScaleDenominator(), z: w.map.getSliceZ(), bounds: w.map.getBounds() };
+        const [x, y] = w.map.getCenterProjected();
+        const r: Rec = { t: performance.now(), type, x, y, scale: w.map.getScaleDenominator(), z: w.map.getSliceZ(), bounds: w.map.getBoundsProjected() };
         if (type === 'dataloading') r.file = (ev as { file: string }).file;
         w.rec.push(r);
       });
@@ -103,9 +110,9 @@ export async function settle(page: Page, done: string): Promise<void> {
   await page.waitForFunction(`!window.map.isMoving() && (${done})`, null, { timeout: 120_000 });
 }
 
-/** The ground point under a CSS pixel of the map. */
+/** The ground point (the cube's projected CRS) under a CSS pixel of the map. */
 export function groundAt(page: Page, p: [number, number]): Promise<[number, number]> {
-  return page.evaluate((q) => (globalThis as unknown as VarioWindow).map.unproject(q), p);
+  return page.evaluate((q) => (globalThis as unknown as VarioWindow).map.unprojectProjected(q), p);
 }
 
 /** How many CSS pixels apart two ground points are at a scale. */

@@ -9,6 +9,7 @@ import { encodeIndex, INDEX_FORMAT, INDEX_VERSION, type ChunkLeaf, type CubeInde
 import { PIXEL_SIZE_MM } from '../../format/pixel-size.js';
 import { scaleAtZ } from '../../format/scale.js';
 import { writeDirAtomic } from '../io/atomic-write.js';
+import { proj4Definition } from '../io/crs-definition.js';
 import { PHASES, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
 import { assembleChunk } from './assemble-chunk.js';
 import { planChunks } from './chunking.js';
@@ -37,6 +38,8 @@ export interface BuildReport {
   indexFiles: number;
   files: number;
   bytesWritten: number;
+  /** The proj4 definition of the CRS written into index.json; null: none known (no longitude/latitude in the map). */
+  proj4: string | null;
   timings: Record<string, number>;
 }
 
@@ -92,13 +95,15 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const tree = splitTree(packTree(leaves), opts.subIndexBytes ?? 128 * 1024, (json) => hashName('i', json, 'json').name);
   for (const f of tree.files) files.set(f.name, new TextEncoder().encode(f.json));
   const style = t.meta.style as { name?: string; attribution?: string };
+  const proj4 = t.meta.proj4 ?? proj4Definition(t.meta.crs);
   const index: CubeIndexJson = {
     format: INDEX_FORMAT,
     version: INDEX_VERSION,
     meta: {
       name: style.name ?? t.meta.source,
       crs: t.meta.crs,
-      ...(t.meta.projectedFrom ? { projectedFrom: t.meta.projectedFrom, proj4: t.meta.proj4 } : {}),
+      ...(t.meta.projectedFrom ? { projectedFrom: t.meta.projectedFrom } : {}),
+      ...(proj4 ? { proj4 } : {}),
       extent: t.meta.extent,
       zMax: t.meta.steps,
       steps: t.meta.steps,
@@ -135,5 +140,5 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
     }
   });
   lap('write');
-  return { triangles: surfaces.count, surfaces: stats, chunks: leaves.length, chunkBytes, indexFiles: 1 + tree.files.length, files: files.size, bytesWritten, timings };
+  return { triangles: surfaces.count, surfaces: stats, chunks: leaves.length, chunkBytes, indexFiles: 1 + tree.files.length, files: files.size, bytesWritten, proj4, timings };
 }

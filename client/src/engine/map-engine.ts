@@ -26,8 +26,6 @@ import { featuresAt, type Feature, type QueryOptions } from './picking.js';
 export interface EngineOptions {
   /** URL of the cube's directory (with or without a trailing /) or of its index.json. */
   source: string;
-  /** Instead of the whole extent: the ground box the first view shows whole. */
-  bounds?: Bbox;
   blending?: Partial<BlendingOptions>;
   boundaries?: Partial<BoundaryOptions>;
   /** How faces with `highlight: true` and `hover: true` in their feature state are drawn. */
@@ -111,10 +109,10 @@ export class MapEngine extends Evented<EngineEvents> {
     } else {
       showWebGl2Missing(container);
     }
-    const bounds = options.bounds;
     this.source.on('meta', (meta) => {
       const g = this.canvas.deviceSize();
-      view.setMeta(meta, () => view.fitCamera(bounds ?? meta.extent, g.width, g.height, this.canvas.deviceRatio()));
+      // VarioMap then shows what its options ask for (they may need the cube's CRS).
+      view.setMeta(meta, () => view.fitCamera(meta.extent, g.width, g.height, this.canvas.deviceRatio()));
       this.style = meta.style;
       this.featureStates.faceCount = meta.faces.count;
       this.renderer?.setMeta(meta);

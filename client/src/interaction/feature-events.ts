@@ -1,12 +1,17 @@
-// The map's click and pointermove events, with the ground point and the face under the pointer.
+// The map's click and pointermove events, with the place (longitude/latitude and projected) and
+// the face under the pointer.
 // A face is looked up only when someone listens, one lookup at a time (the latest position
 // waits for it), and the end of a drag is not a click.
 import type { Feature } from '../engine/picking.js';
+import type { LngLat } from '../geo/lng-lat.js';
 
 export interface MapPointerEvent {
   /** CSS px in the map. */
   point: [number, number];
-  ground: [number, number];
+  /** The place under the pointer (null when the cube has no CRS definition: docs/embedding.md). */
+  lngLat: LngLat | null;
+  /** The same place in the cube's projected CRS. */
+  projected: [number, number];
   /** The face under the pointer (null: none, or not drawn yet). */
   feature: Feature | null;
   originalEvent: MouseEvent;
@@ -16,7 +21,9 @@ export interface FeatureEventHost {
   listens(type: 'click' | 'pointermove'): boolean;
   fire(type: 'click' | 'pointermove', ev: MapPointerEvent): void;
   point(ev: { clientX: number; clientY: number }): [number, number];
-  unproject(point: [number, number]): [number, number];
+  unprojectProjected(point: [number, number]): [number, number];
+  /** The place at a CSS px point, null when it cannot be converted (no CRS). */
+  lngLatAt(point: [number, number]): LngLat | null;
   queryFeatures(point: [number, number]): Promise<Feature[]>;
 }
 
@@ -74,13 +81,14 @@ export class FeatureEvents {
 
   private async send(type: 'click' | 'pointermove', originalEvent: MouseEvent): Promise<void> {
     const point = this.host.point(originalEvent);
-    const ground = this.host.unproject(point);
+    const projected = this.host.unprojectProjected(point);
+    const lngLat = this.host.lngLatAt(point);
     let feature: Feature | null = null;
     try {
       feature = (await this.host.queryFeatures(point))[0] ?? null;
     } catch {
       // Removed meanwhile, or a failed page of attributes: the event goes without the face.
     }
-    if (!this.removed) this.host.fire(type, { point, ground, feature, originalEvent });
+    if (!this.removed) this.host.fire(type, { point, lngLat, projected, feature, originalEvent });
   }
 }

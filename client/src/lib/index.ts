@@ -1,6 +1,6 @@
-// The library's public surface: the map, its controls, the research tools and the scale
-// helpers. The builds start from bundle.ts, which adds the stylesheet; the type declarations
-// (tsconfig.lib.json) from here.
+// The library's public surface: the map, its controls, markers and popups, the research tools,
+// the scale helpers and longitude/latitude as MapLibre's. The builds start from bundle.ts,
+// which adds the stylesheet; the type declarations (tsconfig.lib.json) from here.
 
 export { VarioMap } from '../vario-map.js';
 export type {
@@ -19,6 +19,7 @@ export type {
   Feature,
   FeatureRef,
   FeatureState,
+  FitBoundsOptions,
   FlyToOptions,
   HandlerName,
   InteractionSettings,
@@ -45,3 +46,9 @@ export { SettingsPanel, type SurfaceMode } from '../ui/settings-panel.js';
 export { ZoomControl } from '../ui/zoom-control.js';
 export { InteractionLog, type LogEntry } from '../research/interaction-log.js';
 export { scaleAtZoom, zoomAtScale } from '../geometry/zoom-levels.js';
+export { LngLat, type LngLatLike } from '../geo/lng-lat.js';
+export { LngLatBounds, type LngLatBoundsLike } from '../geo/lng-lat-bounds.js';
+export { CrsError } from '../geo/crs-transform.js';
+export { Marker, type MarkerOptions } from '../overlay/marker.js';
+export { Popup, type PopupEvents, type PopupOptions } from '../overlay/popup.js';
+export type { Anchor, Offset } from '../overlay/overlay-position.js';

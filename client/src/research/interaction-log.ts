@@ -77,7 +77,7 @@ export class InteractionLog {
   }
 
   private add(kind: LogEntry['kind'], event: string, detail: string): void {
-    const [x, y] = this.map.getCenter();
+    const [x, y] = this.map.getCenterProjected();
     this.list.push({ t: Math.round((performance.now() - this.startedAt) * 10) / 10, kind, x, y, scale: this.map.getScaleDenominator(), z: this.map.getSliceZ(), event, detail });
   }
 

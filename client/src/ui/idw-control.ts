@@ -82,7 +82,7 @@ export class IdwControl extends SurfaceTool {
     this.points.forEach((p, i) => {
       const m = this.markers[i];
       if (!m) return;
-      const [x, y] = map.project([p.x, p.y]);
+      const [x, y] = map.projectProjected([p.x, p.y]);
       m.style.left = `${x}px`;
       m.style.top = `${y}px`;
       m.title = `z ${p.z.toFixed(1)}`;
@@ -106,7 +106,7 @@ export class IdwControl extends SurfaceTool {
     if (!d || d.id !== ev.pointerId || !this.map) return;
     const [x, y] = this.local(ev);
     if (Math.hypot(x - d.x, y - d.y) > CLICK_SLOP_PX) return; // a drag, not a click
-    const [gx, gy] = this.map.unproject([x, y]);
+    const [gx, gy] = this.map.unprojectProjected([x, y]);
     this.add({ x: gx, y: gy, z: this.newPointZ() });
   };
 
@@ -120,7 +120,7 @@ export class IdwControl extends SurfaceTool {
       e.stopPropagation();
       const p = this.points[this.markers.indexOf(m)];
       if (!p || !this.map) return;
-      [p.x, p.y] = this.map.unproject(this.local(e));
+      [p.x, p.y] = this.map.unprojectProjected(this.local(e));
       this.update();
     };
     const up = (e: PointerEvent): void => {

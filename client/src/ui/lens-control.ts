@@ -27,7 +27,7 @@ export class LensControl extends SurfaceTool {
     const map = this.map;
     const meta = map?.getMetadata();
     if (!map || !meta || !this.enabled) return;
-    const [cx, cy] = map.unproject(point);
+    const [cx, cy] = map.unprojectProjected(point);
     const radius = this.options.radiusPx * resolutionAtScale(map.getScaleDenominator(), meta.pixelSizeMm);
     map.setSlicingSurface({ kind: 'lens', cx, cy, radius, depth: this.options.depth });
   }

@@ -160,7 +160,7 @@ export class SettingsPanel implements Control {
       return;
     }
     const res = resolutionAtScale(map.getScaleDenominator(), meta.pixelSizeMm);
-    const [cx, cy] = map.getCenter();
+    const [cx, cy] = map.getCenterProjected();
     const rect = map.getCanvasContainer().getBoundingClientRect();
     let spec: SurfaceSpec;
     switch (this.mode) {

@@ -1,9 +1,8 @@
-// The view in the URL's hash, #x/y/scale (ground coordinates to about a pixel, the scale
-// denominator rounded): a link shows the same place, and back/forward or an edited hash move
+// The view in the URL's hash as MapLibre GL JS's `hash` option writes it, #zoom/lat/lng: a link
+// shows the same place and scale here and in MapLibre, and back/forward or an edited hash move
 // the map there.
 import { formatHash, parseHash } from './hash-text.js';
 import type { VarioMap } from '../vario-map.js';
-import { PIXEL_SIZE_MM } from '../../../format/pixel-size.js';
 
 export class UrlHash {
   constructor(private readonly map: VarioMap) {
@@ -24,16 +23,14 @@ export class UrlHash {
   }
 
   private readonly write = (): void => {
-    const meta = this.map.getMetadata();
-    const hash = formatHash(this.map.getCenter(), this.map.getScaleDenominator(), meta?.pixelSizeMm ?? PIXEL_SIZE_MM);
+    const hash = formatHash(this.map.getZoom(), this.map.getCenter().toArray());
     if (hash !== location.hash) history.replaceState(history.state, '', hash);
   };
 
   private readonly onHashChange = (): void => {
     const v = parseHash(location.hash);
-    if (!v) return;
-    const c = this.map.getCenter();
-    if (v.center[0] === c[0] && v.center[1] === c[1] && v.scaleDenominator === Math.round(this.map.getScaleDenominator())) return;
+    // The map's own hash (written on moveend) is where it already is.
+    if (!v || formatHash(v.zoom, v.center) === formatHash(this.map.getZoom(), this.map.getCenter().toArray())) return;
     this.map.jumpTo(v);
   };
 }
