@@ -68,7 +68,7 @@ test('a flat triangle inside a tilted merge counts as mergeFlat, with its area',
   near(h.areaByKind.mergeFlat, 4, 'flat area');
 });
 
-test('bgt_otterlo_400m: the smooth cube changes class flat over at most 0.2% of the classic cube\'s area', async (t) => {
+test('bgt_otterlo_400m: the smooth cube changes class flat over at most 3% of the classic cube\'s area', async (t) => {
   const { tgap } = await generalizedDataset(tempDir(t), 'bgt_otterlo_400m.geojson', 'bgt.json');
   const sum = (h: HorizontalChanges): number => CHANGE_KINDS.reduce((a, k) => a + h.areaByKind[k], 0);
   const classic = buildSurfaces(tgap);
@@ -77,8 +77,11 @@ test('bgt_otterlo_400m: the smooth cube changes class flat over at most 0.2% of 
   const s = horizontalChanges(tgap, smooth.surfaces, smooth.transitions);
   t.diagnostic(`classic: ${c.total} triangles, ${sum(c).toFixed(0)} m2 ${JSON.stringify(c.byKind)}; smooth: ${s.total}, ${sum(s).toFixed(1)} m2 ${JSON.stringify(s.byKind)}`);
   // Every merge and split tilts; what is left are simplification triangles with no room in z
-  // (removed in the same phase as an older one they overlap) and a few flat pieces of merges.
+  // (removed in the same phase as an older one they overlap) and flat pieces of merges: where a
+  // merge's front waits at a re-emit of the winner, a triangle with all three corners waiting
+  // lies flat there (keepOffLevels in surfaces.ts).
   assert.equal(s.byKind.merge + s.byKind.split + s.byKind.reemit, 0);
-  // Measured: 168 m2 against 115,785 m2 (0.15%).
-  assert.ok(sum(s) <= 0.002 * sum(c), `smooth ${sum(s)} m2 against classic ${sum(c)} m2`);
+  // Measured: 2,290 m2 against 115,785 m2 (2.0%); 168 m2 when merges waited for the winner's
+  // re-emit instead, at the cost of shorter transitions and a worse worst frame.
+  assert.ok(sum(s) <= 0.03 * sum(c), `smooth ${sum(s)} m2 against classic ${sum(c)} m2`);
 });

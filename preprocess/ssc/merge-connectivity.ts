@@ -69,7 +69,7 @@ export interface MergeConnectivity {
  */
 export function mergeConnectivity(t: Tgap, s: Surfaces, transitions: readonly MergeTransition[], samples = 8): MergeConnectivity[] {
   const tilted = transitions.filter((m) => m.tilted);
-  const tris = mergeTriangles(s, tilted);
+  const tris = mergeTriangles(s, tilted, t);
   const shared = sharedBoundaries(t, tilted, tris, s);
   return tilted.map((m, k) => {
     const mine = tris[k]!;

@@ -41,7 +41,7 @@ test('slopeVariation: one slope is 0; slopes 1 and 3 on equal areas 0.5; area we
 test('the smooth merges of three rectangles are linear ramps: variation 0', () => {
   const t = fixtureTgap([{ cls: 'a', rings: [rect(0, 0, 4, 4)] }, { cls: 'a', rings: [rect(4, 0, 6, 4)] }, { cls: 'a', rings: [rect(6, 0, 10, 4)] }], ['a']);
   const { surfaces: s, transitions } = buildSurfaces(t, { smooth: true });
-  const cvs = mergeTriangles(s, transitions).map((tris) => slopeVariation(s, tris, s.xs, s.ys));
+  const cvs = mergeTriangles(s, transitions, t).map((tris) => slopeVariation(s, tris, s.xs, s.ys));
   assert.equal(cvs.length, 2);
   for (const cv of cvs) assert.ok(Math.abs(cv) < 1e-9, `variation ${cv}`);
 });

@@ -2,7 +2,7 @@
 // winner takes the loser's area during the merge's transition, and the loser's boundary with
 // the winner as the tGAP has it just before the merge. Found from the surfaces and the tGAP
 // alone, so the checks hold whichever way the build shapes the transition.
-import { resolveFace, type Tgap } from '../../format/tgap-model.js';
+import { REEMIT_PHASE, resolveFace, type Tgap } from '../../format/tgap-model.js';
 import type { MergeTransition, Surfaces } from './surfaces.js';
 
 /**
@@ -10,16 +10,37 @@ import type { MergeTransition, Surfaces } from './surfaces.js';
  * simplification of the loser's boundary with the winner has the same faces, and may now lie
  * inside the transition's z range, but it is an event of its own).
  */
-export function mergeTriangles(s: Surfaces, transitions: readonly MergeTransition[]): number[][] {
+export function mergeTriangles(s: Surfaces, transitions: readonly MergeTransition[], t?: Pick<Tgap, 'faces'>): number[][] {
+  const replaced = t ? replacedFaces(t) : undefined;
   return transitions.map(({ first, end, loser, into }) => {
     if (!(first >= 0 && first <= end && end <= s.count)) throw new Error(`merge of ${loser} into ${into}: triangles ${first}..${end} not in the surfaces (${s.count})`);
+    const winner = replaced ? winnerIds(replaced, into) : new Set([into]);
     const out: number[] = [];
     for (let i = first; i < end; i++) {
-      if (s.lower[i] !== loser || s.upper[i] !== into) throw new Error(`merge of ${loser} into ${into}: triangle ${i} is between ${s.lower[i]} and ${s.upper[i]}`);
+      if (s.lower[i] !== loser || !winner.has(s.upper[i]!)) throw new Error(`merge of ${loser} into ${into}: triangle ${i} is between ${s.lower[i]} and ${s.upper[i]}`);
       out.push(i);
     }
     return out;
   });
+}
+
+/** Per face made by a re-emit, the face it replaced. */
+export function replacedFaces(t: Pick<Tgap, 'faces'>): Map<number, number> {
+  const replaced = new Map<number, number>();
+  t.faces.forEach((f, i) => {
+    if (i > 0 && f.endPhase === REEMIT_PHASE && f.mergedInto > 0) replaced.set(f.mergedInto, i);
+  });
+  return replaced;
+}
+
+/**
+ * The winner's ids: `into` and the faces it replaced by re-emits (same class and attributes),
+ * for the part a smooth merge has taken before the winner's re-emit shows the id it had then.
+ */
+export function winnerIds(replaced: ReadonlyMap<number, number>, into: number): Set<number> {
+  const ids = new Set([into]);
+  for (let g = replaced.get(into); g !== undefined && !ids.has(g); g = replaced.get(g)) ids.add(g);
+  return ids;
 }
 
 /** Per transition, the vertices of the edges between loser and winner in the state before the merge. */

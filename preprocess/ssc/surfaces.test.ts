@@ -9,15 +9,15 @@
 // Equal weights: L goes first (step 1), into W (a tie of shared lengths, 4 and 4, goes to the
 // lower id); then Z (16 against 24) into W (step 2).
 // Merge 1: nothing lies in L's area above the floor and W has always been beside it, so the
-// ramp starts a gap (SURFACE_GAP) above the floor on the shared side x = 4 and reaches
+// ramp starts where the half-way rule says (see the test) on the shared side x = 4 and reaches
 // zMerge = phaseZ(1, 0) = 1/9 at x = 6 (distance 2 along L's edges).
-// Merge 2: W came to lie beside Z (L|Z became W|Z) at merge 1, so the ramp starts a gap above
-// 1/9 at x = 6 and reaches zMerge = phaseZ(2, 0) = 10/9 at x = 10.
-// Both are less than a zoom level (MAX_TRANSITION_RATIO) long, so that cap does not bind.
+// Merge 2: W came to lie beside Z (L|Z became W|Z) at merge 1; the ramp starts at x = 6 and
+// reaches zMerge = phaseZ(2, 0) = 10/9 at x = 10.
 import test from 'node:test';
 import assert from 'node:assert/strict';
 import { decodeChunk } from '../../format/chunk.js';
-import { EventKind, faceEndZ, phaseZ, REEMIT_PHASE, type Tgap } from '../../format/tgap-model.js';
+import { scaleAtZ, zAtScale } from '../../format/scale.js';
+import { EventKind, faceEndZ, phaseZ, REEMIT_PHASE, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
 import { fixtureTgap, rect, type FixtureFace } from '../../testing/planar-fixtures.js';
 import { fitView, type View } from '../map/rasterize.js';
 import { assembleChunk } from './assemble-chunk.js';
@@ -52,14 +52,20 @@ test('a smooth merge tilts the loser from the shared boundary (hand-worked z and
   const t = fixtureTgap(THREE, ['a']);
   assert.deepEqual(t.events.map((e) => [e.kind, e.step, e.loser, e.into]), [[EventKind.Merge, 1, L, W], [EventKind.Merge, 2, Z, W]]);
   const { surfaces: s, transitions } = buildSurfaces(t, { smooth: true });
-  // L's ramp starts a gap above the floor at x = 4; Z's a gap above merge 1 at x = 6, where W
-  // came to lie beside Z when it took L (the side of Z's boundary with W changed then).
+  // Within the first two zoom levels a transition reaches back half way, in scale, to the base
+  // scale: to the z of the geometric mean of the base scale and the merge's scale. L's ramp
+  // starts there at x = 4; Z's there too (later than a gap above merge 1, when W came to lie
+  // beside it at x = 6).
+  const info = scaleInfoOf(t);
+  const halfWay = (z: number): number => zAtScale(info, Math.sqrt(scaleAtZ(info, z) * info.baseScale));
   const ramps: Record<number, { x0: number; z0: number; x1: number; z1: number }> = {
-    [L]: { x0: 4, z0: SURFACE_GAP, x1: 6, z1: phaseZ(1, 0) },
-    [Z]: { x0: 6, z0: phaseZ(1, 0) + SURFACE_GAP, x1: 10, z1: phaseZ(2, 0) },
+    [L]: { x0: 4, z0: Math.max(SURFACE_GAP, halfWay(phaseZ(1, 0))), x1: 6, z1: phaseZ(1, 0) },
+    [Z]: { x0: 6, z0: Math.max(phaseZ(1, 0) + SURFACE_GAP, halfWay(phaseZ(2, 0))), x1: 10, z1: phaseZ(2, 0) },
   };
+  assert.ok(ramps[L]!.z0 > SURFACE_GAP && ramps[Z]!.z0 > phaseZ(1, 0) + SURFACE_GAP, 'the half-way rule binds in this case');
   // Each transition starts half a gap under its ramp's foot: the loser is whole there.
-  assert.deepEqual(transitions.map((m) => [m.loser, m.into, m.zStart, m.zMerge]), [L, Z].map((f) => [f, W, ramps[f]!.z0 - SURFACE_GAP / 2, ramps[f]!.z1]));
+  assert.deepEqual(transitions.map((m) => [m.loser, m.into, m.zMerge]), [L, Z].map((f) => [f, W, ramps[f]!.z1]));
+  transitions.forEach((m) => assert.ok(Math.abs(m.zStart - (ramps[m.loser]!.z0 - SURFACE_GAP / 2)) < 1e-12, `merge of ${m.loser}: zStart ${m.zStart}`));
   let tilted = 0;
   for (let i = 0; i < s.count; i++) {
     const r = ramps[s.lower[i]!];
@@ -83,8 +89,8 @@ test('a smooth merge tilts the loser from the shared boundary (hand-worked z and
 
   // A chunk of merge 2's triangles alone: its box starts at their lowest vertex, the ramp's foot.
   const merge2 = Uint32Array.from({ length: s.count }, (_, i) => i).filter((i) => s.lower[i] === Z && s.upper[i] === W);
-  const box = assembleChunk(s, merge2, t.xs, t.ys, () => 0).bbox;
-  assert.equal(box[2], ramps[Z]!.z0);
+  const box = assembleChunk(s, merge2, s.xs, s.ys, () => 0).bbox;
+  assert.ok(Math.abs(box[2] - ramps[Z]!.z0) < 1e-12, `box z0 ${box[2]}, the foot ${ramps[Z]!.z0}`);
   assert.equal(box[5], s.zEnd[merge2[0]!]);
 
   // 100 x 40 pixels of 0.1: column c has its centre at x = 0.05 + 0.1 c.

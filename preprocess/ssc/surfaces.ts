@@ -159,6 +159,21 @@ export const MAX_TRANSITION_RATIO = 2;
  */
 export const SURFACE_GAP = 1 / 32;
 
+/** Rounds of keeping a merge's ramp off the winner's re-emit levels before giving up on them. */
+const LEVEL_ROUNDS = 8;
+
+/** Where a merge's (or a split part's) transition starts, and where its ramp triangles end in the surfaces. */
+interface Ramp {
+  zStart: number;
+  end: number;
+}
+
+/** The winner's ids over a transition: members[i] until levels[i], where members[i + 1] takes over. */
+interface WinnerIds {
+  members: number[];
+  levels: number[];
+}
+
 /**
  * A merge's transition: from zStart, the last z at which the loser is whole (half a gap below
  * its tilted surface's lowest vertex, above every older surface there), to zMerge, the merge's
@@ -172,7 +187,11 @@ export interface MergeTransition {
   zMerge: number;
   /** Drawn tilted (with --smooth, room in z and a vertex off the shared boundary). */
   tilted: boolean;
-  /** Its triangles in the surfaces: from `first` up to (not including) `end`. */
+  /**
+   * Its ramp's triangles in the surfaces: from `first` up to (not including) `end`; their upper
+   * face is the winner, or the id it had before a re-emit during the transition (copies of the
+   * part taken by then follow, at the re-emit's z).
+   */
   first: number;
   end: number;
 }
@@ -230,10 +249,16 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
   const tris: number[] = [];
   const scaleInfo = scaleInfoOf(t);
   /**
-   * The earliest z of a transition ending at z: one zoom level before. It grows with z, and z
-   * only grows as the tGAP is replayed, so older surfaces below it are never needed again.
+   * The earliest z of a transition ending at z: one zoom level before, and within the first
+   * two levels half way (in scale) back to the base scale, so that their transitions do not all
+   * start at the floor (where the map starts, every one of them would be moving at once). It
+   * grows with z, and z only grows as the tGAP is replayed, so older surfaces below it are never
+   * needed again.
    */
-  const reachBack = (z: number): number => zAtScale(scaleInfo, scaleAtZ(scaleInfo, z) / MAX_TRANSITION_RATIO);
+  const reachBack = (z: number): number => {
+    const scale = scaleAtZ(scaleInfo, z);
+    return zAtScale(scaleInfo, scale / Math.min(MAX_TRANSITION_RATIO, Math.sqrt(scale / scaleInfo.baseScale)));
+  };
   const byFace = opts.smooth ? new SurfacesByFace(out) : undefined;
   /** Surfaces from `from` up to the last one added lie in `face`'s area (smooth cubes only). */
   const lieIn = (face: number, from: number): void => {
@@ -265,11 +290,18 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
    * earlier than zFoot, and waits above the older surfaces still in the loser's area
    * (smooth-merge.ts); or flat at zMerge when it cannot tilt. Returns the transition's zStart.
    */
-  const emitSmoothMerge = (byFace: SurfacesByFace, loser: number, into: number, s: number, sharedWithInto: number[], zFoot: number, zMerge: number, key: string): number => {
+  const emitSmoothMerge = (byFace: SurfacesByFace, loser: number, into: number, s: number, sharedWithInto: number[], zFoot: number, zMerge: number, key: string): Ramp => {
     triangulate(loser, s);
-    const zStart = emitTilted(byFace, tris, loser, into, s, sharedWithInto, zFoot, zMerge, key, 'merge');
-    if (zStart < zMerge) stats.tiltedMerges++;
-    return zStart;
+    // The winner's earlier ids inside the transition: it may have been re-emitted meanwhile.
+    const members = [into];
+    const levels: number[] = [];
+    for (let g = into; reemitOf[g]! > 0 && createdZ[g]! > zFoot; g = reemitOf[g]!) {
+      levels.unshift(createdZ[g]!);
+      members.unshift(reemitOf[g]!);
+    }
+    const ramp = emitTilted(byFace, tris, loser, into, s, sharedWithInto, zFoot, zMerge, key, 'merge', { members, levels });
+    if (ramp.zStart < zMerge) stats.tiltedMerges++;
+    return ramp;
   };
   /**
    * Part of the loser's area (`area`, triangles of state s) given to `into` at zEnd, tilted as
@@ -278,7 +310,8 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
    */
   const emitTilted = (
     byFace: SurfacesByFace, area: number[], loser: number, into: number, s: number, sharedWithInto: number[], zFoot: number, zMerge: number, key: string, kind: 'merge' | 'split',
-  ): number => {
+    winner: WinnerIds = { members: [into], levels: [] },
+  ): Ramp => {
     // A vertex of the shared boundary may start once the winner lies beside it.
     const shared = new Map<number, number>();
     const segments = new Set<string>();
@@ -292,19 +325,70 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
     stats[kind] += own.length / 3;
     stats.chordSplits += (own.length - area.length) / 3;
     const lowest = byFace.lowestZ(loser, own, zFoot, SURFACE_GAP, reachBack(zMerge));
-    const z = smoothMergeZ(own, out.xs, out.ys, shared, { zFoot, zMerge, lowest });
+    let { members, levels } = winner;
+    let z = smoothMergeZ(own, out.xs, out.ys, shared, { zFoot, zMerge, lowest });
+    if (z && levels.length > 0) {
+      z = keepOffLevels(own, shared, zFoot, zMerge, lowest, levels, z);
+      if (!z) {
+        // No way round the winner's re-emits: start after the last, as its id is then one.
+        members = [into];
+        levels = [];
+        const after = Math.max(zFoot, createdZ[into]! + SURFACE_GAP);
+        z = smoothMergeZ(own, out.xs, out.ys, shared, { zFoot: after, zMerge, lowest: byFace.lowestZ(loser, own, after, SURFACE_GAP, reachBack(zMerge)) });
+      }
+    }
     const zOf = (v: number): number => z?.get(v) ?? zMerge;
     let zLow = zMerge;
+    /** Per ramp triangle, how many of the winner's re-emits lie at or below it (its upper id). */
+    const group: number[] = [];
     for (let i = 0; i < own.length; i += 3) {
       const a = own[i]!, b = own[i + 1]!, c = own[i + 2]!;
       if (z) {
-        out.addTilted(a, b, c, zOf(a), zOf(b), zOf(c), into, loser, key);
-        zLow = Math.min(zLow, zOf(a), zOf(b), zOf(c));
+        const lo = Math.min(zOf(a), zOf(b), zOf(c));
+        const g = levels.filter((l) => l <= lo).length;
+        group.push(g);
+        out.addTilted(a, b, c, zOf(a), zOf(b), zOf(c), members[g]!, loser, g === members.length - 1 ? key : `${key}:${g}`); // a piece has one upper face
+        zLow = Math.min(zLow, lo);
       } else {
         out.add(a, b, c, zMerge, into, loser);
       }
     }
-    return z ? zLow - SURFACE_GAP / 2 : zMerge;
+    const end = out.count;
+    // At each re-emit inside the transition, what the winner has taken so far is drawn again
+    // with its new id, as the re-emit draws the rest of it.
+    levels.forEach((level, i) => {
+      for (let t = 0; t < group.length; t++) {
+        if (group[t]! <= i) out.add(own[3 * t]!, own[3 * t + 1]!, own[3 * t + 2]!, level, members[i + 1]!, members[i]!);
+      }
+    });
+    return { zStart: z ? zLow - SURFACE_GAP / 2 : zMerge, end };
+  };
+  /**
+   * The ramp `z` changed so that no triangle crosses one of the winner's re-emit levels: the
+   * part below a level shows the winner's id before it, the part above the one after. Vertices
+   * of a crossing triangle below the level wait there, and the front is run again (a few times
+   * at most); null when it does not settle.
+   */
+  const keepOffLevels = (
+    own: number[], shared: ReadonlyMap<number, number>, zFoot: number, zMerge: number, lowest: ReadonlyMap<number, number>, levels: readonly number[], first: Map<number, number>,
+  ): Map<number, number> | null => {
+    const waits = new Map(lowest);
+    let z: Map<number, number> | null = first;
+    for (let round = 0; round < LEVEL_ROUNDS && z; round++) {
+      let crossed = false;
+      for (let i = 0; i < own.length; i += 3) {
+        const zs = [z.get(own[i]!) ?? zMerge, z.get(own[i + 1]!) ?? zMerge, z.get(own[i + 2]!) ?? zMerge];
+        const lo = Math.min(...zs), hi = Math.max(...zs);
+        for (const level of levels) {
+          if (!(lo < level && level < hi)) continue;
+          crossed = true;
+          for (let k = 0; k < 3; k++) if (zs[k]! < level) waits.set(own[i + k]!, Math.max(waits.get(own[i + k]!) ?? -Infinity, level));
+        }
+      }
+      if (!crossed) return z;
+      z = smoothMergeZ(own, out.xs, out.ys, shared, { zFoot, zMerge, lowest: waits });
+    }
+    return null;
   };
   /**
    * Where a smooth removal's corner starts to recede: the triangle (a, v, b) tilts from its
@@ -322,6 +406,8 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
     return Math.min(start, z);
   };
   const transitions: MergeTransition[] = [];
+  /** Per face made by a re-emit, the face it replaced. */
+  const reemitOf = new Int32Array(faces.length);
 
   for (const e of born[0]!) if (edges[e]!.stepHigh > 0) attach(e, 0);
   for (let f = 1; f < faces.length; f++) {
@@ -339,17 +425,17 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
       if (e.kind === EventKind.Merge) {
         const shared = sharedEdges(e.loser, e.into, k - 1);
         const first = out.count;
-        let zStart = z0;
+        let ramp: Ramp = { zStart: z0, end: first };
         if (byFace) {
-          // No further back than one zoom level, and not before the winner was (re)created: the
-          // upper face must be the one shown beside it.
-          zStart = emitSmoothMerge(byFace, e.loser, e.into, k - 1, shared, Math.max(SURFACE_GAP, reachBack(z0), createdZ[e.into]! + SURFACE_GAP), z0, `m${ev}`);
+          // No further back than one zoom level (the winner's re-emits meanwhile are handled there).
+          ramp = emitSmoothMerge(byFace, e.loser, e.into, k - 1, shared, Math.max(SURFACE_GAP, reachBack(z0)), z0, `m${ev}`);
           lieIn(e.into, first);
           byFace.hand(e.loser, e.into);
         } else {
           stats.merge += emitFace(e.loser, k - 1, z0, e.into, e.loser);
+          ramp.end = out.count;
         }
-        transitions.push({ step: k, loser: e.loser, into: e.into, zStart, zMerge: z0, tilted: zStart < z0, first, end: out.count });
+        transitions.push({ step: k, loser: e.loser, into: e.into, zStart: ramp.zStart, zMerge: z0, tilted: ramp.zStart < z0, first, end: ramp.end });
         // The winner grows; the loser's neighbours now border the winner.
         relabel(e.loser, z0, before);
         handOn.push([e.loser, e.into]);
@@ -367,7 +453,7 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
           for (const [into, area] of [...byInto].sort((p, q) => p[0] - q[0])) {
             const first = out.count;
             const zFoot = Math.max(SURFACE_GAP, reachBack(z0), createdZ[into]! + SURFACE_GAP);
-            if (emitTilted(byFace, area, e.loser, into, k - 1, sharedEdges(e.loser, into, k - 1), zFoot, z0, `p${ev}:${into}`, 'split') < z0) stats.tiltedSplits++;
+            if (emitTilted(byFace, area, e.loser, into, k - 1, sharedEdges(e.loser, into, k - 1), zFoot, z0, `p${ev}:${into}`, 'split').zStart < z0) stats.tiltedSplits++;
             lieIn(into, first);
           }
         } else {
@@ -379,8 +465,9 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
         faceEdges.delete(e.loser);
       } else {
         const zRe = phaseZ(k, REEMIT_PHASE);
-        relabel(e.loser, zRe, (f) => resolveFaceAt(faces, f, k, LAST_REMOVAL_PHASE));
+        // Not a change of side: the same face under a new id (createdZ bounds what needs the id).
         createdZ[e.into] = zRe;
+        reemitOf[e.into] = e.loser;
         handOn.push([e.loser, e.into]);
         reemits.push([e.loser, e.into]);
       }
