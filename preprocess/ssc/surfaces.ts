@@ -288,7 +288,7 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
   /**
    * The loser's area (state s) tilted: a front leaves the boundary shared with the winner, no
    * earlier than zFoot, and waits above the older surfaces still in the loser's area
-   * (smooth-merge.ts); or flat at zMerge when it cannot tilt. Returns the transition's zStart.
+   * (smooth-merge.ts); or flat at zMerge when it cannot tilt. Returns its Ramp.
    */
   const emitSmoothMerge = (byFace: SurfacesByFace, loser: number, into: number, s: number, sharedWithInto: number[], zFoot: number, zMerge: number, key: string): Ramp => {
     triangulate(loser, s);
@@ -304,9 +304,9 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
     return ramp;
   };
   /**
-   * Part of the loser's area (`area`, triangles of state s) given to `into` at zEnd, tilted as
-   * a smooth merge is (a front from their shared boundary); or flat at zEnd when it cannot
-   * tilt. Returns where its transition starts (zEnd: flat).
+   * Part of the loser's area (`area`, triangles of state s) given to `into` at zMerge, tilted as
+   * a smooth merge is (a front from their shared boundary); or flat at zMerge when it cannot
+   * tilt. Returns where its transition starts (zMerge: flat) and where its ramp's triangles end.
    */
   const emitTilted = (
     byFace: SurfacesByFace, area: number[], loser: number, into: number, s: number, sharedWithInto: number[], zFoot: number, zMerge: number, key: string, kind: 'merge' | 'split',
