@@ -11,6 +11,8 @@ const INDEX_FROM = 32;
 
 export class SurfacesByFace {
   private readonly lists = new Map<number, number[]>();
+  /** Per face, the highest z of the surfaces in its area. */
+  private readonly tops = new Map<number, number>();
 
   constructor(private readonly out: Surfaces) {}
 
@@ -19,12 +21,25 @@ export class SurfacesByFace {
     let l = this.lists.get(face);
     if (!l) this.lists.set(face, (l = []));
     l.push(tri);
+    this.tops.set(face, Math.max(this.tops.get(face) ?? -Infinity, this.maxZ(tri)));
+  }
+
+  /** How many surfaces lie in `face`'s area (as far as they are still kept). */
+  count(face: number): number {
+    return this.lists.get(face)?.length ?? 0;
+  }
+
+  /** The highest z of any surface in `face`'s area (-Infinity: none above the floor). */
+  top(face: number): number {
+    return this.tops.get(face) ?? -Infinity;
   }
 
   /** `from`'s area joins `to`'s (a merge). */
   hand(from: number, to: number): void {
     const a = this.lists.get(from);
     this.lists.delete(from);
+    this.tops.set(to, Math.max(this.top(to), this.top(from)));
+    this.tops.delete(from);
     if (!a) return;
     const b = this.lists.get(to);
     if (!b) {
@@ -40,6 +55,7 @@ export class SurfacesByFace {
   /** The face ends, its area drawn afresh (a split or a re-emit). */
   drop(face: number): void {
     this.lists.delete(face);
+    this.tops.delete(face);
   }
 
   private maxZ(t: number): number {
