@@ -14,7 +14,7 @@ export const enum Side {
 export class EdgeSideTimes {
   /** Per edge and side, the latest change of the face on it since the edge was made (its birth when made afresh). */
   private readonly own: Float64Array;
-  /** Per edge and side, its vertices' times inherited from its parents (parents no longer change). */
+  /** Per edge and side, its parents' vertices' times (parents no longer change). */
   private readonly inherited = new Map<number, Map<number, number>>();
 
   constructor(private readonly edges: readonly TgapEdge[]) {
@@ -31,14 +31,18 @@ export class EdgeSideTimes {
 
   /** Per vertex of edge e, since when the face on its `side` has been there. */
   vertexTimes(e: number, side: Side): Map<number, number> {
-    const base = this.fromParents(e, side);
+    const base = this.parentTimes(e, side);
     const own = this.own[2 * e + side]!;
     const out = new Map<number, number>();
     for (const v of this.edges[e]!.verts) out.set(v, Math.max(base.get(v) ?? own, own));
     return out;
   }
 
-  private fromParents(e: number, side: Side): Map<number, number> {
+  /**
+   * Per vertex of edge e's parents (those simplification removed from e too), since when the
+   * face on e's `side` has been beside it.
+   */
+  parentTimes(e: number, side: Side): Map<number, number> {
     const key = 2 * e + side;
     let m = this.inherited.get(key);
     if (m) return m;
@@ -47,10 +51,7 @@ export class EdgeSideTimes {
     for (const p of edge.parents) {
       // A parent used reversed has its sides swapped.
       const times = p >= 0 ? this.vertexTimes(p, side) : this.vertexTimes(-p - 1, side === Side.Left ? Side.Right : Side.Left);
-      for (const v of edge.verts) {
-        const t = times.get(v);
-        if (t !== undefined) m.set(v, Math.max(m.get(v) ?? -Infinity, t));
-      }
+      for (const [v, t] of times) m.set(v, Math.max(m.get(v) ?? -Infinity, t));
     }
     this.inherited.set(key, m);
     return m;

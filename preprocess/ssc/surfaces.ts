@@ -400,10 +400,10 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
    * the upper face was created or lay beside the corner (its side of the parent chain), and
    * above every older surface in the losing face's area.
    */
-  const smoothRemovalStart = (byFace: SurfacesByFace, tri: number[], upper: number, lower: number, parent: number, side: Side, z: number): number => {
+  const smoothRemovalStart = (byFace: SurfacesByFace, tri: number[], upper: number, lower: number, edge: number, side: Side, z: number): number => {
     const zCap = reachBack(z);
     let start = Math.max(SURFACE_GAP, zCap, createdZ[upper]! + SURFACE_GAP);
-    const times = parent >= 0 ? sides.vertexTimes(parent, side) : sides.vertexTimes(-parent - 1, side === Side.Left ? Side.Right : Side.Left);
+    const times = sides.parentTimes(edge, side);
     for (const w of tri) start = Math.max(start, (times.get(w) ?? z) + SURFACE_GAP);
     // Above the older surfaces it overlaps in the losing face's area; where that face holds many
     // (a large face), above all of them: looking up each of nlcd_zion's 138,000 removals in
@@ -522,7 +522,7 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
         const z = phaseZ(k, edge.removedPhase[r]!);
         const [upper, lower] = o > 0 ? [left, right] : [right, left];
         const tri = o > 0 ? [a, b, v] : [a, v, b];
-        const zCorner = byFace ? smoothRemovalStart(byFace, tri, upper, lower, p, upper === left ? Side.Left : Side.Right, z) : z;
+        const zCorner = byFace ? smoothRemovalStart(byFace, tri, upper, lower, e, upper === left ? Side.Left : Side.Right, z) : z;
         if (zCorner < z) {
           out.addTilted(tri[0]!, tri[1]!, tri[2]!, tri[0] === v ? zCorner : z, tri[1] === v ? zCorner : z, tri[2] === v ? zCorner : z, upper, lower, `s${out.count}`);
           stats.tiltedRemovals++;
