@@ -11,10 +11,10 @@ import { parseSurface, surfaceZ } from '../format/slicing-surface.js';
 import { fitView, rasterizeAt, type View } from '../preprocess/map/rasterize.js';
 import { CpuSlicer, sliceChunk } from '../preprocess/ssc/cpu-slicer.js';
 import { CubeReader } from '../preprocess/ssc/read-cube.js';
-import { replacedFaces, winnerIds } from '../preprocess/ssc/merge-surface.js';
+import { winnerIds } from '../preprocess/ssc/merge-surface.js';
 import { buildSurfaces } from '../preprocess/ssc/surfaces.js';
 import { decodeTgap, encodeTgap, readTgap } from '../format/tgap.js';
-import { faceEndZ, phaseZ, REEMIT_PHASE, resolveFace, type Tgap } from '../format/tgap-model.js';
+import { faceEndZ, faceStartZ, replacedFaces, resolveFace } from '../format/tgap-model.js';
 import { dataset, styleFile } from '../testing/paths.js';
 import { readIds } from '../testing/ids-file.js';
 import { runSsc } from '../testing/run-ssc.js';
@@ -242,7 +242,6 @@ function detachedGain(ids: Uint32Array, footprint: Uint8Array, winner: ReadonlyS
 }
 
 /** z from which face f is shown: the floor, or its re-emit. */
-const faceStartZ = (t: Tgap, f: number): number => (t.faces[f]!.stepLow === 0 ? 0 : phaseZ(t.faces[f]!.stepLow, REEMIT_PHASE));
 
 test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the classic one)', async (t) => {
   const dir = tempDir(t);
@@ -287,7 +286,7 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
       let bad = 0, first = '';
       for (let p = 0; p < ids.length; p++) {
         const f = ids[p]!;
-        const ok = domain[p] === 0 ? f === 0 : f > 0 && faceStartZ(tgap, f) <= z && z < faceEndZ(tgap.faces[f]!, zMax);
+        const ok = domain[p] === 0 ? f === 0 : f > 0 && faceStartZ(tgap.faces[f]!) <= z && z < faceEndZ(tgap.faces[f]!, zMax);
         if (!ok && bad++ === 0) first = `pixel ${p} shows face ${f}`;
       }
       assert.equal(bad, 0, `z ${z}: ${bad} pixels wrong, first ${first}`);
@@ -297,7 +296,7 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
 
   await t.test('in every merge the share of the loser\'s area the winner has not taken falls monotonically from all to none, and what it took is attached to it', (t) => {
     const { surfaces: s, transitions } = buildSurfaces(tgap, { smooth: true });
-    const replaced = replacedFaces(tgap);
+    const replaced = replacedFaces(tgap.faces);
     // Inside, and a centimetre from the edges: the chunks' float32 coordinates put points
     // closer than that (a millimetre at these coordinates) on either side.
     const MARGIN = 0.01;

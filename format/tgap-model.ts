@@ -115,6 +115,20 @@ export function resolveFaceAt(faces: TgapFace[], f: number, step: number, phase:
 }
 
 /** z from which a face's surfaces are covered by newer ones (Infinity: it lives to the top). */
+/** z from which a face is shown: the floor for an input face, else its re-emit (the only way faces are made). */
+export function faceStartZ(face: TgapFace): number {
+  return face.stepLow === 0 ? 0 : phaseZ(face.stepLow, REEMIT_PHASE);
+}
+
+/** Per face made by a re-emit, the face it replaced (same class and attributes, new id). */
+export function replacedFaces(faces: readonly TgapFace[]): Map<number, number> {
+  const replaced = new Map<number, number>();
+  faces.forEach((f, i) => {
+    if (i > 0 && f.endPhase === REEMIT_PHASE && f.mergedInto > 0) replaced.set(f.mergedInto, i);
+  });
+  return replaced;
+}
+
 export function faceEndZ(face: TgapFace, steps: number): number {
   return face.stepHigh > steps ? Infinity : phaseZ(face.stepHigh, face.endPhase);
 }

@@ -2,7 +2,7 @@
 // winner takes the loser's area during the merge's transition, and the loser's boundary with
 // the winner as the tGAP has it just before the merge. Found from the surfaces and the tGAP
 // alone, so the checks hold whichever way the build shapes the transition.
-import { REEMIT_PHASE, resolveFace, type Tgap } from '../../format/tgap-model.js';
+import { replacedFaces, resolveFace, type Tgap } from '../../format/tgap-model.js';
 import type { MergeTransition, Surfaces } from './surfaces.js';
 
 /**
@@ -11,7 +11,7 @@ import type { MergeTransition, Surfaces } from './surfaces.js';
  * inside the transition's z range, but it is an event of its own).
  */
 export function mergeTriangles(s: Surfaces, transitions: readonly MergeTransition[], t?: Pick<Tgap, 'faces'>): number[][] {
-  const replaced = t ? replacedFaces(t) : undefined;
+  const replaced = t ? replacedFaces(t.faces) : undefined;
   return transitions.map(({ first, end, loser, into }) => {
     if (!(first >= 0 && first <= end && end <= s.count)) throw new Error(`merge of ${loser} into ${into}: triangles ${first}..${end} not in the surfaces (${s.count})`);
     const winner = replaced ? winnerIds(replaced, into) : new Set([into]);
@@ -22,15 +22,6 @@ export function mergeTriangles(s: Surfaces, transitions: readonly MergeTransitio
     }
     return out;
   });
-}
-
-/** Per face made by a re-emit, the face it replaced. */
-export function replacedFaces(t: Pick<Tgap, 'faces'>): Map<number, number> {
-  const replaced = new Map<number, number>();
-  t.faces.forEach((f, i) => {
-    if (i > 0 && f.endPhase === REEMIT_PHASE && f.mergedInto > 0) replaced.set(f.mergedInto, i);
-  });
-  return replaced;
 }
 
 /**

@@ -17,7 +17,7 @@ import test from 'node:test';
 import assert from 'node:assert/strict';
 import { decodeChunk } from '../../format/chunk.js';
 import { scaleAtZ, zAtScale } from '../../format/scale.js';
-import { EventKind, faceEndZ, phaseZ, REEMIT_PHASE, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
+import { EventKind, faceEndZ, faceStartZ, phaseZ, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
 import { fixtureTgap, rect, type FixtureFace } from '../../testing/planar-fixtures.js';
 import { fitView, type View } from '../map/rasterize.js';
 import { assembleChunk } from './assemble-chunk.js';
@@ -106,7 +106,6 @@ test('a smooth merge tilts the loser from the shared boundary (hand-worked z and
 });
 
 /** z from which face f is shown: the floor, or its re-emit. */
-const faceStartZ = (t: Tgap, f: number): number => (t.faces[f]!.stepLow === 0 ? 0 : phaseZ(t.faces[f]!.stepLow, REEMIT_PHASE));
 
 test('a smooth cube is a partition at every z and equals the classic one at the floor and the top', () => {
   // A 4 x 3 grid of rectangles of uneven sizes and two classes.
@@ -127,7 +126,7 @@ test('a smooth cube is a partition at every z and equals the classic one at the 
     for (let p = 0; p < ids.length; p++) {
       const f = ids[p]!;
       assert.ok(f > 0, `z ${z}: pixel ${p} shows no face`);
-      assert.ok(faceStartZ(t, f) <= z && z < faceEndZ(t.faces[f]!, zMax), `z ${z}: pixel ${p} shows face ${f}, not alive`);
+      assert.ok(faceStartZ(t.faces[f]!) <= z && z < faceEndZ(t.faces[f]!, zMax), `z ${z}: pixel ${p} shows face ${f}, not alive`);
     }
   }
   const classic = slicer(t, buildSurfaces(t).surfaces, view);

@@ -11,7 +11,7 @@
 //   `smooth`, tilted from the removed corner up to the removal.
 import { orient } from '../geom/predicates.js';
 import { scaleAtZ, zAtScale } from '../../format/scale.js';
-import { EventKind, faceEndZ, LAST_REMOVAL_PHASE, phaseZ, REEMIT_PHASE, resolveFace, resolveFaceAt, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
+import { EventKind, faceEndZ, faceStartZ, LAST_REMOVAL_PHASE, phaseZ, REEMIT_PHASE, replacedFaces, resolveFace, resolveFaceAt, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
 import { smoothMergeZ } from './smooth-merge.js';
 import { EdgeSideTimes, Side } from './edge-side-times.js';
 import { edgeKey, splitChords } from './split-chords.js';
@@ -228,7 +228,6 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
   // (a boundary the loser came to share with the winner when a neighbour merged into the winner:
   // the winner's side must be the winner's, the neighbour's transition over, so that what the
   // winner gains stays attached to it).
-  const createdZ = new Float64Array(faces.length);
   const sides = new EdgeSideTimes(edges);
   /** f's side of its edges changed at z (f merged, split or was replaced; `at` resolves an edge's faces as f had them). */
   const relabel = (f: number, z: number, at: (face: number) => number): void => {
@@ -251,6 +250,8 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
   };
   const tris: number[] = [];
   const scaleInfo = scaleInfoOf(t);
+  /** The face each re-emitted face replaced (smooth merges run on through a winner's re-emits). */
+  const replaced = opts.smooth ? replacedFaces(faces) : undefined;
   /**
    * The earliest z of a transition ending at z: one zoom level before, and within the first
    * two levels half way (in scale) back to the base scale, so that their transitions do not all
@@ -298,9 +299,9 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
     // The winner's earlier ids inside the transition: it may have been re-emitted meanwhile.
     const members = [into];
     const levels: number[] = [];
-    for (let g = into; reemitOf[g]! > 0 && createdZ[g]! > zFoot; g = reemitOf[g]!) {
-      levels.unshift(createdZ[g]!);
-      members.unshift(reemitOf[g]!);
+    for (let g = into; replaced!.has(g) && faceStartZ(faces[g]!) > zFoot; g = replaced!.get(g)!) {
+      levels.unshift(faceStartZ(faces[g]!));
+      members.unshift(replaced!.get(g)!);
     }
     const ramp = emitTilted(byFace, tris, loser, into, s, sharedWithInto, zFoot, zMerge, key, 'merge', { members, levels });
     if (ramp.zStart < zMerge) stats.tiltedMerges++;
@@ -336,7 +337,7 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
         // No way round the winner's re-emits: start after the last, as its id is then one.
         members = [into];
         levels = [];
-        const after = Math.max(zFoot, createdZ[into]! + SURFACE_GAP);
+        const after = Math.max(zFoot, faceStartZ(faces[into]!) + SURFACE_GAP);
         z = smoothMergeZ(own, out.xs, out.ys, shared, { zFoot: after, zMerge, lowest: byFace.lowestZ(loser, own, after, SURFACE_GAP, reachBack(zMerge)) });
       }
     }
@@ -402,7 +403,7 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
    */
   const smoothRemovalStart = (byFace: SurfacesByFace, tri: number[], upper: number, lower: number, edge: number, side: Side, z: number): number => {
     const zCap = reachBack(z);
-    let start = Math.max(SURFACE_GAP, zCap, createdZ[upper]! + SURFACE_GAP);
+    let start = Math.max(SURFACE_GAP, zCap, faceStartZ(faces[upper]!) + SURFACE_GAP);
     const times = sides.parentTimes(edge, side);
     for (const w of tri) start = Math.max(start, (times.get(w) ?? z) + SURFACE_GAP);
     // Above the older surfaces it overlaps in the losing face's area; where that face holds many
@@ -413,8 +414,6 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
     return Math.min(start, z);
   };
   const transitions: MergeTransition[] = [];
-  /** Per face made by a re-emit, the face it replaced. */
-  const reemitOf = new Int32Array(faces.length);
 
   for (const e of born[0]!) if (edges[e]!.stepHigh > 0) attach(e, 0);
   for (let f = 1; f < faces.length; f++) {
@@ -459,7 +458,7 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
           }
           for (const [into, area] of [...byInto].sort((p, q) => p[0] - q[0])) {
             const first = out.count;
-            const zFoot = Math.max(SURFACE_GAP, reachBack(z0), createdZ[into]! + SURFACE_GAP);
+            const zFoot = Math.max(SURFACE_GAP, reachBack(z0), faceStartZ(faces[into]!) + SURFACE_GAP);
             if (emitTilted(byFace, area, e.loser, into, k - 1, sharedEdges(e.loser, into, k - 1), zFoot, z0, `p${ev}:${into}`, 'split').zStart < z0) stats.tiltedSplits++;
             lieIn(into, first);
           }
@@ -471,10 +470,7 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
         relabel(e.loser, z0, before);
         faceEdges.delete(e.loser);
       } else {
-        const zRe = phaseZ(k, REEMIT_PHASE);
-        // Not a change of side: the same face under a new id (createdZ bounds what needs the id).
-        createdZ[e.into] = zRe;
-        reemitOf[e.into] = e.loser;
+        // A re-emit: not a change of side, the same face under a new id (faceStartZ bounds what needs the id).
         handOn.push([e.loser, e.into]);
         reemits.push([e.loser, e.into]);
       }
