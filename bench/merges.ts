@@ -26,8 +26,8 @@ try {
     process.stderr.write(`${d.name}... `);
     const t1 = performance.now();
     const { tgap } = await generalizedDataset(dir, path.basename(d.file), path.basename(d.style));
-    const { surfaces, transitions } = buildSurfaces(tgap, { smooth: true });
-    const checks = mergeConnectivity(tgap, surfaces, transitions, SAMPLES);
+    const { surfaces, transitions, tgap: cube } = buildSurfaces(tgap, { smooth: true });
+    const checks = mergeConnectivity(cube, surfaces, transitions, SAMPLES);
     const bad = checks.filter(violates);
     for (const c of bad.slice(0, 3)) examples.push(`${d.name}: face ${c.transition.loser} into ${c.transition.into} (step ${c.transition.step}), detached parts at the ${SAMPLES} z: ${c.detached.join(' ')}`);
     const cvs = checks.map((c) => ({ c, cv: slopeVariation(surfaces, c.triangles, surfaces.xs, surfaces.ys) })).filter((x) => Number.isFinite(x.cv));

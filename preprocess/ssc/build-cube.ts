@@ -52,7 +52,9 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const log = opts.log ?? (() => {});
   const { timings, lap } = lapTimer();
   const smooth = opts.smooth ?? true;
-  const { surfaces, stats } = buildSurfaces(t, { smooth });
+  // The faces the surfaces name: a smooth build skips some re-emits (late-reemits.ts).
+  const { surfaces, stats, tgap: cubeTgap } = buildSurfaces(t, { smooth });
+  const { faces } = cubeTgap;
   lap('surfaces');
   log(`surfaces: ${surfaces.count} triangles (floor ${stats.floor}, merges ${stats.merge}, splits ${stats.split}, simplification ${stats.simplify}, redrawn ${stats.reemit})${smooth ? `, ${stats.tiltedMerges} merges and ${stats.tiltedRemovals} removals tilted` : ''}`);
   const info = scaleInfoOf(t);
@@ -64,7 +66,7 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   });
   lap('plan');
   const files = new Map<string, Uint8Array>();
-  const classOf = (f: number): number => t.faces[f]!.classIndex;
+  const classOf = (f: number): number => faces[f]!.classIndex;
   const leaves: ChunkLeaf[] = [];
   const chunkBytes: number[] = [];
   for (let c = 0; c + 1 < plan.start.length; c++) {
@@ -78,8 +80,8 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   }
   lap('chunks');
   const facePages: { first: number; file: string }[] = [];
-  for (let first = 0; first < t.faces.length; first += FACE_PAGE_SIZE) {
-    const bytes = encodeFacePage(t.faces, first, Math.min(FACE_PAGE_SIZE, t.faces.length - first));
+  for (let first = 0; first < faces.length; first += FACE_PAGE_SIZE) {
+    const bytes = encodeFacePage(faces, first, Math.min(FACE_PAGE_SIZE, faces.length - first));
     const { name } = hashName('f', bytes, 'bin');
     files.set(name, bytes);
     facePages.push({ first, file: name });
@@ -116,7 +118,7 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
       style: t.meta.style as CubeIndexJson['meta']['style'],
       attribution: style.attribution ?? '',
       source: t.meta.source,
-      faces: { count: t.faces.length, pageSize: FACE_PAGE_SIZE, pages: facePages },
+      faces: { count: faces.length, pageSize: FACE_PAGE_SIZE, pages: facePages },
       attributes: { count: attrs.length, pageSize: ATTRIBUTE_PAGE_SIZE, pages: attributePages },
     },
     root: tree.root,

@@ -74,7 +74,7 @@ test('bgt_otterlo_400m: the smooth cube changes class flat over at most 3% of th
   const classic = buildSurfaces(tgap);
   const smooth = buildSurfaces(tgap, { smooth: true });
   const c = horizontalChanges(tgap, classic.surfaces, classic.transitions);
-  const s = horizontalChanges(tgap, smooth.surfaces, smooth.transitions);
+  const s = horizontalChanges(smooth.tgap, smooth.surfaces, smooth.transitions);
   t.diagnostic(`classic: ${c.total} triangles, ${sum(c).toFixed(0)} m2 ${JSON.stringify(c.byKind)}; smooth: ${s.total}, ${sum(s).toFixed(1)} m2 ${JSON.stringify(s.byKind)}`);
   // Every merge and split tilts; what is left are simplification triangles with no room in z
   // (removed in the same phase as an older one they overlap) and flat pieces of merges: where a

@@ -122,8 +122,8 @@ test('a merge marked tilted without triangles in its transition is an error nami
 
 test('bgt_otterlo_400m: no merge\'s gain comes apart from the winner at 8 z inside its transition', async (t) => {
   const { tgap } = await generalizedDataset(tempDir(t), 'bgt_otterlo_400m.geojson', 'bgt.json');
-  const { surfaces, transitions } = buildSurfaces(tgap, { smooth: true });
-  const checks = mergeConnectivity(tgap, surfaces, transitions);
+  const { surfaces, transitions, tgap: cube } = buildSurfaces(tgap, { smooth: true });
+  const checks = mergeConnectivity(cube, surfaces, transitions);
   assert.ok(checks.length > 0.5 * transitions.length, `${checks.length} of ${transitions.length} merges tilted`);
   // Every merge found its shared boundary's corners among its triangles (else all would be "detached").
   const bad = checks.filter(violates).map((c) => `${c.transition.loser}->${c.transition.into}: ${c.detached.join(' ')}`);

@@ -2,60 +2,72 @@
 // be kept above each of them where they overlap (the cube stays a partition at every z): the
 // surfaces whose upper face is the face, or a face merged into it since. A replaced face's
 // surfaces all lie under its re-emitted area, so only that is kept.
-import Flatbush from 'flatbush';
+import RBush from 'rbush';
 import { trianglesOverlap } from '../geom/triangles-overlap.js';
 import type { Surfaces } from './surfaces.js';
 
-/** Below this many candidates the triangles are compared one by one. */
-const INDEX_FROM = 32;
+interface Item {
+  minX: number;
+  minY: number;
+  maxX: number;
+  maxY: number;
+  /** The surface triangle. */
+  t: number;
+  /** Its highest z. */
+  z: number;
+}
 
+/**
+ * Per face, its surfaces in a spatial index: a large face (nlcd_zion's biggest holds about
+ * 14,000) is looked up once per removal along its boundary, and scanning its whole list each
+ * time took minutes.
+ */
 export class SurfacesByFace {
-  private readonly lists = new Map<number, number[]>();
-  /** Per face, the highest z of the surfaces in its area. */
-  private readonly tops = new Map<number, number>();
+  private readonly trees = new Map<number, RBush<Item>>();
+  private readonly sizes = new Map<RBush<Item>, number>();
+  /** Surfaces up to this z no later transition reaches (the latest `zForget`): left out of merged trees. */
+  private forgotten = -Infinity;
 
   constructor(private readonly out: Surfaces) {}
 
   /** Surface triangle `tri` now lies in `face`'s area. */
   add(face: number, tri: number): void {
-    let l = this.lists.get(face);
-    if (!l) this.lists.set(face, (l = []));
-    l.push(tri);
-    this.tops.set(face, Math.max(this.tops.get(face) ?? -Infinity, this.maxZ(tri)));
-  }
-
-  /** How many surfaces lie in `face`'s area (as far as they are still kept). */
-  count(face: number): number {
-    return this.lists.get(face)?.length ?? 0;
-  }
-
-  /** The highest z of any surface in `face`'s area (-Infinity: none above the floor). */
-  top(face: number): number {
-    return this.tops.get(face) ?? -Infinity;
+    let tree = this.trees.get(face);
+    if (!tree) this.trees.set(face, (tree = new RBush<Item>()));
+    this.sizes.set(tree, (this.sizes.get(tree) ?? 0) + 1);
+    const { v, xs, ys } = this.out;
+    const a = v[3 * tri]!, b = v[3 * tri + 1]!, c = v[3 * tri + 2]!;
+    tree.insert({
+      minX: Math.min(xs[a]!, xs[b]!, xs[c]!), minY: Math.min(ys[a]!, ys[b]!, ys[c]!),
+      maxX: Math.max(xs[a]!, xs[b]!, xs[c]!), maxY: Math.max(ys[a]!, ys[b]!, ys[c]!),
+      t: tri, z: this.maxZ(tri),
+    });
   }
 
   /** `from`'s area joins `to`'s (a merge). */
   hand(from: number, to: number): void {
-    const a = this.lists.get(from);
-    this.lists.delete(from);
-    this.tops.set(to, Math.max(this.top(to), this.top(from)));
-    this.tops.delete(from);
+    const a = this.trees.get(from);
+    this.trees.delete(from);
     if (!a) return;
-    const b = this.lists.get(to);
+    const b = this.trees.get(to);
     if (!b) {
-      this.lists.set(to, a);
+      this.trees.set(to, a);
       return;
     }
-    // The shorter list into the longer: a face that grows by many merges costs n log n in all.
-    const [long, short] = a.length > b.length ? [a, b] : [b, a];
-    for (const t of short) long.push(t);
-    this.lists.set(to, long);
+    // The smaller tree into the larger: a face that grows by many merges costs n log n in all.
+    const [large, small] = this.sizes.get(a)! > this.sizes.get(b)! ? [a, b] : [b, a];
+    const kept = small.all().filter((item) => item.z > this.forgotten);
+    large.load(kept);
+    this.sizes.set(large, this.sizes.get(large)! + kept.length);
+    this.sizes.delete(small);
+    this.trees.set(to, large);
   }
 
   /** The face ends, its area drawn afresh (a split or a re-emit). */
   drop(face: number): void {
-    this.lists.delete(face);
-    this.tops.delete(face);
+    const tree = this.trees.get(face);
+    if (tree) this.sizes.delete(tree);
+    this.trees.delete(face);
   }
 
   private maxZ(t: number): number {
@@ -78,28 +90,17 @@ export class SurfacesByFace {
    */
   lowestZ(face: number, tris: ArrayLike<number>, zFrom: number, gap: number, zForget: number): Map<number, number> {
     const lowest = new Map<number, number>();
-    const all = this.lists.get(face);
-    if (!all) return lowest;
-    const kept = all.filter((t) => this.maxZ(t) + gap > zForget);
-    this.lists.set(face, kept);
-    const near = kept.filter((t) => this.maxZ(t) + gap > zFrom);
-    if (near.length === 0) return lowest;
+    this.forgotten = Math.max(this.forgotten, zForget - gap);
+    const tree = this.trees.get(face);
+    if (!tree) return lowest;
     const { v } = this.out;
     const a = new Float64Array(6), b = new Float64Array(6);
-    const box = (c: Float64Array): [number, number, number, number] => [Math.min(c[0]!, c[2]!, c[4]!), Math.min(c[1]!, c[3]!, c[5]!), Math.max(c[0]!, c[2]!, c[4]!), Math.max(c[1]!, c[3]!, c[5]!)];
-    let index: Flatbush | undefined;
-    if (near.length >= INDEX_FROM) {
-      index = new Flatbush(near.length);
-      for (const t of near) index.add(...box(this.coords(v, 3 * t, b)));
-      index.finish();
-    }
     for (let i = 0; i + 2 < tris.length; i += 3) {
       this.coords(tris, i, a);
-      const candidates = index ? index.search(...box(a)).map((k) => near[k]!) : near;
+      const box = { minX: Math.min(a[0]!, a[2]!, a[4]!), minY: Math.min(a[1]!, a[3]!, a[5]!), maxX: Math.max(a[0]!, a[2]!, a[4]!), maxY: Math.max(a[1]!, a[3]!, a[5]!) };
       let top = -Infinity;
-      for (const t of candidates) {
-        const zt = this.maxZ(t);
-        if (zt > top && trianglesOverlap(a, this.coords(v, 3 * t, b))) top = zt;
+      for (const { t, z } of tree.search(box)) {
+        if (z + gap > zFrom && z > top && trianglesOverlap(a, this.coords(v, 3 * t, b))) top = z;
       }
       if (top === -Infinity) continue;
       for (let k = 0; k < 3; k++) {

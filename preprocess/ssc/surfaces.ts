@@ -10,11 +10,13 @@
 // - simplification: each removed vertex's triangle, between the faces on either side; with
 //   `smooth`, tilted from the removed corner up to the removal.
 import { orient } from '../geom/predicates.js';
-import { scaleAtZ, zAtScale } from '../../format/scale.js';
+import { scaleAtZ, zAtScale, type ScaleInfo } from '../../format/scale.js';
 import { EventKind, faceEndZ, faceStartZ, LAST_REMOVAL_PHASE, phaseZ, REEMIT_PHASE, replacedFaces, resolveFace, resolveFaceAt, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
 import { smoothMergeZ } from './smooth-merge.js';
 import { EdgeSideTimes, Side } from './edge-side-times.js';
 import { edgeKey, splitChords } from './split-chords.js';
+import { skipLateReemits } from './late-reemits.js';
+import { removalHeights } from './removal-heights.js';
 import { SurfacesByFace } from './surfaces-by-face.js';
 import { triangulateFace, type FaceEdge, type TriangulateStats } from './triangulate-face.js';
 
@@ -159,9 +161,6 @@ export const MAX_TRANSITION_RATIO = 2;
  */
 export const SURFACE_GAP = 1 / 32;
 
-/** Surfaces in the losing face's area up to which a removal looks up those it overlaps. */
-const REMOVAL_LOOKUP_MAX = 256;
-
 /** Rounds of keeping a merge's ramp off the winner's re-emit levels before giving up on them. */
 const LEVEL_ROUNDS = 8;
 
@@ -169,6 +168,18 @@ const LEVEL_ROUNDS = 8;
 interface Ramp {
   zStart: number;
   end: number;
+}
+
+/** A removed vertex's triangle (counterclockwise), passing from `lower` to `upper` at its phase. */
+interface Removal {
+  tri: number[];
+  v: number;
+  upper: number;
+  lower: number;
+  edge: number;
+  /** The upper face's side of the edge. */
+  side: Side;
+  phase: number;
 }
 
 /** The winner's ids over a transition: members[i] until levels[i], where members[i + 1] takes over. */
@@ -199,7 +210,24 @@ export interface MergeTransition {
   end: number;
 }
 
-export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: Surfaces; stats: SurfaceStats; transitions: MergeTransition[] } {
+/**
+ * The earliest z of a transition ending at z: one zoom level before, and within the first two
+ * levels half way (in scale) back to the base scale, so that their transitions do not all start
+ * at the floor (where the map starts, every one of them would be moving at once). It grows with
+ * z, and z only grows as the tGAP is replayed, so older surfaces below it are never needed again.
+ */
+export function reachBackZ(info: ScaleInfo, z: number): number {
+  const scale = scaleAtZ(info, z);
+  return zAtScale(info, scale / Math.min(MAX_TRANSITION_RATIO, Math.sqrt(scale / info.baseScale)));
+}
+
+/**
+ * The surfaces of the cube built from tGAP `input`, and the tGAP they name faces of: with
+ * `smooth`, `input` without the re-emits of faces that end soon after (late-reemits.ts), whose
+ * faces are the ones to write beside the surfaces.
+ */
+export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surfaces: Surfaces; stats: SurfaceStats; transitions: MergeTransition[]; tgap: Tgap } {
+  const t = opts.smooth ? skipLateReemits(input, (z) => reachBackZ(scaleInfoOf(input), z)).tgap : input;
   const steps = t.meta.steps;
   const zTop = steps + 1;
   const out = new Surfaces(t.xs, t.ys);
@@ -252,17 +280,7 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
   const scaleInfo = scaleInfoOf(t);
   /** The face each re-emitted face replaced (smooth merges run on through a winner's re-emits). */
   const replaced = opts.smooth ? replacedFaces(faces) : undefined;
-  /**
-   * The earliest z of a transition ending at z: one zoom level before, and within the first
-   * two levels half way (in scale) back to the base scale, so that their transitions do not all
-   * start at the floor (where the map starts, every one of them would be moving at once). It
-   * grows with z, and z only grows as the tGAP is replayed, so older surfaces below it are never
-   * needed again.
-   */
-  const reachBack = (z: number): number => {
-    const scale = scaleAtZ(scaleInfo, z);
-    return zAtScale(scaleInfo, scale / Math.min(MAX_TRANSITION_RATIO, Math.sqrt(scale / scaleInfo.baseScale)));
-  };
+  const reachBack = (z: number): number => reachBackZ(scaleInfo, z);
   const byFace = opts.smooth ? new SurfacesByFace(out) : undefined;
   /** Surfaces from `from` up to the last one added lie in `face`'s area (smooth cubes only). */
   const lieIn = (face: number, from: number): void => {
@@ -406,11 +424,8 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
     let start = Math.max(SURFACE_GAP, zCap, faceStartZ(faces[upper]!) + SURFACE_GAP);
     const times = sides.parentTimes(edge, side);
     for (const w of tri) start = Math.max(start, (times.get(w) ?? z) + SURFACE_GAP);
-    // Above the older surfaces it overlaps in the losing face's area; where that face holds many
-    // (a large face), above all of them: looking up each of nlcd_zion's 138,000 removals in
-    // those took minutes.
-    if (byFace.count(lower) <= REMOVAL_LOOKUP_MAX) for (const w of byFace.lowestZ(lower, tri, start, SURFACE_GAP, zCap).values()) start = Math.max(start, w);
-    else start = Math.max(start, byFace.top(lower) + SURFACE_GAP);
+    // Above the older surfaces it overlaps in the losing face's area.
+    for (const w of byFace.lowestZ(lower, tri, start, SURFACE_GAP, zCap).values()) start = Math.max(start, w);
     return Math.min(start, z);
   };
   const transitions: MergeTransition[] = [];
@@ -492,6 +507,7 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
     // ... and the new edges join theirs.
     for (const e of born[k]!) if (edges[e]!.stepHigh > k) attach(e, k);
     // Simplification: replay each new version's removals on its parent's chain.
+    const removals: Removal[] = [];
     for (const e of born[k]!) {
       const edge = edges[e]!;
       if (edge.removed.length === 0) continue;
@@ -515,20 +531,27 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
         const o = orient(xs[a]!, ys[a]!, xs[b]!, ys[b]!, xs[v]!, ys[v]!);
         if (o === 0) continue;
         // v left of the new chord: the triangle passes from the right face to the left one.
-        const z = phaseZ(k, edge.removedPhase[r]!);
         const [upper, lower] = o > 0 ? [left, right] : [right, left];
-        const tri = o > 0 ? [a, b, v] : [a, v, b];
-        const zCorner = byFace ? smoothRemovalStart(byFace, tri, upper, lower, e, upper === left ? Side.Left : Side.Right, z) : z;
-        if (zCorner < z) {
-          out.addTilted(tri[0]!, tri[1]!, tri[2]!, tri[0] === v ? zCorner : z, tri[1] === v ? zCorner : z, tri[2] === v ? zCorner : z, upper, lower, `s${out.count}`);
-          stats.tiltedRemovals++;
-        } else {
-          out.add(tri[0]!, tri[1]!, tri[2]!, z, upper, lower);
-        }
-        lieIn(upper, out.count - 1);
-        stats.simplify++;
+        removals.push({ tri: o > 0 ? [a, b, v] : [a, v, b], v, upper, lower, edge: e, side: o > 0 ? Side.Left : Side.Right, phase: edge.removedPhase[r]! });
       }
     }
+    const heights = byFace ? removalHeights(Float64Array.from(removals.flatMap(({ tri }) => tri.flatMap((w) => [xs[w]!, ys[w]!]))), removals.map((r) => r.phase)) : undefined;
+    removals.forEach(({ tri, v, upper, lower, edge, side, phase }, r) => {
+      const z = phaseZ(k, phase);
+      let zCorner = z, zChord = z;
+      if (byFace) {
+        zCorner = smoothRemovalStart(byFace, tri, upper, lower, edge, side, z);
+        zChord = zCorner + (z - zCorner) / (heights![r]! + 1);
+      }
+      if (zCorner < zChord) {
+        out.addTilted(tri[0]!, tri[1]!, tri[2]!, tri[0] === v ? zCorner : zChord, tri[1] === v ? zCorner : zChord, tri[2] === v ? zCorner : zChord, upper, lower, `s${out.count}`);
+        stats.tiltedRemovals++;
+      } else {
+        out.add(tri[0]!, tri[1]!, tri[2]!, z, upper, lower);
+      }
+      lieIn(upper, out.count - 1);
+      stats.simplify++;
+    });
     // Replaced faces: their whole area, as it is at the end of the step, drawn again.
     for (const [f, g] of reemits) {
       const first = out.count;
@@ -542,5 +565,5 @@ export function buildSurfaces(t: Tgap, opts: SurfaceOptions = {}): { surfaces: S
     const u = out.upper[i]!;
     out.zEnd[i] = u > 0 ? Math.min(zTop, faceEndZ(faces[u]!, steps)) : zTop;
   }
-  return { surfaces: out, stats, transitions };
+  return { surfaces: out, stats, transitions, tgap: t };
 }
