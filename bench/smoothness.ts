@@ -170,7 +170,7 @@ try {
       rows.push(row('smooth', await zoom(smoothCube), classic));
       // The smooth build's merge transitions, from the same tGAP as the cube.
       const built = buildSurfaces(tgap, { smooth: true });
-      transitionRows.push(lengthsRow(d, 'smooth', smoothTransitions(built.tgap.events, built.transitions), scaleInfoOf(tgap)));
+      transitionRows.push(lengthsRow(d, 'smooth', smoothTransitions(built.tgap.events, built.transitions, built.splits), scaleInfoOf(tgap)));
       horizontalRows.push(horizontalRow(d, 'smooth', built.tgap, built));
       rmSync(smoothCube.dir, { recursive: true, force: true });
     }

@@ -58,7 +58,7 @@ test('a smooth cube\'s tilted merge lasts from its start to the merge; flat merg
     { step: 2, loser: 5, into: 1, zStart: 0.25, zMerge: 1 + 1 / 9, tilted: true, first: 0, end: 2 },
     { step: 4, loser: 7, into: 1, zStart: 3 + 1 / 9, zMerge: 3 + 1 / 9, tilted: false, first: 2, end: 4 },
   ];
-  const ts = smoothTransitions(events, merges);
+  const ts = smoothTransitions(events, merges, [{ step: 3, loser: 6, zStart: 2 + 1 / 9, zSplit: 2 + 1 / 9 }]);
   assert.deepEqual(ts[0], { zStart: 0.25, zEnd: 1 + 1 / 9 });
   // z(k, phase) = k - 1 + (phase + 1) / 9: phases 0 and 6 of steps 3 and 4.
   const classic = [[2 + 1 / 9, 2 + 7 / 9], [3 + 1 / 9, 3 + 7 / 9]];
@@ -68,5 +68,11 @@ test('a smooth cube\'s tilted merge lasts from its start to the merge; flat merg
   const [smoothRatio] = scaleRatios([ts[0]], info);
   const [classicRatio] = scaleRatios(classicTransitions([events[0]!]), info);
   assert.ok(smoothRatio! > classicRatio!, `${smoothRatio} vs ${classicRatio}`);
-  assert.throws(() => smoothTransitions(events, [{ ...merges[0]!, step: 3 }]), /merge of face 5 is at step 2, its transition at step 3/);
+  assert.throws(() => smoothTransitions(events, [{ ...merges[0]!, step: 3 }], []), /merge of face 5 is at step 2, its transition at step 3/);
+});
+
+test('a smooth split lasts from where its first part starts to the split', () => {
+  const events = [{ kind: EventKind.Split, step: 3, loser: 6 }];
+  assert.deepEqual(smoothTransitions(events, [], [{ step: 3, loser: 6, zStart: 1.5, zSplit: 2 + 1 / 9 }]), [{ zStart: 1.5, zEnd: 2 + 1 / 9 }]);
+  assert.throws(() => smoothTransitions(events, [], [{ step: 4, loser: 6, zStart: 1.5, zSplit: 3 + 1 / 9 }]), /split of face 6 is at step 3, its transition at step 4/);
 });

@@ -3,10 +3,11 @@
 // and ends, summarised as the median and 10th percentile, and as the number of frames of a
 // default zoom step that show the median event part-way. Any cube can report these from the z
 // range of its events: the classic cube's ranges come from classicTransitions, the smooth
-// cube's from smoothTransitions with the merge transitions its build (buildSurfaces) returns.
+// cube's from smoothTransitions with the merge and split transitions its build (buildSurfaces)
+// returns.
 import { scaleAtZ, type ScaleInfo } from '../format/scale.js';
 import { EventKind, LAST_REMOVAL_PHASE, phaseZ, type TgapEvent } from '../format/tgap-model.js';
-import type { MergeTransition } from '../preprocess/ssc/surfaces.js';
+import type { MergeTransition, SplitTransition } from '../preprocess/ssc/surfaces.js';
 import { median, percentile } from './stats.js';
 
 /** A default zoom step: x2 in scale over 10 frames (issue 11). */
@@ -31,16 +32,18 @@ export function classicTransitions(events: readonly Pick<TgapEvent, 'kind' | 'st
 }
 
 /**
- * The smooth cube's events: a tilted merge lasts its transition, from zStart to the merge; a
- * merge drawn flat, and a split (still horizontal), last as in the classic cube.
+ * The smooth cube's events: a tilted merge lasts its transition, from zStart to the merge, and
+ * a split from where its first part starts to the split; a merge or split drawn flat lasts as
+ * in the classic cube.
  */
-export function smoothTransitions(events: readonly Pick<TgapEvent, 'kind' | 'step' | 'loser'>[], merges: readonly MergeTransition[]): Transition[] {
-  const tilted = new Map<number, MergeTransition>();
-  for (const m of merges) if (m.tilted) tilted.set(m.loser, m);
+export function smoothTransitions(events: readonly Pick<TgapEvent, 'kind' | 'step' | 'loser'>[], merges: readonly MergeTransition[], splits: readonly SplitTransition[]): Transition[] {
+  const tilted = new Map<number, { step: number; zStart: number; zEnd: number }>();
+  for (const m of merges) if (m.tilted) tilted.set(m.loser, { step: m.step, zStart: m.zStart, zEnd: m.zMerge });
+  for (const p of splits) if (p.zStart < p.zSplit) tilted.set(p.loser, { step: p.step, zStart: p.zStart, zEnd: p.zSplit });
   return events.flatMap((e) => {
-    const m = e.kind === EventKind.Merge ? tilted.get(e.loser) : undefined;
-    if (m && m.step !== e.step) throw new Error(`the merge of face ${e.loser} is at step ${e.step}, its transition at step ${m.step}`);
-    return m ? [{ zStart: m.zStart, zEnd: m.zMerge }] : classicTransitions([e]);
+    const m = e.kind === EventKind.Merge || e.kind === EventKind.Split ? tilted.get(e.loser) : undefined;
+    if (m && m.step !== e.step) throw new Error(`the ${e.kind === EventKind.Merge ? 'merge' : 'split'} of face ${e.loser} is at step ${e.step}, its transition at step ${m.step}`);
+    return m ? [{ zStart: m.zStart, zEnd: m.zEnd }] : classicTransitions([e]);
   });
 }
 

@@ -17,7 +17,8 @@ import { generalizedDataset } from '../../testing/generalized-dataset.js';
 import { fixtureStyle, fixtureTgap, rect, type XY } from '../../testing/planar-fixtures.js';
 import { tempDir } from '../../testing/temp-dir.js';
 import { CHANGE_KINDS, horizontalChanges, type HorizontalChanges } from './horizontal-changes.js';
-import { buildSurfaces } from './surfaces.js';
+import { EventKind, phaseZ } from '../../format/tgap-model.js';
+import { buildSurfaces, SURFACE_GAP } from './surfaces.js';
 
 const BUMP: XY[] = [[7, 4], [6.9, 4.1], [6.8, 4]];
 const t = fixtureTgap([
@@ -53,6 +54,16 @@ test('the smooth cube tilts the merges, the split and the simplification: nothin
   assert.ok(c.byKind.split > 0 && c.byKind.simplify > 0 && c.byKind.merge > 0, `classic: ${JSON.stringify(c.byKind)}`);
   assert.deepEqual(s.byKind, { merge: 0, mergeFlat: 0, split: 0, simplify: 0, reemit: 0 });
   assert.equal(s.total, 0);
+  // The road's split is reported as a transition (bench:smoothness counts its length): from
+  // below the split's z, where W and B start to grow into R, to the split; none in the classic cube.
+  const road = t.events.find((e) => e.kind === EventKind.Split)!;
+  assert.deepEqual(smooth.splits.map((p) => [p.step, p.loser, p.zSplit]), [[road.step, road.loser, phaseZ(road.step, 0)]]);
+  // At step 1 the room is from a gap above the floor to the split: it starts in its first half.
+  const { zStart, zSplit } = smooth.splits[0]!;
+  assert.ok(zStart < (SURFACE_GAP + zSplit) / 2, `${zStart} of ${SURFACE_GAP}..${zSplit}`);
+  const parts = [...Array(smooth.surfaces.count).keys()].filter((i) => smooth.surfaces.lower[i] === road.loser && smooth.surfaces.upper[i] !== road.loser);
+  near(Math.min(...parts.map((i) => smooth.surfaces.zMin[i]!)) - SURFACE_GAP / 2, smooth.splits[0]!.zStart, 'the split starts half a gap below its lowest vertex');
+  assert.deepEqual(classic.splits, []);
 });
 
 test('a flat triangle inside a tilted merge counts as mergeFlat, with its area', () => {

@@ -211,6 +211,17 @@ export interface MergeTransition {
 }
 
 /**
+ * A smooth split (a smooth cube's only): from zStart, where the first of its parts starts to go
+ * to a neighbour, to zSplit, the split's z, where the face has closed.
+ */
+export interface SplitTransition {
+  step: number;
+  loser: number;
+  zStart: number;
+  zSplit: number;
+}
+
+/**
  * The earliest z of a transition ending at z: one zoom level before, and within the first two
  * levels half way (in scale) back to the base scale, so that their transitions do not all start
  * at the floor (where the map starts, every one of them would be moving at once). It grows with
@@ -226,7 +237,7 @@ export function reachBackZ(info: ScaleInfo, z: number): number {
  * `smooth`, `input` without the re-emits of faces that end soon after (late-reemits.ts), whose
  * faces are the ones to write beside the surfaces.
  */
-export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surfaces: Surfaces; stats: SurfaceStats; transitions: MergeTransition[]; tgap: Tgap } {
+export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surfaces: Surfaces; stats: SurfaceStats; transitions: MergeTransition[]; splits: SplitTransition[]; tgap: Tgap } {
   const t = opts.smooth ? skipLateReemits(input, (z) => reachBackZ(scaleInfoOf(input), z)).tgap : input;
   const steps = t.meta.steps;
   const zTop = steps + 1;
@@ -429,6 +440,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     return Math.min(start, z);
   };
   const transitions: MergeTransition[] = [];
+  const splits: SplitTransition[] = [];
 
   for (const e of born[0]!) if (edges[e]!.stepHigh > 0) attach(e, 0);
   for (let f = 1; f < faces.length; f++) {
@@ -471,12 +483,16 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
             if (!l) byInto.set(tf[i]!, (l = []));
             l.push(tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!);
           }
+          let zStart = z0;
           for (const [into, area] of [...byInto].sort((p, q) => p[0] - q[0])) {
             const first = out.count;
             const zFoot = Math.max(SURFACE_GAP, reachBack(z0), faceStartZ(faces[into]!) + SURFACE_GAP);
-            if (emitTilted(byFace, area, e.loser, into, k - 1, sharedEdges(e.loser, into, k - 1), zFoot, z0, `p${ev}:${into}`, 'split').zStart < z0) stats.tiltedSplits++;
+            const part = emitTilted(byFace, area, e.loser, into, k - 1, sharedEdges(e.loser, into, k - 1), zFoot, z0, `p${ev}:${into}`, 'split');
+            if (part.zStart < z0) stats.tiltedSplits++;
+            zStart = Math.min(zStart, part.zStart);
             lieIn(into, first);
           }
+          splits.push({ step: k, loser: e.loser, zStart, zSplit: z0 });
         } else {
           for (let i = 0; i < tf.length; i++) out.add(tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!, z0, tf[i]!, e.loser);
           stats.split += tf.length;
@@ -565,5 +581,5 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     const u = out.upper[i]!;
     out.zEnd[i] = u > 0 ? Math.min(zTop, faceEndZ(faces[u]!, steps)) : zTop;
   }
-  return { surfaces: out, stats, transitions, tgap: t };
+  return { surfaces: out, stats, transitions, splits, tgap: t };
 }
