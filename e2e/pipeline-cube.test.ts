@@ -316,6 +316,7 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
     const picks = tilted;
     let partWay = 0;
     const detached: string[] = [];
+    let needles = 0;
     for (const m of picks) {
       // This merge's triangles: upper the winner, lower the loser.
       // This merge's ramp (the loser's area at the merge), as the build names it; its upper face
@@ -330,15 +331,22 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
       }
       // The loser's box with a margin, so that the winner around it shows.
       const pad = Math.max(bx1 - bx0, by1 - by0) / 8;
-      const view = fitView(tgap.meta.extent, 64, 64, [bx0 - pad, by0 - pad, bx1 + pad, by1 + pad]);
+      const viewOf = (size: number): View => fitView(tgap.meta.extent, size, size, [bx0 - pad, by0 - pad, bx1 + pad, by1 + pad]);
       // The loser's area at the merge, from its triangles (not from a slice): pixel centres inside one.
+      const footprintOf = (view: View): number[] => {
+        const [vx0, , vx1, vy1] = view.bbox;
+        const px = (vx1 - vx0) / view.width;
+        const out: number[] = [];
+        for (let p = 0; p < view.width * view.height; p++) {
+          const x = vx0 + ((p % view.width) + 0.5) * px, y = vy1 - (Math.floor(p / view.width) + 0.5) * px;
+          if (mine.some((i) => inside(i, x, y))) out.push(p);
+        }
+        return out;
+      };
+      const view = viewOf(64);
       const [vx0, , vx1, vy1] = view.bbox;
       const px = (vx1 - vx0) / view.width;
-      let footprint: number[] = [];
-      for (let p = 0; p < view.width * view.height; p++) {
-        const x = vx0 + ((p % view.width) + 0.5) * px, y = vy1 - (Math.floor(p / view.width) + 0.5) * px;
-        if (mine.some((i) => inside(i, x, y))) footprint.push(p);
-      }
+      let footprint = footprintOf(view);
       // The first and last at the start and the merge as the chunks store them (float32).
       const stored = (z: number): number => Math.max(z, Math.fround(z));
       const zs = Array.from({ length: 8 }, (_, i) => (i === 0 ? Math.min(m.zStart, Math.fround(m.zStart)) : i < 7 ? m.zStart + ((m.zMerge - m.zStart) * i) / 7 : stored(m.zMerge)));
@@ -382,21 +390,33 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
       });
       for (const p of footprint) assert.notEqual(at[7]![p], m.loser, `merge of ${m.loser}: pixel ${p} still shows it at the merge`);
       assert.ok(shares[7]! <= 0.02, `merge of ${m.loser} into ${m.into}: only ${1 - shares[7]!} taken by the merge (shares ${shares.join(' ')})`);
-      const mask = new Uint8Array(view.width * view.height);
-      for (const p of footprint) mask[p] = 1;
-      const stray = at.map((ids) => detachedGain(ids, mask, after, 64, 64));
-      if (stray.some((n) => n > 0)) detached.push(`${m.loser}: ${stray.join(' ')}`);
+      const strayAt = (v: View, ids: readonly Uint32Array[]): number[] => {
+        const mask = new Uint8Array(v.width * v.height);
+        for (const p of footprintOf(v)) mask[p] = 1;
+        return ids.map((frame) => detachedGain(frame, mask, after, v.width, v.height));
+      };
+      const stray = strayAt(view, at);
+      if (stray.some((n) => n > 0)) {
+        // Looked at 4x finer: a gain joined to the winner by a needle thinner than a pixel is
+        // attached there; one still apart is reported.
+        const fine = viewOf(256);
+        const again = strayAt(fine, zs.map((z) => smooth(fine, z).ids));
+        if (again.some((n) => n > 0)) detached.push(`${m.loser}: ${stray.join(' ')} (at 4x: ${again.join(' ')})`);
+        else needles++;
+      }
       if (shares.slice(1, 7).some((x) => x > 0 && x < 1)) partWay++;
     }
     // Measured: all 337 (chords split, split-chords.ts); before, a loser whose area lay mostly
     // in triangles with every corner on the shared boundary went at the ramp's foot.
     t.diagnostic(`${partWay} of ${picks.length} merges show part-way at 6 z inside the transition`);
     assert.ok(partWay >= 0.8 * picks.length, `only ${partWay} of ${picks.length} merges show part-way`);
-    t.diagnostic(`${detached.length} merges with gained pixels apart from the winner (loser: pixels at the 8 z): ${detached.join('; ')}`);
-    // Measured: 11 of 337, mostly a few pixels of 4096: the gain reaches the winner through a
-    // needle thinner than a pixel (a sliver along a boundary with a third face, or beside a
-    // chord's midpoint), or outside this 64 px view of the loser's box. Geometrically every part
-    // is attached: merge-connectivity.test.ts checks that exactly on every merge of this dataset.
-    assert.ok(detached.length <= 0.04 * picks.length, `${detached.length} merges with gained pixels apart from the winner: ${detached.join('; ')}`);
+    t.diagnostic(`${needles} merges with gained pixels joined to the winner only below a pixel; ${detached.length} with gained pixels apart from it at 4x too (loser: pixels at the 8 z): ${detached.join('; ')}`);
+    // Measured: 14 of 337 at 64 px, mostly a few pixels of 4096, of which 12 are attached at
+    // 256 px: the gain reaches the winner through a needle thinner than a pixel (a sliver along
+    // a boundary with a third face, or beside a chord's midpoint). The 2 left are a few dozen
+    // of 65,536 pixels at some of the 8 z (merge 402 into 249 beside a third face, 401, that
+    // loses area to 249 meanwhile; not explained further). Geometrically every part is attached
+    // to the shared boundary: merge-connectivity.test.ts checks that exactly on every merge here.
+    assert.ok(detached.length <= 0.01 * picks.length, `${detached.length} merges with gained pixels apart from the winner: ${detached.join('; ')}`);
   });
 });

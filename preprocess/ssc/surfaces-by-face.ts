@@ -90,24 +90,34 @@ export class SurfacesByFace {
    */
   lowestZ(face: number, tris: ArrayLike<number>, zFrom: number, gap: number, zForget: number): Map<number, number> {
     const lowest = new Map<number, number>();
+    for (const [i, t] of this.overlapping(face, tris, zFrom, gap, zForget)) {
+      const top = this.maxZ(t) + gap;
+      for (let k = 0; k < 3; k++) {
+        const w = tris[i + k]!;
+        lowest.set(w, Math.max(lowest.get(w) ?? -Infinity, top));
+      }
+    }
+    return lowest;
+  }
+
+  /**
+   * The pairs [i, t]: triangle i (offset into `tris`) overlaps surface t of the face's area,
+   * which reaches above `zFrom - gap` (forgetting those below `zForget`, as `lowestZ` does).
+   */
+  overlapping(face: number, tris: ArrayLike<number>, zFrom: number, gap: number, zForget: number): [number, number][] {
+    const pairs: [number, number][] = [];
     this.forgotten = Math.max(this.forgotten, zForget - gap);
     const tree = this.trees.get(face);
-    if (!tree) return lowest;
+    if (!tree) return pairs;
     const { v } = this.out;
     const a = new Float64Array(6), b = new Float64Array(6);
     for (let i = 0; i + 2 < tris.length; i += 3) {
       this.coords(tris, i, a);
       const box = { minX: Math.min(a[0]!, a[2]!, a[4]!), minY: Math.min(a[1]!, a[3]!, a[5]!), maxX: Math.max(a[0]!, a[2]!, a[4]!), maxY: Math.max(a[1]!, a[3]!, a[5]!) };
-      let top = -Infinity;
       for (const { t, z } of tree.search(box)) {
-        if (z + gap > zFrom && z > top && trianglesOverlap(a, this.coords(v, 3 * t, b))) top = z;
-      }
-      if (top === -Infinity) continue;
-      for (let k = 0; k < 3; k++) {
-        const w = tris[i + k]!;
-        lowest.set(w, Math.max(lowest.get(w) ?? -Infinity, top + gap));
+        if (z + gap > zFrom && trianglesOverlap(a, this.coords(v, 3 * t, b))) pairs.push([i, t]);
       }
     }
-    return lowest;
+    return pairs;
   }
 }

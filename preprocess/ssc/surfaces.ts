@@ -9,6 +9,7 @@
 //   receiving face as a merge of that part into it;
 // - simplification: each removed vertex's triangle, between the faces on either side; with
 //   `smooth`, tilted from the removed corner up to the removal.
+import { planeDeficit } from '../geom/plane-deficit.js';
 import { orient } from '../geom/predicates.js';
 import { scaleAtZ, zAtScale, type ScaleInfo } from '../../format/scale.js';
 import { EventKind, faceEndZ, faceStartZ, LAST_REMOVAL_PHASE, phaseZ, REEMIT_PHASE, replacedFaces, resolveFace, resolveFaceAt, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
@@ -160,6 +161,9 @@ export const MAX_TRANSITION_RATIO = 2;
  * still differs in float32 up to about 2^17 steps, so the two never tie in depth.
  */
 export const SURFACE_GAP = 1 / 32;
+
+/** Rounds of holding up a ramp where it would dip under an older surface, before the corner rule. */
+const EXACT_ROUNDS = 6;
 
 /** Rounds of keeping a merge's ramp off the winner's re-emit levels before giving up on them. */
 const LEVEL_ROUNDS = 8;
@@ -337,6 +341,48 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     return ramp;
   };
   /**
+   * The waits of the corner rule: every corner of a triangle that overlaps an older surface
+   * `SURFACE_GAP` above that surface's highest point. Always enough, often more than needed: a
+   * long triangle's far corner waits for a small surface at its other end.
+   */
+  const cornerWaits = (own: number[], pairs: readonly [number, number][]): Map<number, number> => {
+    const waits = new Map<number, number>();
+    for (const [i, t] of pairs) {
+      const top = Math.max(out.z[3 * t]!, out.z[3 * t + 1]!, out.z[3 * t + 2]!) + SURFACE_GAP;
+      for (let k = 0; k < 3; k++) waits.set(own[i + k]!, Math.max(waits.get(own[i + k]!) ?? -Infinity, top));
+    }
+    return waits;
+  };
+  /**
+   * The ramp with waits only where needed: solved without, then each triangle whose plane comes
+   * within `SURFACE_GAP` of an older surface where they overlap (planeDeficit, exact) has its
+   * corners held up by the shortfall, and the front is run again. null when that does not
+   * settle within EXACT_ROUNDS (or the ramp cannot tilt).
+   */
+  const exactRamp = (own: number[], pairs: readonly [number, number][], zMerge: number, solve: (waits: ReadonlyMap<number, number>) => Map<number, number> | null): Map<number, number> | null => {
+    const waits = new Map<number, number>();
+    const a = new Float64Array(6), b = new Float64Array(6), za = new Float64Array(3), zb = new Float64Array(3);
+    for (let round = 0; round < EXACT_ROUNDS; round++) {
+      const z = solve(waits);
+      if (!z || pairs.length === 0) return z;
+      let short = 0;
+      for (const [i, t] of pairs) {
+        for (let k = 0; k < 3; k++) {
+          const w = own[i + k]!, u = out.v[3 * t + k]!;
+          a[2 * k] = out.xs[w]!; a[2 * k + 1] = out.ys[w]!; za[k] = z.get(w) ?? zMerge;
+          b[2 * k] = out.xs[u]!; b[2 * k + 1] = out.ys[u]!; zb[k] = out.z[3 * t + k]!;
+        }
+        const deficit = planeDeficit(a, za, b, zb, SURFACE_GAP);
+        if (!(deficit > 0)) continue;
+        short++;
+        // A margin on top, so that rounding does not leave it a hair short again.
+        for (let k = 0; k < 3; k++) waits.set(own[i + k]!, Math.max(waits.get(own[i + k]!) ?? -Infinity, za[k]! + deficit + SURFACE_GAP / 8));
+      }
+      if (short === 0) return z;
+    }
+    return null;
+  };
+  /**
    * Part of the loser's area (`area`, triangles of state s) given to `into` at zMerge, tilted as
    * a smooth merge is (a front from their shared boundary); or flat at zMerge when it cannot
    * tilt. Returns where its transition starts (zMerge: flat) and where its ramp's triangles end.
@@ -357,11 +403,14 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     const own = splitChords(area, out.xs, out.ys, (v) => shared.has(v), (a, b) => segments.has(edgeKey(a, b)), (x, y) => out.addVertex(x, y));
     stats[kind] += own.length / 3;
     stats.chordSplits += (own.length - area.length) / 3;
-    const lowest = byFace.lowestZ(loser, own, zFoot, SURFACE_GAP, reachBack(zMerge));
+    const pairs = byFace.overlapping(loser, own, zFoot, SURFACE_GAP, reachBack(zMerge));
     let { members, levels } = winner;
-    let z = smoothMergeZ(own, out.xs, out.ys, shared, { zFoot, zMerge, lowest });
-    if (z && levels.length > 0) {
-      z = keepOffLevels(own, shared, zFoot, zMerge, lowest, levels, z);
+    const solve = (waits: ReadonlyMap<number, number>): Map<number, number> | null => {
+      const z = smoothMergeZ(own, out.xs, out.ys, shared, { zFoot, zMerge, lowest: waits });
+      return z && levels.length > 0 ? keepOffLevels(own, shared, zFoot, zMerge, waits, levels, z) : z;
+    };
+    let z = exactRamp(own, pairs, zMerge, solve) ?? solve(cornerWaits(own, pairs));
+    if (levels.length > 0) {
       if (!z) {
         // No way round the winner's re-emits: start after the last, as its id is then one.
         members = [into];
