@@ -50,7 +50,7 @@ for (const d of datasets(process.argv[2], ['bgt_otterlo_400m', 'bgt_otterlo_1800
     rows.push([d.name, c.key, String(splits), String(mine.length), km.toFixed(2), String(lineComponents(mine.flatMap((l) => l.paths))), String(areaComponents(tgap, ci))]);
   });
   rows.push([d.name, 'all', String(stats.linearSplits), String(stats.lines), (stats.length / 1000).toFixed(2), String(lineComponents(lines.flatMap((l) => l.paths))), '']);
-  notes.push(`${d.name}: collapse ${(ms / 1000).toFixed(2)} s; ports ${stats.ports}, taken up by later lines ${stats.anchorsReached}, outside their face by then ${stats.anchorsOutside}, never taken up ${stats.anchorsLeft}; empty centrelines ${stats.empty}`);
+  notes.push(`${d.name}: collapse ${(ms / 1000).toFixed(2)} s; ports ${stats.ports}, taken up by later lines ${stats.anchorsReached} (by a bridge ${stats.anchorsBridged}), outside their face by then ${stats.anchorsOutside}, never taken up ${stats.anchorsLeft}; empty centrelines ${stats.empty}`);
   process.stderr.write('done\n');
 }
 console.log(`bench:lines, collapseLines on the tGAP of ssc generalize, node ${process.version}`);

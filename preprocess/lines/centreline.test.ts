@@ -164,11 +164,19 @@ test('a degenerate polygon is refused with the face named', () => {
   assert.throws(() => centreline({ xs: [0, 20, 20, 0], ys: [0, 10, 0, 4], segs: [0, 1, 1, 2, 2, 3, 3, 0] }, [], 'face 11'), /face 11: /);
 });
 
-test('a port outside the area is reported unreached, the line made without it', () => {
-  const c = centreline(ringsBoundary([[[0, 0], [100, 0], [100, W], [0, W]]]), [{ x: 50, y: 20 }, { x: 50, y: 1 }], 'strip');
-  assert.deepEqual(c.reached, [false, true]);
+test('a port just outside the area is reached by a bridge, one far outside not at all', () => {
+  // Mean width 600 / 106 = 5.66: a bridge reaches a quarter of it, 1.41.
+  const strip = ringsBoundary([[[0, 0], [100, 0], [100, W], [0, W]]]);
+  const c = centreline(strip, [{ x: 50, y: 20 }, { x: 50, y: 1 }, { x: 70, y: W + 1 }], 'strip');
+  assert.deepEqual(c.reached, [false, true, true]);
+  assert.deepEqual(c.bridged, [false, false, true]);
   assert.ok(hasVertex(c, { x: 50, y: 1 }), 'the port inside is on the line');
+  assert.ok(hasVertex(c, { x: 70, y: W + 1 }), 'the bridged port is on the line');
   assert.ok(!hasVertex(c, { x: 50, y: 20 }));
+  // Only the bridged port lies outside; the bridge leaves the strip near its foot (70, 6).
+  for (const [x, y] of vertices(c)) if (!(x === 70 && y === W + 1)) assert.ok(y >= 0 && y <= W, `(${x}, ${y}) outside`);
+  const toBridge = samples(c).filter(([, y]) => y > W);
+  for (const [x] of toBridge) assert.ok(Math.abs(x - 70) < 1, `leaves the strip at x = ${x}, not by its foot`);
 });
 
 test('the same input gives the same line', () => {

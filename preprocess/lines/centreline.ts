@@ -38,8 +38,10 @@ export interface Point {
 export interface Centreline {
   /** Polylines as flat x, y pairs; a closed one repeats its first point last. */
   paths: Float64Array[];
-  /** Per port: whether the line reaches it (false: it lies outside the area). */
+  /** Per port: whether the line reaches it (false: it lies outside the area, farther than a bridge reaches). */
   reached: boolean[];
+  /** Per port: reached by a bridge from the nearest boundary point (it lies just outside the area). */
+  bridged: boolean[];
   /** The area's mean width: twice its area over its perimeter. */
   width: number;
   length: number;
@@ -51,6 +53,11 @@ const SPACING = 0.5;
 const ON_BOUNDARY = 1e-6;
 /** How far along the line from a port its approach is straightened, as a share of the mean width. */
 const REACH = 2;
+/**
+ * A port outside the area this close to it (share of the mean width) is reached by a bridge:
+ * an earlier line's end that the area's simplified boundary has since passed (seen: up to 0.1 m).
+ */
+const BRIDGE = 0.25;
 /** Simplification tolerance, as a share of the mean width. */
 const STRAIGHT = 1e-3;
 
@@ -76,8 +83,16 @@ export function centreline(b: Boundary, ports: readonly Point[], name: string): 
   const pts = new Points(b);
   const g = new AxisGraph();
   const portNode = portNodes(g, ports);
-  const placed = placePorts(b, ports, width * ON_BOUNDARY);
-  const { segs, gates } = densify(b, pts, placed, portNode, width * SPACING);
+  const placed = placePorts(b, ports, width * ON_BOUNDARY, width * BRIDGE);
+  // A bridged port's gate is its foot on the boundary, joined on to the port.
+  const gateNode = placed.map((pl, i) => {
+    if (!pl?.bridge) return portNode[i]!;
+    const s = b.segs[pl.seg]!, e = b.segs[pl.seg + 1]!;
+    const foot = g.add(b.xs[s]! + pl.t * (b.xs[e]! - b.xs[s]!), b.ys[s]! + pl.t * (b.ys[e]! - b.ys[s]!));
+    g.link(foot, portNode[i]!);
+    return foot;
+  });
+  const { segs, gates } = densify(b, pts, placed, gateNode, width * SPACING);
   const cdt = triangulateRegion(pts.local(), segs);
   if (!cdt) throw new Error(`${name}: cannot be triangulated (its boundary crosses itself or does not close)`);
   const tri = cdt.triangles;
@@ -90,6 +105,7 @@ export function centreline(b: Boundary, ports: readonly Point[], name: string): 
   });
   linkPieces(g, tris);
   const reached = portNode.map((n) => g.degree(n) > 0);
+  const bridged = placed.map((pl) => pl?.bridge === true);
 
   // The width at a point: twice its distance to the boundary, gates (where the area goes on) left out.
   const gateKeys = new Set(gates.keys());
@@ -119,7 +135,7 @@ export function centreline(b: Boundary, ports: readonly Point[], name: string): 
   const paths = tracePaths(g).map((p) => simplifyPath(g, p, width * STRAIGHT)).filter((p) => p.length >= 4);
   let length = 0;
   for (const p of paths) for (let i = 2; i < p.length; i += 2) length += Math.hypot(p[i]! - p[i - 2]!, p[i + 1]! - p[i - 1]!);
-  return { paths, reached, width, length };
+  return { paths, reached, bridged, width, length };
 }
 /** Refuses what has no inside: too few segments, bad numbers, pieces of no length, no area. */
 function checkBoundary(b: Boundary, name: string): { area: number; perimeter: number } {
@@ -188,14 +204,21 @@ function portNodes(g: AxisGraph, ports: readonly Point[]): number[] {
   });
 }
 
-/** Where a port lies on the boundary: segment (index of its first vertex in `segs`) and position. */
+/**
+ * Where a port lies on the boundary: segment (index of its first vertex in `segs`) and position;
+ * for a bridge, where its foot does.
+ */
 interface OnBoundary {
   seg: number;
   t: number;
+  bridge: boolean;
 }
 
-/** Per port, the boundary segment it lies on (null: it lies off the boundary). */
-function placePorts(b: Boundary, ports: readonly Point[], tol: number): (OnBoundary | null)[] {
+/**
+ * Per port, the boundary segment it lies on (null: it lies off the boundary, inside or too far
+ * outside). A port outside within `bridge` of the boundary is reached from its foot.
+ */
+function placePorts(b: Boundary, ports: readonly Point[], tol: number, bridge: number): (OnBoundary | null)[] {
   return ports.map((p) => {
     let best = -1, bestD = Infinity;
     for (let i = 0; i < b.segs.length; i += 2) {
@@ -206,15 +229,28 @@ function placePorts(b: Boundary, ports: readonly Point[], tol: number): (OnBound
         best = i;
       }
     }
-    if (bestD > tol) return null;
     const s = b.segs[best]!, e = b.segs[best + 1]!;
+    if (bestD > tol) {
+      if (bestD > bridge || insideBoundary(b, p)) return null;
+      return { seg: best, t: projectOnSegment(p.x, p.y, b.xs[s]!, b.ys[s]!, b.xs[e]!, b.ys[e]!), bridge: true };
+    }
     // On a vertex: at the start of a segment leaving it.
     for (const v of [s, e]) {
       if (Math.hypot(p.x - b.xs[v]!, p.y - b.ys[v]!) > tol) continue;
-      for (let i = 0; i < b.segs.length; i += 2) if (b.segs[i] === v) return { seg: i, t: 0 };
+      for (let i = 0; i < b.segs.length; i += 2) if (b.segs[i] === v) return { seg: i, t: 0, bridge: false };
     }
-    return { seg: best, t: projectOnSegment(p.x, p.y, b.xs[s]!, b.ys[s]!, b.xs[e]!, b.ys[e]!) };
+    return { seg: best, t: projectOnSegment(p.x, p.y, b.xs[s]!, b.ys[s]!, b.xs[e]!, b.ys[e]!), bridge: false };
   });
+}
+
+/** Even-odd: whether p lies inside the area (p is not on the boundary). */
+function insideBoundary(b: Boundary, p: Point): boolean {
+  let inside = false;
+  for (let i = 0; i < b.segs.length; i += 2) {
+    const ax = b.xs[b.segs[i]!]!, ay = b.ys[b.segs[i]!]!, bx = b.xs[b.segs[i + 1]!]!, by = b.ys[b.segs[i + 1]!]!;
+    if (ay > p.y !== by > p.y && p.x < ax + ((p.y - ay) * (bx - ax)) / (by - ay)) inside = !inside;
+  }
+  return inside;
 }
 
 /**
@@ -224,14 +260,14 @@ function placePorts(b: Boundary, ports: readonly Point[], tol: number): (OnBound
  * a * points + b, the port node of each gate.
  */
 function densify(
-  b: Boundary, pts: Points, placed: (OnBoundary | null)[], portNode: number[], spacing: number,
+  b: Boundary, pts: Points, placed: (OnBoundary | null)[], gateNode: number[], spacing: number,
 ): { segs: Int32Array; gates: Map<number, number> } {
   const bySeg = new Map<number, { t: number; node: number }[]>();
   placed.forEach((on, i) => {
     if (!on) return;
     let list = bySeg.get(on.seg);
     if (!list) bySeg.set(on.seg, (list = []));
-    if (!list.some((c) => c.node === portNode[i])) list.push({ t: on.t, node: portNode[i]! });
+    if (!list.some((c) => c.node === gateNode[i])) list.push({ t: on.t, node: gateNode[i]! });
   });
   const out: number[] = [];
   const gateList: [number, number, number][] = [];

@@ -33,6 +33,11 @@ export interface LineJoin {
   y: number;
   /** The line met there (index into `lines`); -1 when the area across never became a line. */
   line: number;
+  /**
+   * The point lies just outside this line's face (its boundary was simplified past an earlier
+   * line's end) and is reached by a bridge from the nearest point of the boundary.
+   */
+  bridge: boolean;
 }
 
 export interface CollapseOptions {
@@ -51,7 +56,9 @@ export interface CollapseStats {
   ports: number;
   /** Ports taken up by a later line (anchors reached). */
   anchorsReached: number;
-  /** Anchors that had moved outside their face by the time it collapsed. */
+  /** Of those, anchors just outside their face by then, reached by a bridge. */
+  anchorsBridged: number;
+  /** Anchors too far outside their face by the time it collapsed. */
   anchorsOutside: number;
   /** Anchors whose face never collapsed as a line of the network. */
   anchorsLeft: number;
@@ -69,7 +76,7 @@ export function collapseLines(tgap: Tgap, style: Pick<Style, 'classes'>, opts: C
   const linear = style.classes.map((c) => c.linear);
   const history = new FaceHistory(tgap);
   const lines: LineObject[] = [];
-  const stats: CollapseStats = { linearSplits: 0, lines: 0, empty: 0, length: 0, ports: 0, anchorsReached: 0, anchorsOutside: 0, anchorsLeft: 0 };
+  const stats: CollapseStats = { linearSplits: 0, lines: 0, empty: 0, length: 0, ports: 0, anchorsReached: 0, anchorsBridged: 0, anchorsOutside: 0, anchorsLeft: 0 };
   /** Anchors by the face they were handed to. */
   const pending = new Map<number, Anchor[]>();
 
@@ -102,7 +109,7 @@ export function collapseLines(tgap: Tgap, style: Pick<Style, 'classes'>, opts: C
     const joins: LineJoin[] = [];
     ports.forEach((p, i) => {
       if (!line.reached[i]) return;
-      joins.push({ x: p.x, y: p.y, line: -1 });
+      joins.push({ x: p.x, y: p.y, line: -1, bridge: false });
       let list = pending.get(p.face);
       if (!list) pending.set(p.face, (list = []));
       list.push({ x: p.x, y: p.y, line: index, join: joins.length - 1, network: net });
@@ -113,9 +120,11 @@ export function collapseLines(tgap: Tgap, style: Pick<Style, 'classes'>, opts: C
         stats.anchorsOutside++;
         return;
       }
-      joins.push({ x: a.x, y: a.y, line: a.line });
+      const bridge = line.bridged[ports.length + i]!;
+      joins.push({ x: a.x, y: a.y, line: a.line, bridge });
       lines[a.line]!.joins[a.join]!.line = index;
       stats.anchorsReached++;
+      if (bridge) stats.anchorsBridged++;
     });
     lines.push({ face: L, feature: face.feature, classIndex: face.classIndex, step: ev.step, paths: line.paths, joins, length: line.length });
     stats.length += line.length;
