@@ -140,6 +140,21 @@ test('a junction square between two arms and a stem joins its three ports throug
   for (const p of samples(arm)) if (p[0] > -50 + W) assert.ok(Math.abs(p[1] - 3) <= TOL, `arm: (${p}) off y = 3`);
 });
 
+test('a side road longer than the road is wide keeps its branch; a lay-by shallower than that is pruned', () => {
+  // A strip 100 x 6 with a side road 6 wide running 20 up from x = 47..53, and a lay-by 8 long
+  // and 3 deep at x = 16..24: the branch runs up the side road's axis x = 50; no branch goes
+  // into the lay-by (the line only shifts to the middle of the wider road there).
+  const c = centreline(ringsBoundary([[[0, 0], [100, 0], [100, W], [53, W], [53, 26], [47, 26], [47, W], [24, W], [24, 9], [16, 9], [16, W], [0, W]]]), [], 'road with a side road');
+  const pts = samples(c);
+  assert.ok(pts.some(([x, y]) => Math.abs(x - 50) <= TOL && y >= 26 - W), 'the branch reaches within a width of the side road\'s end');
+  for (const [x, y] of pts) {
+    // Across the lay-by the road is 9 wide and its axis at y = 4.5; a spur would go deeper.
+    if (y > 4.5 + TOL && x > 10 && x < 30) assert.fail(`(${x}, ${y}) heads into the lay-by`);
+    if (y >= 2 * W && y <= 26 - W) assert.ok(Math.abs(x - 50) <= TOL, `(${x}, ${y}) off the side road's axis`);
+  }
+  assert.equal(pathEnds(c).length, 3, 'three ends: both ends of the road and the side road\'s');
+});
+
 test('a ring road (a polygon with a hole) collapses to a closed loop around the hole', () => {
   const c = centreline(ringsBoundary([[[0, 0], [60, 0], [60, 60], [0, 60]], [[W, W], [60 - W, W], [60 - W, 60 - W], [W, 60 - W]]]), [], 'ring');
   assert.equal(c.paths.length, 1);
