@@ -2,7 +2,8 @@
 // item 1) on the two Otterlo cuts. Per linear class: faces that end in a split, line objects
 // and their length, and the connected pieces the lines form when each is taken at its start
 // (the face's geometry at its split), beside the pieces the class's areas form at the base
-// scale (faces sharing an edge), the most the lines could join up into.
+// scale (faces sharing an edge). Faces of a linear class with one neighbour are merged whole,
+// not split, and leave no line: counted beside.
 import { EventKind, resolveFace, type Tgap } from '../format/tgap-model.js';
 import { collapseLines } from '../preprocess/lines/collapse-lines.js';
 import { lineComponents } from '../preprocess/lines/line-components.js';
@@ -33,7 +34,7 @@ function areaComponents(tgap: Tgap, c: number): number {
   return n;
 }
 
-const rows: string[][] = [['dataset', 'class', 'linear splits', 'lines', 'length km', 'line pieces', 'area pieces at base']];
+const rows: string[][] = [['dataset', 'class', 'linear splits', 'merged whole', 'lines', 'length km', 'line pieces', 'area pieces at base']];
 const notes: string[] = [];
 for (const d of datasets(process.argv[2], ['bgt_otterlo_400m', 'bgt_otterlo_1800m'])) {
   process.stderr.write(`${d.name}... `);
@@ -45,11 +46,12 @@ for (const d of datasets(process.argv[2], ['bgt_otterlo_400m', 'bgt_otterlo_1800
   style.classes.forEach((c, ci) => {
     if (!c.linear) return;
     const mine = lines.filter((l) => l.classIndex === ci);
-    const splits = tgap.events.filter((e) => e.kind === EventKind.Split && tgap.faces[e.loser]!.classIndex === ci).length;
+    const ended = (kind: EventKind): number => tgap.events.filter((e) => e.kind === kind && tgap.faces[e.loser]!.classIndex === ci).length;
+    const splits = ended(EventKind.Split);
     const km = mine.reduce((s, l) => s + l.length, 0) / 1000;
-    rows.push([d.name, c.key, String(splits), String(mine.length), km.toFixed(2), String(lineComponents(mine.flatMap((l) => l.paths))), String(areaComponents(tgap, ci))]);
+    rows.push([d.name, c.key, String(splits), String(ended(EventKind.Merge)), String(mine.length), km.toFixed(2), String(lineComponents(mine.flatMap((l) => l.paths))), String(areaComponents(tgap, ci))]);
   });
-  rows.push([d.name, 'all', String(stats.linearSplits), String(stats.lines), (stats.length / 1000).toFixed(2), String(lineComponents(lines.flatMap((l) => l.paths))), '']);
+  rows.push([d.name, 'all', String(stats.linearSplits), '', String(stats.lines), (stats.length / 1000).toFixed(2), String(lineComponents(lines.flatMap((l) => l.paths))), '']);
   notes.push(`${d.name}: collapse ${(ms / 1000).toFixed(2)} s; ports ${stats.ports}, taken up by later lines ${stats.anchorsReached} (by a bridge ${stats.anchorsBridged}), outside their face by then ${stats.anchorsOutside}, never taken up ${stats.anchorsLeft}; empty centrelines ${stats.empty}`);
   process.stderr.write('done\n');
 }
