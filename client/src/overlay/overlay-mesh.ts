@@ -1,0 +1,103 @@
+// The overlay's geometry as the GPU draws it, made once per setData on the CPU in the cube's
+// projected CRS (float64), stored relative to an origin in the middle of the data so that
+// float32 keeps it to well under a millimetre per kilometre from there. Polygons are
+// triangulated (earcut). Lines, polygon rings and points become quads: one per segment, around
+// the segment and reaching past both ends, whose corners the vertex shader places at
+// `reach` device pixels (half the line width plus a pixel for anti-aliasing) from it. The
+// fragment shader keeps what lies within the half width of the segment: every segment a
+// capsule, so consecutive segments join round without a gap, and a point is a segment of
+// length 0 (a disc). The view (pan, zoom) is applied on the GPU, so nothing here changes with it.
+import earcut from 'earcut';
+import type { Parts, XY } from './geojson-read.js';
+
+/** Floats per quad vertex: the segment's ends a and b (relative to the origin), the corner's direction e, and 0 at a's end, 1 at b's. */
+export const QUAD_FLOATS = 7;
+/** Each quad: 4 vertices, drawn as the triangles 0 1 2 and 2 1 3. */
+export const QUAD_VERTICES = 4;
+
+export interface OverlayMesh {
+  /** Subtracted from every position (float64). */
+  origin: XY;
+  /** Polygon triangles: x, y per vertex (relative to the origin) and 3 indices per triangle. */
+  fill: { positions: Float32Array; indices: Uint32Array };
+  /** Quads of LineStrings' segments. */
+  lines: Float32Array;
+  /** Quads of polygon rings' segments (the fill's edge, and the polygons' outline). */
+  rings: Float32Array;
+  /** Quads of points (segments of length 0). */
+  points: Float32Array;
+}
+
+/** The mesh of the features' parts (in the cube's CRS). */
+export function buildMesh(features: readonly Parts[]): OverlayMesh {
+  const origin = middle(features);
+  const lines: number[] = [], rings: number[] = [], points: number[] = [];
+  const positions: number[] = [], indices: number[] = [];
+  for (const f of features) {
+    for (const p of f.points) pushQuad(points, p, p, origin);
+    for (const l of f.lines) pushPolyline(lines, l, false, origin);
+    for (const poly of f.polygons) {
+      for (const r of poly) pushPolyline(rings, r, true, origin);
+      triangulate(poly, origin, positions, indices);
+    }
+  }
+  return { origin, fill: { positions: new Float32Array(positions), indices: new Uint32Array(indices) }, lines: new Float32Array(lines), rings: new Float32Array(rings), points: new Float32Array(points) };
+}
+
+/** The quads of a polyline's segments (closed: and from the last position back to the first); repeated positions give none. */
+function pushPolyline(out: number[], pts: readonly XY[], closed: boolean, origin: XY): void {
+  const n = pts.length;
+  const before = out.length;
+  for (let i = 0; i < (closed ? n : n - 1); i++) {
+    const a = pts[i]!, b = pts[(i + 1) % n]!;
+    if (a[0] !== b[0] || a[1] !== b[1]) pushQuad(out, a, b, origin);
+  }
+  // A line whose positions are all one place is drawn as a dot, as the line's round caps would give.
+  if (out.length === before && n > 0) pushQuad(out, pts[0]!, pts[0]!, origin);
+}
+
+function pushQuad(out: number[], a: XY, b: XY, origin: XY): void {
+  const dx = b[0] - a[0], dy = b[1] - a[1];
+  const len = Math.hypot(dx, dy);
+  // Along the segment (any direction for a point) and across it.
+  const tx = len > 0 ? dx / len : 1, ty = len > 0 ? dy / len : 0;
+  const nx = -ty, ny = tx;
+  const ax = a[0] - origin[0], ay = a[1] - origin[1], bx = b[0] - origin[0], by = b[1] - origin[1];
+  for (const [along, side] of [[-1, -1], [-1, 1], [1, -1], [1, 1]] as const) {
+    out.push(ax, ay, bx, by, along * tx + side * nx, along * ty + side * ny, along < 0 ? 0 : 1);
+  }
+}
+
+/** Appends a polygon's triangles (rings: outer first, then holes). */
+function triangulate(rings: readonly XY[][], origin: XY, positions: number[], indices: number[]): void {
+  const coords: number[] = [], holes: number[] = [];
+  for (const [i, r] of rings.entries()) {
+    if (i > 0) holes.push(coords.length / 2);
+    for (const p of r) coords.push(p[0] - origin[0], p[1] - origin[1]);
+  }
+  const first = positions.length / 2;
+  for (const t of earcut(coords, holes)) indices.push(first + t);
+  for (const c of coords) positions.push(c);
+}
+
+/** The middle of the box around every position (0, 0 when there is none). */
+function middle(features: readonly Parts[]): XY {
+  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+  const add = (p: XY): void => {
+    x0 = Math.min(x0, p[0]);
+    y0 = Math.min(y0, p[1]);
+    x1 = Math.max(x1, p[0]);
+    y1 = Math.max(y1, p[1]);
+  };
+  for (const f of features) {
+    f.points.forEach(add);
+    for (const l of f.lines) l.forEach(add);
+    for (const poly of f.polygons) for (const r of poly) r.forEach(add);
+  }
+  return x0 <= x1 ? [(x0 + x1) / 2, (y0 + y1) / 2] : [0, 0];
+}
+
+/** Quads in a quad array. */
+export function quadCount(quads: Float32Array): number {
+  return quads.length / (QUAD_FLOATS * QUAD_VERTICES);
+}
