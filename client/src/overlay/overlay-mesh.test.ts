@@ -4,6 +4,7 @@
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import type { Parts, XY } from './geojson-read.js';
+import { distanceToSegment } from './overlay-hit.js';
 import { buildMesh, quadCount, QUAD_FLOATS, QUAD_VERTICES } from './overlay-mesh.js';
 
 const parts = (p: Partial<Parts>): Parts => ({ points: [], lines: [], polygons: [], ...p });
@@ -56,19 +57,12 @@ function sampledDistance(p: XY, line: XY[]): number {
   return d;
 }
 
-/** What the fragment shader keeps of a quad: its points within `w` of its segment. */
-function segDistance(p: XY, a: XY, b: XY): number {
-  const dx = b[0] - a[0], dy = b[1] - a[1];
-  const l2 = dx * dx + dy * dy;
-  const t = l2 > 0 ? Math.max(0, Math.min(1, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2)) : 0;
-  return Math.hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy);
-}
-
 describe('overlay mesh', () => {
   // A zigzag in national grid coordinates: a right angle, a sharp (about 27 degree) turn, and
   // a repeated position that makes no segment.
   const base: XY = [155000, 463000];
-  const line: XY[] = [[0, 0], [10, 0], [10, 10], [10, 10], [0, 5]].map(([x, y]): XY => [base[0] + x, base[1] + y]);
+  const shifted = (pts: XY[]): XY[] => pts.map(([x, y]): XY => [base[0] + x, base[1] + y]);
+  const line = shifted([[0, 0], [10, 0], [10, 10], [10, 10], [0, 5]]);
 
   test('a polyline gives one quad per segment (none for a repeated position), a point one', () => {
     const m = buildMesh([parts({ lines: [line], points: [[1, 2]] })]);
@@ -80,14 +74,16 @@ describe('overlay mesh', () => {
   test('the quads, cut to the half width, cover exactly the band of that half width around the line', () => {
     const w = 2;
     // Reach as the shader: the half width and a pixel for the anti-aliased edge.
-    const quads = placed(buildMesh([parts({ lines: [line] })]).lines, buildMesh([parts({ lines: [line] })]).origin, w + 1);
+    const m = buildMesh([parts({ lines: [line] })]);
+    const quads = placed(m.lines, m.origin, w + 1);
     let inBand = 0, checked = 0;
     for (let x = -4; x <= 14; x += 0.25) {
       for (let y = -4; y <= 14; y += 0.25) {
         const p: XY = [base[0] + x + 0.013, base[1] + y + 0.007];
         const d = sampledDistance(p, line);
         if (Math.abs(d - w) < 0.01) continue; // on the band's edge: too close to call by sampling
-        const drawn = quads.some((q) => inConvex(p, q.corners) && segDistance(p, q.a, q.b) <= w);
+        // What the fragment shader keeps of a quad: its points within the half width of its segment.
+        const drawn = quads.some((q) => inConvex(p, q.corners) && distanceToSegment(p, q.a, q.b) <= w);
         assert.equal(drawn, d <= w, `(${x}, ${y}) at ${d.toFixed(3)} from the line`);
         checked++;
         if (d <= w) inBand++;
@@ -104,7 +100,7 @@ describe('overlay mesh', () => {
       for (let k = 0; k < 64; k++) {
         const ang = (2 * Math.PI * k) / 64;
         const p: XY = [v[0] + 0.999 * w * Math.cos(ang), v[1] + 0.999 * w * Math.sin(ang)];
-        assert.ok(quads.some((q) => inConvex(p, q.corners) && segDistance(p, q.a, q.b) <= w), `covered at angle ${k}/64 around (${v[0] - base[0]}, ${v[1] - base[1]})`);
+        assert.ok(quads.some((q) => inConvex(p, q.corners) && distanceToSegment(p, q.a, q.b) <= w), `covered at angle ${k}/64 around (${v[0] - base[0]}, ${v[1] - base[1]})`);
       }
     }
   });
@@ -116,14 +112,14 @@ describe('overlay mesh', () => {
     for (let k = 0; k < 32; k++) {
       const ang = (2 * Math.PI * k) / 32;
       const p: XY = [100 + 0.999 * r * Math.cos(ang), 200 + 0.999 * r * Math.sin(ang)];
-      assert.ok(inConvex(p, q!.corners) && segDistance(p, q!.a, q!.b) <= r);
+      assert.ok(inConvex(p, q!.corners) && distanceToSegment(p, q!.a, q!.b) <= r);
     }
   });
 
   test("a polygon with a hole: its triangles' area is the outer ring's minus the hole's, and its rings give quads", () => {
     // 10 x 8 with a 3 x 2 hole, off the origin and with open and closed rings.
-    const outer: XY[] = [[0, 0], [10, 0], [10, 8], [0, 8]].map(([x, y]): XY => [base[0] + x, base[1] + y]);
-    const hole: XY[] = [[2, 2], [2, 4], [5, 4], [5, 2]].map(([x, y]): XY => [base[0] + x, base[1] + y]);
+    const outer = shifted([[0, 0], [10, 0], [10, 8], [0, 8]]);
+    const hole = shifted([[2, 2], [2, 4], [5, 4], [5, 2]]);
     const m = buildMesh([parts({ polygons: [[outer, hole]] })]);
     const { positions: pos, indices: idx } = m.fill;
     let area = 0;

@@ -1,7 +1,8 @@
 // The offscreen targets of a frame, sized to the canvas in device pixels:
 // - ids: RG32UI upper/lower face + RG32UI classes/surface z, with a float depth buffer (MRT);
 // - surface: R32F slicing surface z;
-// - colour: the accumulated (supersampled) colour.
+// - colour: the accumulated (supersampled) colour;
+// - overlay: an overlay layer's coverage (overlay-pass.ts), RGBA8.
 // Integer and float textures are sampled with texelFetch and NEAREST filtering (integer
 // textures read as zero with any other filter).
 
@@ -47,6 +48,8 @@ export class Targets {
   colourFb!: WebGLFramebuffer;
   /** The colour target's format (to read it back). */
   colourFloat = false;
+  overlay!: WebGLTexture;
+  overlayFb!: WebGLFramebuffer;
   private live = false;
 
   constructor(
@@ -73,15 +76,17 @@ export class Targets {
     this.colourFloat = this.caps.floatTargets;
     this.colour = texture2d(gl, this.colourFloat ? gl.RGBA16F : gl.RGBA8, width, height);
     this.colourFb = framebuffer(gl, [this.colour], null, 'colour');
+    this.overlay = texture2d(gl, gl.RGBA8, width, height);
+    this.overlayFb = framebuffer(gl, [this.overlay], null, 'overlay');
     this.live = true;
   }
 
   delete(): void {
     if (!this.live) return;
     const gl = this.gl;
-    for (const t of [this.ids, this.aux, this.surface, this.colour]) gl.deleteTexture(t);
+    for (const t of [this.ids, this.aux, this.surface, this.colour, this.overlay]) gl.deleteTexture(t);
     gl.deleteRenderbuffer(this.depth);
-    for (const f of [this.idFb, this.surfaceFb, this.colourFb]) if (f) gl.deleteFramebuffer(f);
+    for (const f of [this.idFb, this.surfaceFb, this.colourFb, this.overlayFb]) if (f) gl.deleteFramebuffer(f);
     this.live = false;
   }
 }
