@@ -10,7 +10,7 @@ import { describe, test } from 'node:test';
 import type { Page } from 'playwright-core';
 import { openMap } from './helpers/browser.js';
 import { LIB_PAGE_HEAD, useLibSite } from './helpers/lib-site.js';
-import { hexColour, pixel, screenshot, type Rgba } from './helpers/map-page.js';
+import { hexColour, loseAndRestoreContext, pixel, screenshot, type Rgba } from './helpers/map-page.js';
 import { distanceToPolyline, insideRings } from '../client/src/overlay/overlay-hit.js';
 import { idle, settle, type VarioWindow } from './helpers/vario-page.js';
 
@@ -19,6 +19,19 @@ const PAGES: Record<string, string> = {
   <script src="lib/vario-map.umd.js"></script>
   <script>
     window.map = new vario.VarioMap({ container: 'map', source: 'cube/index.json' });
+  </script>
+</body>
+</html>
+`,
+  // A layer added at once, before the cube (and its CRS) is known: a square around Otterlo.
+  'early.html': `${LIB_PAGE_HEAD}
+  <script src="lib/vario-map.umd.js"></script>
+  <script>
+    window.map = new vario.VarioMap({ container: 'map', source: 'cube/index.json' });
+    new vario.GeoJsonLayer({
+      data: { type: 'Polygon', coordinates: [[[5.6, 52.0], [5.9, 52.0], [5.9, 52.2], [5.6, 52.2], [5.6, 52.0]]] },
+      paint: { fillColor: '#0000ff', fillOpacity: 1, lineWidth: 0 },
+    }).addTo(window.map);
   </script>
 </body>
 </html>
@@ -51,8 +64,8 @@ const CIRCLE_COLOUR = '#ff8000';
 describe('GeoJsonLayer in the script-tag build (bgt_otterlo_400m)', () => {
   const bed = useLibSite(PAGES);
 
-  async function open(): Promise<Page> {
-    bed.page = await openMap(bed.site.browser, bed.site.server.url, {}, { page: 'geojson.html' });
+  async function open(deviceScaleFactor = 1): Promise<Page> {
+    bed.page = await openMap(bed.site.browser, bed.site.server.url, {}, { page: 'geojson.html', deviceScaleFactor });
     const page = bed.page.page;
     await idle(page);
     await page.evaluate(async () => {
@@ -280,6 +293,33 @@ describe('GeoJsonLayer in the script-tag build (bgt_otterlo_400m)', () => {
     await page.mouse.click(mid[0] - 50, mid[1] + 40);
     assert.deepEqual((await heard()).filter((e) => e.type === 'click'), [], 'a click 40 px away is not on the line');
     await page.waitForFunction(() => (globalThis as unknown as LayerWindow).mapClicks === 2);
+  });
+
+  test('line widths are CSS px: at a device pixel ratio of 2 the line is twice as many device pixels wide', async () => {
+    const page = await open(2);
+    const coords = await lngLats(page, [[100, 150], [540, 330]]);
+    const width = 4;
+    const plain = await screenshot(page);
+    await addLayer(page, { data: { type: 'LineString', coordinates: coords }, paint: { lineColor: LINE_COLOUR, lineWidth: width } });
+    const img = await screenshot(page);
+    assert.equal(img.width, 1280, 'the screenshot is in device pixels');
+    const line = (await projected(page, coords)).map((p): XY => [2 * p[0], 2 * p[1]]);
+    const diff = changed(img, plain);
+    const worst = Math.max(...diff.map((p) => distanceToPolyline(p, line, false)));
+    assert.ok(worst <= width + 1.5, `changed pixels within ${width} device px (half the width, doubled) + 1.5 of the line: worst ${worst.toFixed(2)}`);
+    // Full colour out to 3 device px from the middle: more than half the width in CSS px.
+    const full = diff.filter((p) => distanceToPolyline(p, line, false) > 3 && distanceToPolyline(p, line, false) < 3.4);
+    assert.ok(full.length > 100 && full.every((p) => near(pixel(img, p[0] - 0.5, p[1] - 0.5), hexColour(LINE_COLOUR), 2)), `pixels 3 device px from the middle are the line's colour (${full.length})`);
+  });
+
+  test('a layer added before the cube is known is drawn once it is, and survives a lost context', async () => {
+    bed.page = await openMap(bed.site.browser, bed.site.server.url, {}, { page: 'early.html' });
+    const page = bed.page.page;
+    await idle(page);
+    const img = await screenshot(page);
+    assert.deepEqual(pixel(img, 320, 240), hexColour(FILL_COLOUR), 'the square covers the map');
+    await loseAndRestoreContext(page);
+    assert.deepEqual(changed(await screenshot(page), img), [], 'the same picture after the context came back');
   });
 
   test('invalid GeoJSON is refused with every problem named, and the layer keeps its data', async () => {
