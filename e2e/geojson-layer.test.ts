@@ -44,12 +44,12 @@ interface PageLayer {
   addTo(m: unknown): PageLayer;
   remove(): PageLayer;
   setData(d: unknown): PageLayer;
-  on(type: string, fn: (e: { type: string; features: { properties: Record<string, unknown> }[]; point: XY }) => void): PageLayer;
+  on(type: string, fn: (e: { type: string; features: { properties: Record<string, unknown> }[]; point: XY; lngLat: object | null }) => void): PageLayer;
 }
 
 /** What the tests use in the page: the map, the library's global and what they keep there. */
 interface LayerWindow extends VarioWindow {
-  vario: { GeoJsonLayer: new (o: object) => PageLayer };
+  vario: { GeoJsonLayer: new (o: object) => PageLayer; Popup: new () => { setLngLat(ll: unknown): { setText(t: string): { addTo(m: unknown): unknown } } } };
   layers: PageLayer[];
   heard: { type: string; names: unknown[]; point: XY }[];
   mapClicks: number;
@@ -88,6 +88,10 @@ describe('GeoJsonLayer in the script-tag build (bgt_otterlo_400m)', () => {
   /** CSS px of longitude/latitude, by the map's project(). */
   function projected(page: Page, lls: XY[]): Promise<XY[]> {
     return page.evaluate((pts) => pts.map((ll) => (globalThis as unknown as LayerWindow).map.project(ll)), lls);
+  }
+
+  function popupTexts(page: Page): Promise<string[]> {
+    return page.evaluate(() => Array.from((globalThis as unknown as LayerWindow).document.querySelectorAll('.vario-map-popup-content')).map((el) => (el as unknown as { textContent: string }).textContent));
   }
 
   /** The boxes of the map's controls (CSS px: x0, y0, x1, y1), which are over the canvas. */
@@ -261,6 +265,8 @@ describe('GeoJsonLayer in the script-tag build (bgt_otterlo_400m)', () => {
         paint: { lineColor: '#ff00ff', lineWidth: 6 },
       }).addTo(w.map);
       for (const t of ['click', 'mouseenter', 'mousemove', 'mouseleave']) layer.on(t, (e) => w.heard.push({ type: e.type, names: e.features.map((f) => f.properties.name), point: e.point }));
+      // As docs/embedding.md shows: a popup from the layer's click.
+      layer.on('click', (e) => new w.vario.Popup().setLngLat(e.lngLat!).setText(String(e.features[0]!.properties.name)).addTo(w.map));
       w.layers.push(layer);
       await w.map.whenIdle();
     }, coords);
@@ -290,9 +296,13 @@ describe('GeoJsonLayer in the script-tag build (bgt_otterlo_400m)', () => {
     const clicked = (await heard()).filter((e) => e.type === 'click');
     assert.deepEqual(clicked.map((e) => e.names), [['Route 1']], "a click on the line fires the layer's click with its feature");
     assert.deepEqual(clicked[0]!.point, [mid[0] - 50, mid[1]], 'at the point clicked');
+    // The map's click of the same click comes after the face lookup; the layer's popup stays open through it.
+    await page.waitForFunction(() => (globalThis as unknown as LayerWindow).mapClicks === 1);
+    assert.deepEqual(await popupTexts(page), ['Route 1×'], "the layer's popup is open after the map's click event");
     await page.mouse.click(mid[0] - 50, mid[1] + 40);
     assert.deepEqual((await heard()).filter((e) => e.type === 'click'), [], 'a click 40 px away is not on the line');
     await page.waitForFunction(() => (globalThis as unknown as LayerWindow).mapClicks === 2);
+    assert.deepEqual(await popupTexts(page), [], 'a click elsewhere on the map closes it');
   });
 
   test('line widths are CSS px: at a device pixel ratio of 2 the line is twice as many device pixels wide', async () => {

@@ -3,7 +3,8 @@
 // pointer on them. Hover (mouseenter, mousemove, mouseleave) and click are worked out on the
 // CPU at once, topmost layer first, and the cursor becomes a pointer over a feature of a layer
 // that listens. The map's own click event is not touched: it still fires, after the layers'
-// (it waits for a face lookup).
+// (it waits for a face lookup); a popup opened by a layer's click stays open through it, as
+// one opened in the map's click handler does.
 import { engineOf } from '../engine/engine-of.js';
 import { CrsError, CrsTransform } from '../geo/crs-transform.js';
 import type { LngLat } from '../geo/lng-lat.js';
@@ -37,6 +38,17 @@ export interface StackedLayer {
 }
 
 const stacks = new WeakMap<VarioMap, OverlayStack>();
+
+/** The click whose layer events are being fired, while they are. */
+let clickInHand: MouseEvent | null = null;
+
+/**
+ * The click the layers are answering now (null when none): a popup opened in a layer's click
+ * handler is not closed by the map's click event of that same click, which comes after.
+ */
+export function clickBeingAnswered(): MouseEvent | null {
+  return clickInHand;
+}
 
 export class OverlayStack {
   private readonly layers: StackedLayer[] = [];
@@ -129,7 +141,12 @@ export class OverlayStack {
   private readonly onClick = (ev: MouseEvent): void => {
     if (!this.clicks.isClick(ev) || this.layers.length === 0 || !this.map.getMetadata()) return;
     const at = this.place(ev);
-    for (const l of this.topDown()) l.click(at);
+    clickInHand = ev;
+    try {
+      for (const l of this.topDown()) l.click(at);
+    } finally {
+      clickInHand = null;
+    }
   };
 
   private readonly onMapRemove = (): void => {
