@@ -90,12 +90,14 @@ export class GeoJsonLayer extends Evented<GeoJsonLayerEvents> {
   /** Draws it over the map, on top of the layers added before. Throws if its data cannot be projected to the cube's CRS. */
   addTo(map: VarioMap): this {
     this.remove();
-    this.map = map;
-    this.stack = OverlayStack.of(map);
+    const stack = OverlayStack.of(map);
     const meta = map.getMetadata();
-    if (meta) this.project(this.source, meta, 'GeoJsonLayer addTo');
+    // Projected first: data the cube's CRS cannot take leaves the layer off the map.
+    if (meta) this.project(this.source, meta, stack, 'GeoJsonLayer addTo');
     else map.on('meta', this.onMeta);
-    this.stack.add(this.stacked);
+    this.map = map;
+    this.stack = stack;
+    stack.add(this.stacked);
     return this;
   }
 
@@ -159,17 +161,17 @@ export class GeoJsonLayer extends Evented<GeoJsonLayerEvents> {
 
   private replace(source: Source): this {
     const meta = this.map?.getMetadata();
-    if (meta) this.project(source, meta, source.lngLat ? 'GeoJsonLayer setData' : 'GeoJsonLayer setDataProjected');
+    if (meta && this.stack) this.project(source, meta, this.stack, source.lngLat ? 'GeoJsonLayer setData' : 'GeoJsonLayer setDataProjected');
     this.source = source;
     this.stack?.changed();
     return this;
   }
 
   /** Projects the source to the cube's CRS and makes its mesh; a GeoJsonError names every position that cannot be. */
-  private project(source: Source, meta: CubeMeta, what: string): void {
+  private project(source: Source, meta: CubeMeta, stack: OverlayStack, what: string): void {
     let to: (xy: XY) => XY = (xy) => xy;
     if (source.lngLat) {
-      const crs = this.stack!.toProjected();
+      const crs = stack.toProjected();
       to = (xy) => crs.toProjected(new LngLat(xy[0], xy[1]));
     }
     const problems: string[] = [];
@@ -187,8 +189,9 @@ export class GeoJsonLayer extends Evented<GeoJsonLayerEvents> {
   }
 
   private readonly onMeta = (meta: CubeMeta): void => {
+    if (!this.stack) return;
     try {
-      this.project(this.source, meta, 'GeoJsonLayer');
+      this.project(this.source, meta, this.stack, 'GeoJsonLayer');
     } catch (err) {
       const error = err instanceof Error ? err : new Error(String(err));
       // As MapLibre's Evented: an error nobody listens for goes to the console.

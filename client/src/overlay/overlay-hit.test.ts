@@ -48,6 +48,12 @@ describe('overlay hit testing', () => {
     assert.deepEqual(h.at([1, 1], small), [2, 1], 'only the fills, 4 from the circle and the line');
   });
 
+  test('lines and points of size 0 are not drawn, and not hit', () => {
+    const h = new HitIndex([parts({ points: [[0, 0]] }), parts({ lines: [[[0, 0], [5, 0]]] })]);
+    assert.deepEqual(h.at([1, 0], reach({ circleRadius: 0 })), [1]);
+    assert.deepEqual(h.at([1, 0], reach({ lineHalfWidth: 0 })), [0]);
+  });
+
   test('a feature with several parts is listed once', () => {
     const h = new HitIndex([parts({ points: [[0, 0], [1, 0]], lines: [[[0, 0], [5, 0]]] })]);
     assert.deepEqual(h.at([0.5, 0], reach()), [0]);

@@ -9,7 +9,7 @@ import type { Parts, XY } from './geojson-read.js';
 export interface HitReach {
   /** Ground units per CSS pixel. */
   resolution: number;
-  /** CSS px: half the line width (lines and polygon outlines), the circle's radius with its stroke. */
+  /** CSS px: half the line width (lines and polygon outlines), the circle's radius with its stroke; 0: not drawn, not hit. */
   lineHalfWidth: number;
   circleRadius: number;
   /** CSS px added to both: thin lines and small circles are hard to hit exactly. */
@@ -61,8 +61,9 @@ export class HitIndex {
       .search(p[0] - reach, p[1] - reach, p[0] + reach, p[1] + reach)
       .map((i) => this.items[i]!)
       .filter((it) => {
-        if (it.kind === POINT) return Math.hypot(p[0] - (it.geometry as XY)[0], p[1] - (it.geometry as XY)[1]) <= pointReach;
-        if (it.kind === LINE) return distanceToPolyline(p, it.geometry as XY[], false) <= lineReach;
+        // What is not drawn (a size of 0) is not hit.
+        if (it.kind === POINT) return r.circleRadius > 0 && Math.hypot(p[0] - (it.geometry as XY)[0], p[1] - (it.geometry as XY)[1]) <= pointReach;
+        if (it.kind === LINE) return r.lineHalfWidth > 0 && distanceToPolyline(p, it.geometry as XY[], false) <= lineReach;
         const rings = it.geometry as XY[][];
         return insideRings(p, rings) || (r.outlines && rings.some((ring) => distanceToPolyline(p, ring, true) <= lineReach));
       })
