@@ -100,8 +100,18 @@ function readFeature(f: unknown, where: string, reader: PartsReader, out: ReadFe
   out.push({ feature: f as unknown as GeoJsonFeature, name, parts });
 }
 
-/** Reads geometries into parts, adding what is wrong to `problems`. */
+/**
+ * Reads geometries into parts, adding what is wrong to `problems`. The place of a wrong
+ * position (geometry.coordinates[1][4]) is kept as indices on a stack and written out only
+ * when something is wrong: most data is right, and large.
+ */
 class PartsReader {
+  /** The geometry being read: its feature's name and where its coordinates are. */
+  private name = '';
+  private where = '';
+  /** Indices into the coordinates down to the array being read. */
+  private readonly idx: number[] = [];
+
   constructor(
     private readonly lngLat: boolean,
     readonly problems: string[],
@@ -126,96 +136,109 @@ class PartsReader {
       say(at('type'), `${describe(type)} is not a GeoJSON geometry type (${GEOMETRY_TYPES.join(', ')})`);
       return into;
     }
+    this.name = name;
+    this.where = at('coordinates');
     const c: unknown = g.coordinates;
-    const where = at('coordinates');
-    // Nesting depth of the coordinates: 0 a position, 1 a list of them, ...
-    const depth = { Point: 0, MultiPoint: 1, LineString: 1, MultiLineString: 2, Polygon: 2, MultiPolygon: 3 }[type as Exclude<GeoJsonGeometry['type'], 'GeometryCollection'>];
-    if (!this.nested(c, depth, where, say)) return into;
     switch (type) {
-      case 'Point':
-        into.points.push(this.position(c, where, say) ?? [0, 0]);
+      case 'Point': {
+        const p = this.position(c);
+        if (p) into.points.push(p);
         break;
+      }
       case 'MultiPoint':
-        (c as unknown[]).forEach((p, i) => into.points.push(this.position(p, `${where}[${i}]`, say) ?? [0, 0]));
+        this.each(c, (p) => {
+          const xy = this.position(p);
+          if (xy) into.points.push(xy);
+        });
         break;
       case 'LineString':
-        this.line(c as unknown[], where, say, into);
+        this.line(c, into);
         break;
       case 'MultiLineString':
-        (c as unknown[][]).forEach((l, i) => this.line(l, `${where}[${i}]`, say, into));
+        this.each(c, (l) => this.line(l, into));
         break;
       case 'Polygon':
-        this.polygon(c as unknown[][], where, say, into);
+        this.polygon(c, into);
         break;
       case 'MultiPolygon':
-        (c as unknown[][][]).forEach((p, i) => this.polygon(p, `${where}[${i}]`, say, into));
+        this.each(c, (poly) => this.polygon(poly, into));
         break;
     }
     return into;
   }
 
-  /** Whether `c` is arrays nested `depth` deep (positions not yet checked). */
-  private nested(c: unknown, depth: number, where: string, say: (where: string, msg: string) => void): boolean {
-    if (!Array.isArray(c)) {
-      say(where, `must be an array${depth === 0 ? ' [x, y]' : ''}, not ${describe(c)}`);
-      return false;
-    }
-    if (depth === 0) return true;
-    let ok = true;
-    c.forEach((sub, i) => {
-      if (!this.nested(sub, depth - 1, `${where}[${i}]`, say)) ok = false;
-    });
-    return ok;
+  private say(msg: string): void {
+    this.problems.push(`${this.name}: ${this.where}${this.idx.map((i) => `[${i}]`).join('')}: ${msg}`);
   }
 
-  private position(p: unknown, where: string, say: (where: string, msg: string) => void): XY | null {
+  /** Calls `f` on every element of the array `list` (with its index on the stack); false if `list` is no array. */
+  private each(list: unknown, f: (item: unknown) => void): boolean {
+    if (!Array.isArray(list)) {
+      this.say(`must be an array, not ${describe(list)}`);
+      return false;
+    }
+    for (let i = 0; i < list.length; i++) {
+      this.idx.push(i);
+      f(list[i]);
+      this.idx.pop();
+    }
+    return true;
+  }
+
+  private position(p: unknown): XY | null {
     if (!Array.isArray(p) || p.length < 2) {
-      say(where, `a position must be an array of at least two numbers, not ${describe(p)}`);
+      this.say(`a position must be an array of at least two numbers, not ${describe(p)}`);
       return null;
     }
     const [x, y] = p as unknown[];
     if (typeof x !== 'number' || typeof y !== 'number' || !Number.isFinite(x) || !Number.isFinite(y)) {
-      say(where, `a position's coordinates must be finite numbers, not ${describe(p)}`);
+      this.say(`a position's coordinates must be finite numbers, not ${describe(p)}`);
       return null;
     }
     if (this.lngLat && (y < -90 || y > 90)) {
-      say(where, `latitude ${y} is outside [-90, 90] (longitude/latitude expected; projected coordinates go to setDataProjected)`);
+      this.say(`latitude ${y} is outside [-90, 90] (longitude/latitude expected; projected coordinates go to setDataProjected)`);
       return null;
     }
     return [x, y];
   }
 
   /** The positions of a list, or null if any is wrong (each said). */
-  private positions(list: unknown[], where: string, say: (where: string, msg: string) => void): XY[] | null {
+  private positions(list: unknown): XY[] | null {
     const out: XY[] = [];
     let ok = true;
-    list.forEach((p, i) => {
-      const xy = this.position(p, `${where}[${i}]`, say);
+    if (!this.each(list, (p) => {
+      const xy = this.position(p);
       if (xy) out.push(xy);
       else ok = false;
-    });
+    })) ok = false;
     return ok ? out : null;
   }
 
-  private line(list: unknown[], where: string, say: (where: string, msg: string) => void, into: Parts): void {
-    const pts = this.positions(list, where, say);
+  private line(list: unknown, into: Parts): void {
+    const pts = this.positions(list);
     if (!pts) return;
-    if (pts.length < 2) say(where, `a line needs at least two positions, not ${pts.length}`);
+    if (pts.length < 2) this.say(`a line needs at least two positions, not ${pts.length}`);
     else into.lines.push(pts);
   }
 
-  private polygon(rings: unknown[][], where: string, say: (where: string, msg: string) => void, into: Parts): void {
+  private polygon(rings: unknown, into: Parts): void {
     const out: XY[][] = [];
-    rings.forEach((r, i) => {
-      const pts = this.positions(r, `${where}[${i}]`, say);
-      if (!pts) return;
+    let ok = true;
+    const isArray = this.each(rings, (r) => {
+      const pts = this.positions(r);
+      if (!pts) {
+        ok = false;
+        return;
+      }
       // The closing position is optional here (as MapLibre reads rings); it is not kept.
       const last = pts[pts.length - 1], first = pts[0];
       if (pts.length > 1 && first && last && first[0] === last[0] && first[1] === last[1]) pts.pop();
-      if (pts.length < 3) say(`${where}[${i}]`, `a ring needs at least three distinct positions, not ${pts.length}`);
-      else out.push(pts);
+      if (pts.length < 3) {
+        this.say(`a ring needs at least three distinct positions, not ${pts.length}`);
+        ok = false;
+      } else out.push(pts);
     });
-    if (out.length === rings.length && out.length > 0) into.polygons.push(out);
+    if (isArray && ok && out.length > 0) into.polygons.push(out);
   }
 }
 
