@@ -18,6 +18,8 @@ export const QUAD_VERTICES = 4;
 export interface OverlayMesh {
   /** Subtracted from every position (float64). */
   origin: XY;
+  /** The box around every position (x0, y0, x1, y1; empty: x0 > x1). */
+  bbox: [number, number, number, number];
   /** Polygon triangles: x, y per vertex (relative to the origin) and 3 indices per triangle. */
   fill: { positions: Float32Array; indices: Uint32Array };
   /** Quads of LineStrings' segments. */
@@ -30,7 +32,8 @@ export interface OverlayMesh {
 
 /** The mesh of the features' parts (in the cube's CRS). */
 export function buildMesh(features: readonly Parts[]): OverlayMesh {
-  const origin = middle(features);
+  const bbox = boxAround(features);
+  const origin: XY = bbox[0] <= bbox[2] ? [(bbox[0] + bbox[2]) / 2, (bbox[1] + bbox[3]) / 2] : [0, 0];
   const lines = new QuadArray(), rings = new QuadArray(), points = new QuadArray();
   const positions: number[] = [], indices: number[] = [];
   for (const f of features) {
@@ -41,7 +44,7 @@ export function buildMesh(features: readonly Parts[]): OverlayMesh {
       triangulate(poly, origin, positions, indices);
     }
   }
-  return { origin, fill: { positions: new Float32Array(positions), indices: new Uint32Array(indices) }, lines: lines.finish(), rings: rings.finish(), points: points.finish() };
+  return { origin, bbox, fill: { positions: new Float32Array(positions), indices: new Uint32Array(indices) }, lines: lines.finish(), rings: rings.finish(), points: points.finish() };
 }
 
 /** The quads of a polyline's segments (closed: and from the last position back to the first); repeated positions give none. */
@@ -109,8 +112,7 @@ function triangulate(rings: readonly XY[][], origin: XY, positions: number[], in
   for (const c of coords) positions.push(c);
 }
 
-/** The middle of the box around every position (0, 0 when there is none). */
-function middle(features: readonly Parts[]): XY {
+function boxAround(features: readonly Parts[]): [number, number, number, number] {
   let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
   const add = (p: XY): void => {
     x0 = Math.min(x0, p[0]);
@@ -123,7 +125,7 @@ function middle(features: readonly Parts[]): XY {
     for (const l of f.lines) l.forEach(add);
     for (const poly of f.polygons) for (const r of poly) r.forEach(add);
   }
-  return x0 <= x1 ? [(x0 + x1) / 2, (y0 + y1) / 2] : [0, 0];
+  return [x0, y0, x1, y1];
 }
 
 /** Quads in a quad array. */

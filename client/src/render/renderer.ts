@@ -57,6 +57,8 @@ export class Renderer {
   private idsJittered = false;
   /** The overlay layers drawn over the map, bottom first. */
   private overlays: readonly OverlayDrawable[] = [];
+  /** What the overlays target holds: the layers drawn for this view (null: nothing yet). */
+  private overlaysDrawn: { layers: readonly OverlayDrawable[]; view: ViewGeometry; ratio: number } | null = null;
 
   private constructor(
     readonly canvas: HTMLCanvasElement,
@@ -95,6 +97,7 @@ export class Renderer {
     if (gl.isContextLost()) return;
     const floatTargets = gl.getExtension('EXT_color_buffer_float') !== null;
     const targets = new Targets(gl, { floatTargets });
+    this.overlaysDrawn = null;
     this.gpu = {
       surface: new SurfacePass(gl),
       id: new IdPass(gl),
@@ -185,7 +188,7 @@ export class Renderer {
     gl.bindVertexArray(g.emptyVao);
     g.colour.draw(g.targets, { ...f.colour, style: g.style.texture, classCount: g.style.classCount, background: parseColour(this.style.background), faceState: g.faceState.texture });
     g.present.draw(g.targets);
-    g.overlay.draw(g.targets, f.view, f.pixelRatio, this.overlays);
+    this.drawOverlays(g, f);
     gl.bindVertexArray(null);
     this.lastFrame = f;
     this.lastChunks = chunks;
@@ -198,7 +201,15 @@ export class Renderer {
     // Nothing drawn since the context came back: the next frame draws everything.
     if (!g || !f || g.targets.width === 0) return;
     g.present.draw(g.targets);
-    g.overlay.draw(g.targets, f.view, f.pixelRatio, this.overlays);
+    this.drawOverlays(g, f);
+  }
+
+  /** The overlays over the canvas, drawn again only if the view or the layers changed. */
+  private drawOverlays(g: Gpu, f: FrameParams): void {
+    const d = this.overlaysDrawn, v = f.view;
+    const same = d !== null && d.layers === this.overlays && d.ratio === f.pixelRatio && d.view.centerX === v.centerX && d.view.centerY === v.centerY && d.view.resolution === v.resolution && d.view.width === v.width && d.view.height === v.height;
+    g.overlay.draw(g.targets, v, f.pixelRatio, this.overlays, !same);
+    this.overlaysDrawn = { layers: this.overlays, view: v, ratio: f.pixelRatio };
   }
 
   /** The ID targets as drawn without jitter (drawn again if the last frame was jittered); null when lost. */
