@@ -44,6 +44,7 @@ interface PageLayer {
   addTo(m: unknown): PageLayer;
   remove(): PageLayer;
   setData(d: unknown): PageLayer;
+  setPaint(p: object): PageLayer;
   on(type: string, fn: (e: { type: string; features: { properties: Record<string, unknown> }[]; point: XY; lngLat: object | null }) => void): PageLayer;
 }
 
@@ -185,14 +186,34 @@ describe('GeoJsonLayer in the script-tag build (bgt_otterlo_400m)', () => {
 
   });
 
-  test('removing a layer restores the plain map pixels exactly', async () => {
+  test('setPaint recolours the layer; projected data draws as its longitude/latitude does; removing a layer restores the plain map pixels exactly', async () => {
     const page = await open();
     const plain = await screenshot(page);
-    const coords = await lngLats(page, [[100, 100], [500, 350]]);
+    const ends: XY[] = [[100, 100], [500, 350]];
+    const coords = await lngLats(page, ends);
     await addLayer(page, { data: { type: 'LineString', coordinates: coords }, paint: { lineColor: LINE_COLOUR, lineWidth: 8 } });
-    assert.ok(changed(await screenshot(page), plain).length > 1000, 'the layer is drawn');
+    const drawn = await screenshot(page);
+    assert.ok(changed(drawn, plain).length > 1000, 'the layer is drawn');
+    const mid: XY = [300, 225];
+    assert.deepEqual(pixel(drawn, ...mid), hexColour(LINE_COLOUR));
+    await page.evaluate(async () => {
+      const w = globalThis as unknown as LayerWindow;
+      w.layers[0]!.setPaint({ lineColor: '#00ffff' });
+      await w.map.whenIdle();
+    });
+    const recoloured = await screenshot(page);
+    assert.deepEqual(pixel(recoloured, ...mid), hexColour('#00ffff'), 'the new colour');
+    assert.deepEqual(changed(recoloured, plain), changed(drawn, plain), 'on the same pixels');
     await removeLayers(page);
     assert.deepEqual(changed(await screenshot(page), plain), [], 'no pixel differs from the map without the layer');
+
+    // The same places in the cube's CRS.
+    const xy = await page.evaluate((pts) => pts.map((p) => (globalThis as unknown as LayerWindow).map.unprojectProjected(p)), ends);
+    await addLayer(page, { dataProjected: { type: 'LineString', coordinates: xy }, paint: { lineColor: LINE_COLOUR, lineWidth: 8 } });
+    // Its positions are the same to well under a micrometre (proj4 both ways): an edge pixel may round the other way.
+    const same = await screenshot(page);
+    const worst = Math.max(...changed(same, drawn).map(([x, y]) => Math.max(...pixel(same, x - 0.5, y - 0.5).map((v, k) => Math.abs(v - pixel(drawn, x - 0.5, y - 0.5)[k]!)))));
+    assert.ok(worst <= 2, `dataProjected: the pixels of the same line in longitude/latitude, to 2 levels: worst ${worst}`);
   });
 
   test('a polygon with a hole at opacity 0.5 blends inside, leaves its hole and the outside alone; a later layer draws over it', async () => {
