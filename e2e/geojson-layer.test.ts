@@ -1,10 +1,12 @@
 // The GeoJSON overlay layer of the script-tag build in a plain page, in Chromium, checked against
 // the map's own project() and the pixels of the map without the layer: a line given in
 // longitude/latitude is drawn where its coordinates project (before and after a real wheel
-// zoom), a translucent polygon blends over the map inside and leaves its hole and the outside
-// alone, a point is a disc of its radius, later layers draw over earlier ones, a real click and
-// real moves fire the layer's click, mouseenter and mouseleave with the feature, and removing
-// the layer gives back the map's pixels exactly.
+// zoom, and with its width in CSS px at a device pixel ratio of 2), setPaint recolours it and
+// dataProjected draws it the same, a translucent polygon blends over the map inside and leaves
+// its hole and the outside alone, a point is a disc of its radius, later layers draw over
+// earlier ones, a real click and real moves fire the layer's click, mouseenter and mouseleave
+// with the feature, removing the layer gives back the map's pixels exactly, and a layer added
+// before the cube is known is drawn, also after a lost context.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import type { Page } from 'playwright-core';

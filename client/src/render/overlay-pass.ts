@@ -69,15 +69,15 @@ export class OverlayPass {
 
   /**
    * Draws the layers over the canvas (the default framebuffer), `ratio` device px per CSS px;
-   * `again` false: as they were last drawn (same view, same layers), from the overlays target.
+   * `redraw` false: as they were last drawn (same view, same layers), from the overlays target.
    */
-  draw(targets: Targets, view: ViewGeometry, ratio: number, layers: readonly OverlayDrawable[], again: boolean): void {
+  draw(targets: Targets, view: ViewGeometry, ratio: number, layers: readonly OverlayDrawable[], redraw: boolean): void {
     if (!layers.some((l) => l.mesh)) return;
     const gl = this.gl;
     gl.disable(gl.DEPTH_TEST);
     gl.enable(gl.BLEND);
     gl.bindVertexArray(this.emptyVao);
-    if (again) {
+    if (redraw) {
       gl.bindFramebuffer(gl.FRAMEBUFFER, targets.overlaysFb);
       gl.clearBufferfv(gl.COLOR, 0, new Float32Array([0, 0, 0, 0]));
       for (const layer of layers) {
