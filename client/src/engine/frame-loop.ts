@@ -54,6 +54,8 @@ export class FrameLoop {
   private blendingWasOn = false;
   private idleFired = false;
   private stopped = false;
+  /** The overlays changed: the finished map is shown again with them, without drawing it again. */
+  private overlaysDue = false;
   private lastStats: RenderStats = { frame: 0, triangles: 0, chunks: 0, queryMs: 0, gpuBytes: 0, jittered: false };
 
   constructor(
@@ -76,6 +78,12 @@ export class FrameLoop {
   redraw(): void {
     this.accumulated = 0;
     this.idleFired = false;
+    this.schedule();
+  }
+
+  /** The overlay layers changed (the map did not). */
+  overlaysChanged(): void {
+    this.overlaysDue = true;
     this.schedule();
   }
 
@@ -159,11 +167,14 @@ export class FrameLoop {
     if (this.accumulated < supersampling) {
       const n = this.accumulated;
       const colour = colourParams({ view: q.view, ratio: this.canvas.deviceRatio(), boundaries, paints: this.settings.paints, blendDistance: blendOn ? blending.distance : 0, weight: weight(n) });
-      const triangles = r.render({ view: q.view, surface: this.view.surface(), zMax: meta.zMax, jitter: jitter(n), colour }, chunks);
+      const triangles = r.render({ view: q.view, surface: this.view.surface(), zMax: meta.zMax, jitter: jitter(n), colour, pixelRatio: this.canvas.deviceRatio() }, chunks);
       this.accumulated = n + 1;
       this.lastStats = { frame: this.frameNo, triangles, chunks: chunks.length, queryMs: this.residency.queryMs, gpuBytes: r.store.bytes, jittered: n > 0 };
       this.sink.render(this.stats());
+    } else if (this.overlaysDue) {
+      r.present();
     }
+    this.overlaysDue = false;
     this.settle(blendOn && blending.mode === 'moving');
   }
 

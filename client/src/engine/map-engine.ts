@@ -8,6 +8,7 @@ import type { MapView } from '../camera/map-view.js';
 import { Evented } from '../events.js';
 import { DEFAULT_STATE_PAINTS, DRAWN_STATES, type BlendingOptions, type BoundaryOptions, type DrawnState, type StatePaint } from '../render/colour-options.js';
 import type { IdBuffer } from '../render/id-buffer.js';
+import type { OverlayDrawable } from '../render/overlay-pass.js';
 import { Renderer } from '../render/renderer.js';
 import { parseColour } from '../render/style-texture.js';
 import type { Camera } from '../geometry/camera.js';
@@ -232,6 +233,12 @@ export class MapEngine extends Evented<EngineEvents> {
   removeFeatureState(ref: FeatureRef, key?: string): void {
     const face = this.featureStates.remove(ref, key);
     this.showFeatureState(face);
+  }
+
+  /** The overlay layers drawn over the map, bottom first: shown with the finished map at the next frame. */
+  setOverlays(layers: readonly OverlayDrawable[]): void {
+    this.renderer?.setOverlays(layers);
+    this.loop?.overlaysChanged();
   }
 
   setSupersampling(frames: number): void {

@@ -4,6 +4,7 @@
 // waits for it), and the end of a drag is not a click.
 import type { Feature } from '../engine/picking.js';
 import type { LngLat } from '../geo/lng-lat.js';
+import { ClickFilter } from './click-filter.js';
 
 export interface MapPointerEvent {
   /** CSS px in the map. */
@@ -27,10 +28,8 @@ export interface FeatureEventHost {
   queryFeatures(point: [number, number]): Promise<Feature[]>;
 }
 
-const CLICK_TOLERANCE_PX = 3;
-
 export class FeatureEvents {
-  private pressed: { x: number; y: number } | null = null;
+  private readonly clicks = new ClickFilter();
   private readonly query: { busy: boolean; next: PointerEvent | null } = { busy: false, next: null };
   private removed = false;
 
@@ -51,15 +50,13 @@ export class FeatureEvents {
   }
 
   private readonly onPress = (ev: PointerEvent): void => {
-    this.pressed = { x: ev.clientX, y: ev.clientY };
+    this.clicks.press(ev);
     // Focus from a pointer shows no ring, as a native click's would not: the ring is for keys.
     if (document.activeElement !== this.element) this.element.focus({ preventScroll: true, focusVisible: false });
   };
 
   private readonly onClick = (ev: MouseEvent): void => {
-    const p = this.pressed;
-    this.pressed = null;
-    if (p && Math.hypot(ev.clientX - p.x, ev.clientY - p.y) > CLICK_TOLERANCE_PX) return;
+    if (!this.clicks.isClick(ev)) return;
     if (this.host.listens('click')) void this.send('click', ev);
   };
 

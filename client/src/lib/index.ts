@@ -1,4 +1,4 @@
-// The library's public surface: the map, its controls, markers and popups, the research tools,
+// The library's public surface: the map, its controls, markers, popups and GeoJSON layers, the research tools,
 // the scale helpers and longitude/latitude as MapLibre's. The builds start from bundle.ts,
 // which adds the stylesheet; the type declarations (tsconfig.lib.json) from here.
 
@@ -52,3 +52,7 @@ export { CrsError } from '../geo/crs-transform.js';
 export { Marker, type MarkerOptions } from '../overlay/marker.js';
 export { Popup, type PopupEvents, type PopupOptions } from '../overlay/popup.js';
 export type { Anchor, Offset } from '../overlay/overlay-position.js';
+export { GeoJsonLayer, type GeoJsonLayerEvent, type GeoJsonLayerEvents, type GeoJsonLayerEventType, type GeoJsonLayerOptions } from '../overlay/geojson-layer.js';
+export { DEFAULT_GEOJSON_PAINT, type GeoJsonPaint } from '../overlay/geojson-paint.js';
+export { GeoJsonError, type GeoJsonData, type GeoJsonFeature, type GeoJsonFeatureCollection, type GeoJsonGeometry, type Position } from '../overlay/geojson-read.js';
+export type { PointerPlace } from '../overlay/overlay-stack.js';

@@ -1,7 +1,10 @@
 // Popup, as MapLibre GL JS's: a box of text or HTML with a tip pointing at a place, kept there
 // through every movement of the map; a close button, and closed by a click on the map
-// (closeOnClick). Its anchor is chosen to keep it inside the map unless one is given.
+// (closeOnClick; not by the click that opened it, when a GeoJSON layer's click handler did).
+// Its anchor is chosen to keep it inside the map unless one is given.
 import type { VarioMap } from '../vario-map.js';
+import type { MapPointerEvent } from '../interaction/feature-events.js';
+import { clickBeingAnswered } from './overlay-stack.js';
 import { autoAnchor, type Anchor, type Offset } from './overlay-position.js';
 import { PlacedOverlay } from './placed-overlay.js';
 
@@ -35,6 +38,8 @@ export class Popup extends PlacedOverlay<PopupEvents> {
   private readonly element: HTMLElement;
   private readonly content: HTMLElement;
   private anchorShown: Anchor | null = null;
+  /** The click an overlay layer's handler opened it in: the map's event of that click does not close it. */
+  private openedBy: MouseEvent | null = null;
 
   constructor(options: PopupOptions = {}) {
     super(options.offset ?? 0);
@@ -94,6 +99,7 @@ export class Popup extends PlacedOverlay<PopupEvents> {
   addTo(map: VarioMap): this {
     if (this.map) this.remove();
     this.attach(map);
+    this.openedBy = clickBeingAnswered();
     if (this.options.closeOnClick ?? true) map.on('click', this.onMapClick);
     if (this.options.focusAfterOpen ?? true) this.element.querySelector<HTMLElement>('a[href], button, input, select, textarea, [tabindex]:not([tabindex="-1"])')?.focus({ preventScroll: true });
     this.fire('open', {});
@@ -121,8 +127,8 @@ export class Popup extends PlacedOverlay<PopupEvents> {
     return anchor;
   }
 
-  private readonly onMapClick = (): void => {
-    this.remove();
+  private readonly onMapClick = (e: MapPointerEvent): void => {
+    if (e.originalEvent !== this.openedBy) this.remove();
   };
 }
 

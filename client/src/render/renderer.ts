@@ -1,6 +1,7 @@
 // The GPU side of the map: the WebGL2 context and everything made in it (passes, targets, the
-// style and feature state textures, the chunks), one frame at a time, and reading the ID buffer back. A lost
-// context is given up quietly and rebuilt on restore; the chunks then have to be uploaded again.
+// style and feature state textures, the chunks, the overlay layers' meshes), one frame at a time,
+// and reading the ID buffer back. A lost context is given up quietly and rebuilt on restore; the
+// chunks then have to be uploaded again (the overlays' meshes are uploaded again as drawn).
 import type { CubeMeta } from '../../../format/cube-index.js';
 import type { CubeStyle } from '../../../format/style.js';
 import type { Surface } from '../../../format/slicing-surface.js';
@@ -12,6 +13,7 @@ import { FaceStateTexture } from './face-state-texture.js';
 import type { GpuChunk } from './gpu-chunk.js';
 import type { IdBuffer } from './id-buffer.js';
 import { IdPass } from './id-pass.js';
+import { OverlayPass, type OverlayDrawable } from './overlay-pass.js';
 import { PresentPass } from './present-pass.js';
 import { createStyleTexture, parseColour } from './style-texture.js';
 import { SurfacePass } from './surface-pass.js';
@@ -24,6 +26,8 @@ export interface FrameParams {
   /** Sub-pixel offset of this frame (device pixels); [0, 0] for the plain image. */
   jitter: [number, number];
   colour: Omit<ColourParams, RendererColourParams>;
+  /** Device pixels per CSS pixel (the overlays' widths are in CSS pixels). */
+  pixelRatio: number;
 }
 
 /** What the renderer adds to the colour pass's parameters: its own textures and the style's background. */
@@ -34,6 +38,7 @@ interface Gpu {
   id: IdPass;
   colour: ColourPass;
   present: PresentPass;
+  overlay: OverlayPass;
   targets: Targets;
   emptyVao: WebGLVertexArrayObject;
   style: { texture: WebGLTexture; classCount: number } | null;
@@ -50,6 +55,10 @@ export class Renderer {
   private lastFrame: FrameParams | null = null;
   private lastChunks: GpuChunk[] = [];
   private idsJittered = false;
+  /** The overlay layers drawn over the map, bottom first. */
+  private overlays: readonly OverlayDrawable[] = [];
+  /** What the overlays target holds: the layers drawn for this view (null: nothing yet). */
+  private overlaysDrawn: { layers: readonly OverlayDrawable[]; view: ViewGeometry; ratio: number } | null = null;
 
   private constructor(
     readonly canvas: HTMLCanvasElement,
@@ -88,11 +97,13 @@ export class Renderer {
     if (gl.isContextLost()) return;
     const floatTargets = gl.getExtension('EXT_color_buffer_float') !== null;
     const targets = new Targets(gl, { floatTargets });
+    this.overlaysDrawn = null;
     this.gpu = {
       surface: new SurfacePass(gl),
       id: new IdPass(gl),
       colour: new ColourPass(gl),
       present: new PresentPass(gl),
+      overlay: new OverlayPass(gl),
       targets,
       emptyVao: gl.createVertexArray(),
       style: null,
@@ -147,6 +158,12 @@ export class Renderer {
     this.gpu?.faceState?.set(face, bits);
   }
 
+  /** The overlay layers from the next frame on, bottom first. */
+  setOverlays(layers: readonly OverlayDrawable[]): void {
+    this.overlays = layers;
+    this.gpu?.overlay.keep(layers);
+  }
+
   upload(payload: ChunkPayload, frame: number): boolean {
     if (!this.gpu) return false;
     this.store.add(this.gl, payload, frame);
@@ -171,10 +188,28 @@ export class Renderer {
     gl.bindVertexArray(g.emptyVao);
     g.colour.draw(g.targets, { ...f.colour, style: g.style.texture, classCount: g.style.classCount, background: parseColour(this.style.background), faceState: g.faceState.texture });
     g.present.draw(g.targets);
+    this.drawOverlays(g, f);
     gl.bindVertexArray(null);
     this.lastFrame = f;
     this.lastChunks = chunks;
     return triangles;
+  }
+
+  /** Shows the last frame's map again with the overlays as they are now (the map's image is kept). */
+  present(): void {
+    const g = this.gpu, f = this.lastFrame;
+    // Nothing drawn since the context came back: the next frame draws everything.
+    if (!g || !f || g.targets.width === 0) return;
+    g.present.draw(g.targets);
+    this.drawOverlays(g, f);
+  }
+
+  /** The overlays over the canvas, drawn again only if the view or the layers changed. */
+  private drawOverlays(g: Gpu, f: FrameParams): void {
+    const d = this.overlaysDrawn, v = f.view;
+    const same = d !== null && d.layers === this.overlays && d.ratio === f.pixelRatio && d.view.centerX === v.centerX && d.view.centerY === v.centerY && d.view.resolution === v.resolution && d.view.width === v.width && d.view.height === v.height;
+    g.overlay.draw(g.targets, v, f.pixelRatio, this.overlays, !same);
+    this.overlaysDrawn = { layers: this.overlays, view: v, ratio: f.pixelRatio };
   }
 
   /** The ID targets as drawn without jitter (drawn again if the last frame was jittered); null when lost. */
@@ -265,6 +300,7 @@ export class Renderer {
       g.id.delete();
       g.colour.delete();
       g.present.delete();
+      g.overlay.delete();
       g.targets.delete();
       this.gl.deleteVertexArray(g.emptyVao);
       if (g.style) this.gl.deleteTexture(g.style.texture);

@@ -1,7 +1,9 @@
 // The offscreen targets of a frame, sized to the canvas in device pixels:
 // - ids: RG32UI upper/lower face + RG32UI classes/surface z, with a float depth buffer (MRT);
 // - surface: R32F slicing surface z;
-// - colour: the accumulated (supersampled) colour.
+// - colour: the accumulated (supersampled) colour;
+// - coverage: an overlay layer's coverage (overlay-pass.ts), RGBA8;
+// - overlays: every overlay layer painted (premultiplied), in the colour target's format.
 // Integer and float textures are sampled with texelFetch and NEAREST filtering (integer
 // textures read as zero with any other filter).
 
@@ -47,6 +49,10 @@ export class Targets {
   colourFb!: WebGLFramebuffer;
   /** The colour target's format (to read it back). */
   colourFloat = false;
+  coverage!: WebGLTexture;
+  coverageFb!: WebGLFramebuffer;
+  overlays!: WebGLTexture;
+  overlaysFb!: WebGLFramebuffer;
   private live = false;
 
   constructor(
@@ -73,15 +79,19 @@ export class Targets {
     this.colourFloat = this.caps.floatTargets;
     this.colour = texture2d(gl, this.colourFloat ? gl.RGBA16F : gl.RGBA8, width, height);
     this.colourFb = framebuffer(gl, [this.colour], null, 'colour');
+    this.coverage = texture2d(gl, gl.RGBA8, width, height);
+    this.coverageFb = framebuffer(gl, [this.coverage], null, 'overlay coverage');
+    this.overlays = texture2d(gl, this.colourFloat ? gl.RGBA16F : gl.RGBA8, width, height);
+    this.overlaysFb = framebuffer(gl, [this.overlays], null, 'overlays');
     this.live = true;
   }
 
   delete(): void {
     if (!this.live) return;
     const gl = this.gl;
-    for (const t of [this.ids, this.aux, this.surface, this.colour]) gl.deleteTexture(t);
+    for (const t of [this.ids, this.aux, this.surface, this.colour, this.coverage, this.overlays]) gl.deleteTexture(t);
     gl.deleteRenderbuffer(this.depth);
-    for (const f of [this.idFb, this.surfaceFb, this.colourFb]) if (f) gl.deleteFramebuffer(f);
+    for (const f of [this.idFb, this.surfaceFb, this.colourFb, this.coverageFb, this.overlaysFb]) if (f) gl.deleteFramebuffer(f);
     this.live = false;
   }
 }

@@ -9,6 +9,12 @@ export interface Control {
   onRemove(map: VarioMap): void;
 }
 
+/** CSS px of an event from the element's top left (the map's: its canvas container). */
+export function localPoint(element: HTMLElement, ev: { clientX: number; clientY: number }): [number, number] {
+  const r = element.getBoundingClientRect();
+  return [ev.clientX - r.left, ev.clientY - r.top];
+}
+
 export class MapDom {
   readonly root: HTMLElement;
   readonly canvasContainer: HTMLElement;
@@ -50,8 +56,7 @@ export class MapDom {
 
   /** CSS px of an event from the map's top left. */
   localPoint(ev: { clientX: number; clientY: number }): [number, number] {
-    const r = this.canvasContainer.getBoundingClientRect();
-    return [ev.clientX - r.left, ev.clientY - r.top];
+    return localPoint(this.canvasContainer, ev);
   }
 
   add(control: Control, el: HTMLElement, position: ControlPosition): void {
