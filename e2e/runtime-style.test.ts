@@ -72,6 +72,14 @@ function mix(a: [number, number, number], b: [number, number, number], t: number
   return [0, 1, 2].map((i) => Math.round(a[i]! + (b[i]! - a[i]!) * t)) as [number, number, number];
 }
 
+/** Every pixel shows its class's colour in `colours` (by class index), or `background` off the cube. */
+function assertDrawnIn(shot: Rgba, ids: PageIds, background: number[], colours: readonly string[]): void {
+  for (let k = 0; k < W * H; k++) {
+    const want = ids.upper[k] === 0 ? background : hexColour(colours[classAt(ids, k)]!);
+    assert.deepEqual(pixel(shot, k % W, Math.floor(k / W)), want, `pixel ${k}`);
+  }
+}
+
 const near = (a: number[], b: number[], tol: number): boolean => a.every((v, i) => Math.abs(v - b[i]!) <= tol);
 
 describe('run-time style and feature state (bgt_otterlo_400m)', () => {
@@ -139,10 +147,30 @@ describe('run-time style and feature state (bgt_otterlo_400m)', () => {
     const style = { background: '#202020', classes: Object.fromEntries(original.classes.map((c, i) => [c.key, { color: colours[i], label: c.label }]).reverse()) };
     await p.page.evaluate((s) => (globalThis as unknown as StyleWindow).map.setStyle(s), style);
     const after = await redrawn(p);
-    for (let k = 0; k < W * H; k++) {
-      const want = ids.upper[k] === 0 ? [0x20, 0x20, 0x20] : hexColour(colours[classAt(ids, k)]!);
-      assert.deepEqual(pixel(after, k % W, Math.floor(k / W)), want, `pixel ${k}`);
-    }
+    assertDrawnIn(after, ids, [0x20, 0x20, 0x20], colours);
+  });
+
+  test('a style given at load time is drawn from the first frame; one that does not fit is refused with an error event', async () => {
+    let p = await open();
+    const ids = await readIds(p.page);
+    const before = await screenshot(p.page);
+    const original = await p.page.evaluate(() => (globalThis as unknown as StyleWindow).map.getStyle());
+    assert.ok(original);
+    await p.close();
+    const colours = original.classes.map((_, i) => `#${(0x302010 + i * 0x0b0d0f).toString(16).padStart(6, '0')}`);
+    const style = { background: '#404040', classes: Object.fromEntries(original.classes.map((c, i) => [c.key, { color: colours[i], label: c.label }])) };
+    p = await open({ style: JSON.stringify(style) });
+    const first = await screenshot(p.page);
+    assertDrawnIn(first, ids, [0x40, 0x40, 0x40], colours);
+    assert.deepEqual((await p.page.evaluate(() => (globalThis as unknown as StyleWindow).map.getStyle()))?.classes.map((c) => c.color), colours);
+    await p.close();
+    // A colour that is not one: the cube's own style is drawn, and the page hears why.
+    const bad = { ...style, classes: { ...style.classes, [original.classes[0]!.key]: { color: 'brown' } } };
+    p = await open({ style: JSON.stringify(bad) });
+    assert.equal((await p.page.textContent('#info')) ?? '', `style error: setStyle: classes.${original.classes[0]!.key}.color: must be a colour "#rrggbb"`);
+    // The test page shows that message over the map.
+    await p.page.addStyleTag({ content: '#info { display: none !important; }' });
+    assert.equal(Buffer.compare(Buffer.from((await redrawn(p)).data), Buffer.from(before.data)), 0, 'the cube\'s own style');
   });
 
   test('a real click highlights exactly the clicked face, with what a popup needs and its outline', async () => {

@@ -36,6 +36,9 @@ if (budget !== undefined) options.gpuMemoryBudget = budget;
 const ratio = num('ratio');
 if (ratio !== undefined) options.pixelRatio = ratio;
 if (params.get('boundaries') === '1') options.boundaries = { enabled: true };
+// A style to draw from the start (JSON, as setStyle takes it).
+const style = params.get('style');
+if (style) options.style = JSON.parse(style) as NonNullable<VarioMapOptions['style']>;
 const blending = params.get('blending');
 if (blending === 'off' || blending === 'moving' || blending === 'always') options.blending = { mode: blending };
 const retries = num('retries'), backoff = num('backoff'), concurrency = num('concurrency');

@@ -1,6 +1,6 @@
 // The types of VarioMap's public API: its options, events and camera options.
 import type { SurfaceSpec } from '../../format/slicing-surface.js';
-import type { CubeStyle } from '../../format/style.js';
+import type { CubeStyle, StyleJson } from '../../format/style.js';
 import type { Bbox } from './geometry/view.js';
 import type { EngineEvents, EngineOptions } from './engine/map-engine.js';
 import type { LngLatLike } from './geo/lng-lat.js';
@@ -36,6 +36,11 @@ export interface VarioMapOptions extends Partial<HandlerFlags>, Omit<EngineOptio
   maxBounds?: LngLatBoundsLike;
   /** The same in the cube's projected CRS: x0, y0, x1, y1. */
   maxBoundsProjected?: Bbox;
+  /**
+   * The style to draw instead of the cube's own, as `setStyle` takes it, from the first frame.
+   * One that does not fit the cube is not drawn: an 'error' event (kind 'style') says why.
+   */
+  style?: StyleJson;
   /** A map inside a page that scrolls: the wheel zooms only with Ctrl (or ⌘), one finger scrolls the page and two move the map. */
   cooperativeGestures?: boolean;
   /** false turns every input handler off. */

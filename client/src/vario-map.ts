@@ -599,6 +599,14 @@ export class VarioMap extends Evented<VarioMapEvents> {
     }
     this.placePending();
     this.view.place({ scale: this.view.clamp(this.view.camera.scale) });
+    if (this.options.style !== undefined) {
+      try {
+        this.engine.setStyle(this.options.style);
+      } catch (err) {
+        // The cube's own style stays; the page hears why its own was not drawn.
+        this.fire('error', { kind: 'style', message: err instanceof Error ? err.message : String(err), url: this.getSourceUrl() });
+      }
+    }
     this.fire('meta', meta);
     const style = this.getStyle();
     if (style) this.fire('style', style);

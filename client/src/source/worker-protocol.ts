@@ -48,7 +48,8 @@ export type ToWorker =
   | { type: 'loaded-urls'; id: number };
 
 export interface SourceErrorInfo {
-  kind: 'http' | 'network' | 'corrupt' | 'index';
+  /** 'style': the `style` option does not fit the cube (the map draws the cube's own). */
+  kind: 'http' | 'network' | 'corrupt' | 'index' | 'style';
   message: string;
   url: string;
   status?: number;

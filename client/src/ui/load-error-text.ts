@@ -12,5 +12,7 @@ export function loadErrorText(e: SourceErrorInfo): string {
     case 'index':
     case 'corrupt':
       return `${e.url} is not a cube (the index.json that ssc build writes): ${e.message}`;
+    case 'style':
+      return e.message;
   }
 }
