@@ -2,8 +2,11 @@
 // same coordinates) are connected. Lines of a network meet at ports, so this counts how far
 // the network has come apart.
 
-/** Connected pieces among the polylines (flat x, y pairs). */
-export function lineComponents(paths: readonly ArrayLike<number>[]): number {
+/**
+ * The piece of every polyline (flat x, y pairs), numbered from 0 in order of first polyline.
+ * Only points count, not segments: a line's polylines may be given as one array.
+ */
+export function lineComponentLabels(paths: readonly ArrayLike<number>[]): Int32Array {
   const parent = paths.map((_, i) => i);
   const find = (i: number): number => {
     while (parent[i] !== i) {
@@ -21,9 +24,16 @@ export function lineComponents(paths: readonly ArrayLike<number>[]): number {
       else parent[find(o)] = find(i);
     }
   });
-  let n = 0;
-  parent.forEach((_, i) => {
-    if (find(i) === i) n++;
+  const label = new Map<number, number>();
+  return Int32Array.from(paths, (_, i) => {
+    const r = find(i);
+    let l = label.get(r);
+    if (l === undefined) label.set(r, (l = label.size));
+    return l;
   });
-  return n;
+}
+
+/** Connected pieces among the polylines (flat x, y pairs). */
+export function lineComponents(paths: readonly ArrayLike<number>[]): number {
+  return new Set(lineComponentLabels(paths)).size;
 }

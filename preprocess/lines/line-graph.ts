@@ -32,7 +32,7 @@ export function cutLines(adj: readonly (readonly number[])[], alive: ArrayLike<n
   let time = 0;
   const stack: number[] = [];
   for (let root = 0; root < n; root++) {
-    if (!alive[root] || disc[root] >= 0) continue;
+    if (!alive[root] || disc[root]! >= 0) continue;
     let rootChildren = 0;
     disc[root] = low[root] = time++;
     stack.push(root);
