@@ -17,8 +17,8 @@ import { dataset, styleFile } from '../../testing/paths.js';
 import { fixtureStyle, fixtureTgap, ROAD_T } from '../../testing/planar-fixtures.js';
 import { collapseLines, type LineJoin, type LineObject } from './collapse-lines.js';
 import { lineBudget, mapDensity } from './line-budget.js';
-import { lineComponentLabels, lineComponents } from './line-components.js';
-import { pruneLines, pruneOrder, type PrunedLine } from './prune-lines.js';
+import { lineComponents, mainPiece } from './line-components.js';
+import { pruneLines, pruneOrder } from './prune-lines.js';
 
 type Shape = Pick<LineObject, 'step' | 'length' | 'paths' | 'joins'>;
 
@@ -70,6 +70,21 @@ test('a spur goes before loop edges, a bridge only once one side is gone, whatev
     assert.ok(length <= budget[s]!, `state ${s}: ${length} m shown over a budget of ${budget[s]} m`);
     assert.ok(lineComponents(shown.flatMap((l) => l.paths)) <= 1, `state ${s}: the network came apart`);
   }
+});
+
+test('between pieces importance decides: a small ring goes before the network\'s spur, a long ring after all of it', () => {
+  // Two closed rings apart from the network (no free end): 40 m and 400 m.
+  const small = [500, 0, 510, 0, 510, 10, 500, 10, 500, 0];
+  const large = [600, 0, 700, 0, 700, 100, 600, 100, 600, 0];
+  const names = [...NETWORK, 'small ring', 'large ring'];
+  const lines = handLines([...NETWORK_COORDS, small, large], names.map(() => 1));
+  const total = lines.reduce((sum, l) => sum + l.length, 0);
+  const budget = Float64Array.from({ length: 1800 }, (_, s) => Math.max(0, total + 10 - s));
+  const { prunedStep } = pruneOrder(lines, { importance: lines.map((l) => l.length), budget });
+  const order = [...names.keys()].sort((a, b) => prunedStep[a]! - prunedStep[b]!).map((i) => names[i]);
+  // The network offers S first (its only dangling end, 150 m): the small ring (40 m) is less
+  // important and goes before it; the large ring outweighs every line the network offers.
+  assert.deepEqual(order, ['small ring', 'S', 'b2', 'b3', 'b1', 'X', 'a1', 'a2', 'a3', 'a4', 'large ring']);
 });
 
 test('a line that joins parts not yet born holds, even when the budget wants everything gone', () => {
@@ -130,15 +145,9 @@ test('bgt_otterlo_400m: the main road network is one piece at every step roads a
   assert.ok(out.stats.pruned > lines.length / 2, `${out.stats.pruned} of ${lines.length} lines pruned`);
   for (const l of out.lines) assert.ok(l.step <= l.prunedStep && l.prunedStep <= top, `face ${l.face}: [${l.step}, ${l.prunedStep})`);
 
-  // The main road network: the largest piece of all road lines, joined where they share a point.
+  // The main road network: the longest piece of all road lines, joined where they share a point.
   const road = style.classes.findIndex((c) => c.key === 'wegdeel');
-  const roads = out.lines.filter((l) => l.classIndex === road);
-  const flat = (l: PrunedLine): number[] => l.paths.flatMap((p) => [...p]);
-  const label = lineComponentLabels(roads.map(flat));
-  const size = new Map<number, number>();
-  label.forEach((c, i) => size.set(c, (size.get(c) ?? 0) + roads[i]!.length));
-  const biggest = [...size].sort((a, b) => b[1] - a[1])[0]![0];
-  const main = roads.filter((_, i) => label[i] === biggest);
+  const main = mainPiece(out.lines.filter((l) => l.classIndex === road));
   assert.ok(main.length > 30, `${main.length} lines in the main road network`);
 
   let shownStates = 0;
@@ -148,7 +157,7 @@ test('bgt_otterlo_400m: the main road network is one piece at every step roads a
     if (shown.length === 0) continue;
     shownStates++;
     const network = main.filter((l) => l.prunedStep > s);
-    assert.equal(lineComponents(network.map(flat)), 1, `state ${s}: the main road network is in pieces`);
+    assert.equal(lineComponents(network.map((l) => l.paths.flatMap((p) => [...p]))), 1, `state ${s}: the main road network is in pieces`);
     const length = out.lines.filter((l) => l.step <= s && l.prunedStep > s).reduce((sum, l) => sum + l.length, 0);
     assert.ok(length <= out.budget[s]! + 1e-6, `state ${s}: ${length} m of lines over a budget of ${out.budget[s]} m`);
   }

@@ -11,11 +11,14 @@
 //   and two lines in three went the step they were born.)
 // - While over budget, one born line goes at a time, chosen among those whose removal keeps
 //   every connected piece of the network in one piece (not a cut vertex of the join graph,
-//   line-graph.ts, with unborn lines in it as the areas they still are): first lines with a
-//   free end (a dangling end; after it goes, the next of its chain may dangle), then the others;
-//   within each, the least important first (length x class weight), then the lowest index.
-//   A free end where the face touched the edge of the data is forgiven once: the road goes
-//   on beyond the data.
+//   line-graph.ts, with unborn lines in it as the areas they still are). Each piece offers
+//   one: its lines with a free end first (dangling ends; after one goes, the next of its chain
+//   may dangle), then its others, the least important first (length x class weight), then the
+//   lowest index. Of the pieces' offers the least important goes (then the lowest index): the
+//   order within a network keeps it whole, importance weighs networks and classes against
+//   each other. (Dangling ends first across all pieces would keep a lone pond's bank, a closed
+//   ring, over every river that ends somewhere.) A free end where the face touched the edge
+//   of the data is forgiven once: the road goes on beyond the data.
 // - A cut line never goes: pieces shrink but never split, so a class's main network stays
 //   connected while any of it is shown. Every piece has a line that is not a cut (a leaf of
 //   its block tree), but it may be unborn: then the lines shown can stay over budget (counted).
@@ -26,7 +29,7 @@ import type { Style } from '../style.js';
 import type { LineObject } from './collapse-lines.js';
 import { FaceHistory } from './face-history.js';
 import { lineBudget, mapDensity } from './line-budget.js';
-import { cutLines, joinAdjacency } from './line-graph.js';
+import { cutLines, joinAdjacency, lineGraphComponents } from './line-graph.js';
 
 export interface PrunedLine extends LineObject {
   /** The first state without this line: it is on the map at states step <= s < prunedStep. */
@@ -70,6 +73,7 @@ export function pruneOrder(lines: readonly PruneShape[], input: PruneOrderInput)
   });
   let total = 0;
   let cut = cutLines(adj, alive);
+  let piece = lineGraphComponents(adj, alive);
 
   const dangles = (i: number): boolean => {
     let free = 0;
@@ -80,16 +84,17 @@ export function pruneOrder(lines: readonly PruneShape[], input: PruneOrderInput)
   for (let s = 0; s <= top; s++) {
     for (const i of bornAt[s]!) total += lines[i]!.length;
     while (total > input.budget[s]!) {
-      let best = -1, bestDangles = false, bestImportance = Infinity;
+      // Each piece's offer, then the least important offer (lines in index order: ties go low).
+      const offer = new Map<number, { line: number; dangles: boolean }>();
       for (let i = 0; i < n; i++) {
         if (!alive[i] || cut[i] || lines[i]!.step > s) continue;
         const d = dangles(i);
-        const imp = input.importance[i]!;
-        if (best < 0 || (d && !bestDangles) || (d === bestDangles && imp < bestImportance)) {
-          best = i;
-          bestDangles = d;
-          bestImportance = imp;
-        }
+        const o = offer.get(piece[i]!);
+        if (!o || (d && !o.dangles) || (d === o.dangles && input.importance[i]! < input.importance[o.line]!)) offer.set(piece[i]!, { line: i, dangles: d });
+      }
+      let best = -1;
+      for (const { line } of offer.values()) {
+        if (best < 0 || input.importance[line]! < input.importance[best]! || (input.importance[line] === input.importance[best] && line < best)) best = line;
       }
       if (best < 0) {
         stats.statesOverBudget++;
@@ -101,6 +106,7 @@ export function pruneOrder(lines: readonly PruneShape[], input: PruneOrderInput)
       stats.pruned++;
       if (lines[best]!.step === s) stats.prunedAtBirth++;
       cut = cutLines(adj, alive);
+      piece = lineGraphComponents(adj, alive);
     }
   }
   stats.toTop = n - stats.pruned;
