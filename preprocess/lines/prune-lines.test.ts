@@ -72,6 +72,18 @@ test('a spur goes before loop edges, a bridge only once one side is gone, whatev
   }
 });
 
+test('a free end at the edge of the data is no dead end: the spur that leaves the map stays to the last', () => {
+  const lines = handLines(NETWORK_COORDS, NETWORK.map(() => 1));
+  const total = lines.reduce((sum, l) => sum + l.length, 0);
+  const budget = Float64Array.from({ length: 1300 }, (_, s) => Math.max(0, total + 10 - s));
+  const atEdge = NETWORK.map((name) => (name === 'S' ? 1 : 0));
+  const { prunedStep } = pruneOrder(lines, { importance: lines.map((l) => l.length), budget, atEdge });
+  const order = [...NETWORK.keys()].sort((a, b) => prunedStep[a]! - prunedStep[b]!).map((i) => NETWORK[i]);
+  // Nothing dangles at first: loop B's shortest edge goes, B's rest and X dangle in turn. Then
+  // loop A opens at a1; a2, a3, a4 dangle in turn, and S, hanging on a4, is the last line.
+  assert.deepEqual(order, ['b2', 'b3', 'b1', 'X', 'a1', 'a2', 'a3', 'a4', 'S']);
+});
+
 test('between pieces importance decides: a small ring goes before the network\'s spur, a long ring after all of it', () => {
   // Two closed rings apart from the network (no free end): 40 m and 400 m.
   const small = [500, 0, 510, 0, 510, 10, 500, 10, 500, 0];
