@@ -1,6 +1,7 @@
 // How many connected pieces a set of lines forms: polylines that share a point (exactly the
 // same coordinates) are connected. Lines of a network meet at ports, so this counts how far
 // the network has come apart.
+import { pointKey } from './point-uses.js';
 
 /**
  * The piece of every polyline (flat x, y pairs), numbered from 0 in order of first polyline.
@@ -19,7 +20,7 @@ export function pointIds(paths: readonly ArrayLike<number>[]): Int32Array[] {
   return paths.map((p) => {
     const out = new Int32Array(p.length / 2);
     for (let k = 0; k < p.length; k += 2) {
-      const key = `${p[k]},${p[k + 1]}`;
+      const key = pointKey(p[k]!, p[k + 1]!);
       let i = id.get(key);
       if (i === undefined) id.set(key, (i = id.size));
       out[k / 2] = i;

@@ -30,6 +30,7 @@ import type { LineObject } from './collapse-lines.js';
 import { FaceHistory } from './face-history.js';
 import { lineBudget, mapDensity } from './line-budget.js';
 import { cutLines, joinAdjacency, lineGraphComponents } from './line-graph.js';
+import { pointKey, pointUses } from './point-uses.js';
 
 export interface PrunedLine extends LineObject {
   /** The first state without this line: it is on the map at states step <= s < prunedStep. */
@@ -119,17 +120,15 @@ export function pruneOrder(lines: readonly PruneShape[], input: PruneOrderInput)
  * lists the lines joined there; it is free when none of them is alive.
  */
 function lineEnds(l: PruneShape): number[][] {
-  const key = (p: ArrayLike<number>, k: number): string => `${p[k]},${p[k + 1]}`;
-  const uses = new Map<string, number>();
-  for (const p of l.paths) for (let k = 0; k < p.length; k += 2) uses.set(key(p, k), (uses.get(key(p, k)) ?? 0) + 1);
+  const uses = pointUses(l.paths);
   const out: number[][] = [];
   for (const p of l.paths) {
     const n = p.length;
     if (n < 4) continue;
     for (const k of [0, n - 2]) {
-      const at = key(p, k);
+      const at = pointKey(p[k]!, p[k + 1]!);
       if (uses.get(at) !== 1) continue;
-      out.push(l.joins.filter((j) => j.line >= 0 && `${j.x},${j.y}` === at).map((j) => j.line));
+      out.push(l.joins.filter((j) => j.line >= 0 && pointKey(j.x, j.y) === at).map((j) => j.line));
     }
   }
   return out;
