@@ -134,6 +134,11 @@ test('bgt_otterlo_400m: simplified lines touch no line or face boundary their fu
     const shown = lines.map((l, i) => ({ l, i })).filter(({ l }) => l.step <= s && l.prunedStep > s);
     const before = segmentsOf(shown.map(({ l, i }) => ({ owner: i, paths: l.paths })));
     const after = segmentsOf(shown.map(({ l, i }) => ({ owner: i, paths: linePathsAt(l, s) })));
+    // Lines still meet: every join is a point of the simplified line.
+    for (const { l } of shown) {
+      const points = new Set(linePathsAt(l, s).flatMap((p) => Array.from({ length: p.length / 2 }, (_, k) => `${p[2 * k]},${p[2 * k + 1]}`)));
+      for (const j of l.joins) assert.ok(points.has(`${j.x},${j.y}`), `state ${s}, face ${l.face}: join (${j.x}, ${j.y}) lost`);
+    }
     full += before.owner.length;
     kept += after.owner.length;
     const edges = segmentsOf(tgap.edges.flatMap((e, i) => (e.stepLow <= s && e.stepHigh > s ? [{ owner: i, paths: [Array.from(e.verts, (v) => [tgap.xs[v]!, tgap.ys[v]!]).flat()] }] : [])));
