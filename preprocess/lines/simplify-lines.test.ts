@@ -60,6 +60,7 @@ test('a vertex goes at the first state its triangle is under the threshold, afte
     [1, [0, 0, 20, 0, 30, 2.5, 50, 0]],
     [3, [0, 0, 30, 2.5, 50, 0]],
   ]);
+  assert.throws(() => simplifyLines([line(pts, 1, 4), line(pts, 2, 9)], handTgap([])), /line 1 \(face 1, feature #-1\): its range \[2, 9\) is not a range of states of the tGAP \(0\.\.4\)/);
   // A line pruned at state 3 keeps P2: the removal would come when it is gone.
   assert.deepEqual([...simplifyLines([line(pts, 1, 3)], handTgap([])).lines[0]!.vertexEnd[0]!], [3, 1, 3, 3, 3]);
 });

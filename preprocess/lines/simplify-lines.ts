@@ -49,6 +49,11 @@ export function areaThresholds(tgap: Tgap): Float64Array {
 export function simplifyLines(lines: readonly PrunedLine[], tgap: Tgap): { lines: SimplifiedLine[]; stats: SimplifyStats } {
   const thr = areaThresholds(tgap);
   const top = thr.length - 1;
+  lines.forEach((l, i) => {
+    if (!(Number.isInteger(l.prunedStep) && l.step <= l.prunedStep && l.prunedStep <= top + 1)) {
+      throw new Error(`line ${i} (face ${l.face}, feature #${l.feature}): its range [${l.step}, ${l.prunedStep}) is not a range of states of the tGAP (0..${top + 1})`);
+    }
+  });
   /** The first state >= from whose threshold is above `area` (top + 1: none). */
   const stateFor = (area: number, from: number): number => {
     let lo = Math.max(0, from), hi = top + 1;
