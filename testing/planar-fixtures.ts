@@ -32,6 +32,20 @@ export const SMALL_BETWEEN_TWO: FixtureFace[] = [
   { cls: 'y', rings: [[[6, 1], [7, 1], [7, 0], [10, 0], [10, 4], [6, 4]]] },
 ];
 
+/**
+ * A T of three roads among fields (drawn in preprocess/lines/collapse-lines.test.ts): road A =
+ * [-50,0] x [0,6], road B = [0,50] x [0,6], road C = [-3,3] x [-50,0] (faces 1-3, class road),
+ * fields above and on either side of C (faces 4-6, class field).
+ */
+export const ROAD_T: FixtureFace[] = [
+  { cls: 'road', rings: [rect(-50, 0, 0, 6)] },
+  { cls: 'road', rings: [rect(0, 0, 50, 6)] },
+  { cls: 'road', rings: [[[-3, -50], [3, -50], [3, 0], [0, 0], [-3, 0]]] },
+  { cls: 'field', rings: [rect(-50, 6, 50, 30)] },
+  { cls: 'field', rings: [[[-50, -50], [-3, -50], [-3, 0], [-50, 0]]] },
+  { cls: 'field', rings: [[[3, -50], [50, -50], [50, 0], [3, 0]]] },
+];
+
 export function topologyOf(faces: FixtureFace[]): Topology {
   const features: InputFeature[] = faces.map((f, index) => ({
     ref: { index, id: null },

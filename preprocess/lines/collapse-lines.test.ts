@@ -14,17 +14,8 @@ import { EventKind, resolveFace, type Tgap } from '../../format/tgap-model.js';
 import { generalizeFile } from '../pipeline.js';
 import { loadStyle } from '../style.js';
 import { dataset, styleFile } from '../../testing/paths.js';
-import { fixtureStyle, fixtureTgap, rect, type FixtureFace } from '../../testing/planar-fixtures.js';
+import { fixtureStyle, fixtureTgap, ROAD_T } from '../../testing/planar-fixtures.js';
 import { collapseLines, type LineObject } from './collapse-lines.js';
-
-const T_FACES: FixtureFace[] = [
-  { cls: 'road', rings: [rect(-50, 0, 0, 6)] },
-  { cls: 'road', rings: [rect(0, 0, 50, 6)] },
-  { cls: 'road', rings: [[[-3, -50], [3, -50], [3, 0], [0, 0], [-3, 0]]] },
-  { cls: 'field', rings: [rect(-50, 6, 50, 30)] },
-  { cls: 'field', rings: [[[-50, -50], [-3, -50], [-3, 0], [-50, 0]]] },
-  { cls: 'field', rings: [[[3, -50], [50, -50], [50, 0], [3, 0]]] },
-];
 
 const keysOf = (l: LineObject): Set<string> => {
   const out = new Set<string>();
@@ -38,7 +29,7 @@ const share = (a: LineObject, b: LineObject): boolean => {
 
 test('three roads of a T collapse one after another into lines that meet exactly, one network', () => {
   const style = fixtureStyle([{ key: 'road', linear: true }, { key: 'field', weight: 4 }]);
-  const tgap = fixtureTgap(T_FACES, ['road', 'field'], style);
+  const tgap = fixtureTgap(ROAD_T, ['road', 'field'], style);
   const { lines, stats } = collapseLines(tgap, style);
   assert.deepEqual(lines.map((l) => l.face).sort(), [1, 2, 3], 'each road became a line');
   assert.equal(stats.linearSplits, 3);
