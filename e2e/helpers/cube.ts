@@ -63,13 +63,16 @@ export async function cpuSlice(cubeDir: string, a: SliceArgs): Promise<Uint32Arr
   }
 }
 
-/** The CPU slicer run here: face ids and the z each pixel shows (-Infinity: none), rows from the top; and the slicing surface's z. */
-export async function cpuSliceWithZ(cubeDir: string, a: SliceArgs): Promise<{ ids: Uint32Array; z: Float64Array; zMax: number; sliceZ: (x: number, y: number) => number }> {
+/**
+ * The CPU slicer run here: per pixel (rows from the top) the face, the z of the surface shown
+ * (-Infinity: none) and the face below it; and the slicing surface's z.
+ */
+export async function cpuSliceWithZ(cubeDir: string, a: SliceArgs): Promise<{ ids: Uint32Array; z: Float64Array; lower: Uint32Array; zMax: number; sliceZ: (x: number, y: number) => number }> {
   const cube = await CubeReader.open(cubeDir);
   const meta = cube.index.meta;
   const surface: Surface = { base: a.step ?? zAtScale(meta, a.scale!), spec: a.surface ? parseSurface(a.surface) : { kind: 'flat' } };
   const { slicer } = await sliceCube(cube, meta.zMax, fitView(meta.extent, a.width, a.height, a.bbox), surface);
-  return { ids: slicer.ids, z: slicer.depth, zMax: meta.zMax, sliceZ: (x, y) => surfaceZ(surface, x, y, meta.zMax) };
+  return { ids: slicer.ids, z: slicer.depth, lower: slicer.lower, zMax: meta.zMax, sliceZ: (x, y) => surfaceZ(surface, x, y, meta.zMax) };
 }
 
 export interface CubeContents {
