@@ -1,4 +1,4 @@
-// What the user sees and picks, in real Chromium on a real cube of bgt_otterlo_400m: class
+// What the user sees and picks, in real Chromium on real cubes of bgt_otterlo_400m: class
 // colours and patterns, near-intersection blending, face boundaries, supersampling, picking
 // (by a real click too), device pixel ratio and resize, a lost and restored WebGL context, and
 // the message where WebGL2 is missing.
@@ -16,7 +16,10 @@ import type { TestServer } from './helpers/test-server.js';
 
 const W = 640, H = 480;
 
-describe('rendering and picking (bgt_otterlo_400m)', () => {
+// Blending and supersampling depend on how the cube's surfaces lie in z: they run on the smooth
+// cube (the default; tilted surfaces, z per vertex) and on the classic one (ssc build --classic,
+// every surface horizontal). The other checks do not, and run on the smooth cube only.
+for (const classic of [false, true]) describe(`rendering and picking (bgt_otterlo_400m, ${classic ? 'classic' : 'smooth'} cube)`, () => {
   let cube: BuiltCube;
   let contents: CubeContents;
   let server: TestServer;
@@ -26,10 +29,7 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
   let background: [number, number, number];
 
   before(async () => {
-    // The classic cube: these checks derive each pixel's expected colour from one z per
-    // triangle. On the smooth cube the blending colours and the supersampled edges do not yet
-    // match them exactly (issue 11 item 6, open); GPU = CPU on it is slice-accuracy.test.ts's.
-    ({ cube, contents, server, browser } = await setUpTestBed(['--classic']));
+    ({ cube, contents, server, browser } = await setUpTestBed(classic ? ['--classic'] : []));
     classColours = contents.meta.style.classes.map((c) => hexColour(c.color));
     background = hexColour(contents.meta.style.background);
   });
@@ -43,8 +43,18 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
     await tearDownTestBed({ cube, server, browser });
   });
 
+  const smoothOnly = (name: string, fn: () => Promise<void>): void => {
+    if (!classic) test(name, fn);
+  };
   const ext = (): Bbox => contents.meta.extent;
   const info = () => contents.meta;
+
+  /** The colours a class may show at slice z: its fill, and its pattern's colour within the pattern's scale range. */
+  function coloursAt(cls: number, z: number): [number, number, number][] {
+    const p = contents.meta.style.classes[cls]!.pattern;
+    const inRange = p && (p.minScale === undefined || z >= zAtScale(info(), p.minScale)) && (p.maxScale === undefined || z <= zAtScale(info(), p.maxScale));
+    return inRange ? [classColours[cls]!, hexColour(p.color)] : [classColours[cls]!];
+  }
 
   async function open(params: Record<string, string | number>, opts: OpenOptions = {}): Promise<MapPage> {
     mp = await openMap(browser, server.url, { source: 'cube/', supersampling: 1, ...params }, opts);
@@ -66,7 +76,7 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
     return out;
   }
 
-  test('every pixel shows the class colour of its face, or the background outside the cube', async () => {
+  smoothOnly('every pixel shows the class colour of its face, or the background outside the cube', async () => {
     // At this level of detail (about 1:4000) the style's patterns (up to 1:2500) are off.
     const p = await open({ z: 410 });
     assert.equal(await waitIdle(p.page), true);
@@ -85,7 +95,7 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
     assert.ok(classesSeen.size >= 4, `${classesSeen.size} classes on screen`);
   });
 
-  test('class patterns show only within their scale range', async () => {
+  smoothOnly('class patterns show only within their scale range', async () => {
     const vegetated = contents.meta.style.classes.findIndex((c) => c.key === 'begroeidterreindeel');
     const pat = contents.meta.style.classes[vegetated]!.pattern!;
     assert.ok(pat && pat.maxScale, 'the style gives vegetated terrain a pattern up to a scale');
@@ -135,24 +145,36 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
     assert.ok(diff.size > 200, `${diff.size} pixels blended`);
     assert.ok(near < W * H * 0.5, 'most of the map is far from a boundary in scale');
     assert.equal(outside, 0, `${outside} of ${diff.size} changed pixels have no boundary within ${c} steps below`);
-    // And the colour is the mix the definition gives: mix(colour(lower), colour(upper), d / c).
-    let checked = 0;
+    // And the colour is the mix the definition gives: mix(colour(lower), colour(upper), d / c),
+    // d the distance from the slice down to the surface at the pixel (on a tilted surface, where
+    // the slice meets the plane through its vertices: the z read back, which slice-accuracy
+    // checks against the CPU slicer, as the face below). A class's colour is its fill or, within its pattern's
+    // scale range (vegetated terrain's dots are on at this z), the pattern's colour where the
+    // pattern covers the pixel: either is accepted, for each face.
+    let checked = 0, worst = 0;
     for (const k of diff) {
       const d = ids.slice[k]! - ids.z[k]!;
-      const up = classColours[idsClass(ids, k)]!, lo = classColours[(ids.classes[k]! >>> 16) & 0xffff];
-      if (!lo || d >= c) continue;
-      const want = up.map((u, q) => Math.round(lo[q]! + (u - lo[q]!) * (d / c)));
+      const lower = (ids.classes[k]! >>> 16) & 0xffff;
+      if (lower >= classColours.length || d >= c) continue;
       const got = pixel(blended, k % W, Math.floor(k / W));
-      for (let q = 0; q < 3; q++) assert.ok(Math.abs(got[q]! - want[q]!) <= 1, `pixel ${k}: ${got} != ${want} (d ${d})`);
-      if (++checked >= 200) break;
+      let error = Infinity;
+      for (const up of coloursAt(idsClass(ids, k), ids.slice[k]!)) {
+        for (const lo of coloursAt(lower, ids.slice[k]!)) {
+          const want = up.map((u, q) => Math.round(lo[q]! + (u - lo[q]!) * (d / c)));
+          error = Math.min(error, Math.max(...want.map((w, q) => Math.abs(got[q]! - w))));
+        }
+      }
+      assert.ok(error <= 1, `pixel (${k % W},${Math.floor(k / W)}): ${got} is ${error} levels off the mix at d ${d}`);
+      worst = Math.max(worst, error);
+      checked++;
     }
-    assert.ok(checked >= 50);
+    assert.ok(checked >= 50, `${checked} blended pixels checked (worst ${worst} levels off)`);
     // 'moving' blends only while the slice moves: at rest it is the plain map.
     await set(p, `map.setBlending({ mode: 'moving' })`);
     assert.equal(changed(plain, await screenshot(p.page)).size, 0);
   });
 
-  test('face boundaries are drawn exactly where the face id changes, in CSS pixel widths', async () => {
+  smoothOnly('face boundaries are drawn exactly where the face id changes, in CSS pixel widths', async () => {
     const p = await open({ z: 200 });
     assert.equal(await waitIdle(p.page), true);
     const plain = await screenshot(p.page);
@@ -187,6 +209,8 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
     // Changes belong next to an id change (or the image border, beyond which the jittered
     // samples see what lies outside). A few elsewhere are sub-pixel details the centre misses
     // (a wall thinner than a pixel, a sliver): at most one in a thousand changed pixels.
+    // Measured: 3 of about 15,000 on either cube (a smooth cube that left losers' slivers
+    // narrower than a pixel inside winners had 27; the CPU slicer showed them too).
     const off = [...diff].filter((k) => {
       const i = k % W, j = Math.floor(k / W);
       return i > 0 && j > 0 && i < W - 1 && j < H - 1 && !onFaceBoundary(ids.upper, k);
@@ -194,7 +218,7 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
     assert.ok(off.length <= Math.max(10, diff.size / 1000), `${off.length} of ${diff.size} changed pixels away from edges: ${off.slice(0, 10).map((k) => `(${k % W},${Math.floor(k / W)})`).join(' ')}`);
   });
 
-  test('picking returns the face under the pointer, with its class, attributes and steps', async () => {
+  smoothOnly('picking returns the face under the pointer, with its class, attributes and steps', async () => {
     const z = 90;
     const p = await open({ z });
     assert.equal(await waitIdle(p.page), true);
@@ -234,7 +258,7 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
     assert.match(text, new RegExp(`face ${ref[cj * W + ci]}\\b`));
   });
 
-  test('a device pixel ratio of 2 draws every device pixel, and picking maps CSS pixels', async () => {
+  smoothOnly('a device pixel ratio of 2 draws every device pixel, and picking maps CSS pixels', async () => {
     const z = 120;
     const p = await open({ z }, { width: 320, height: 240, deviceScaleFactor: 2 });
     assert.equal(await waitIdle(p.page), true);
@@ -251,7 +275,7 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
     }
   });
 
-  test('a resized container gets a map of its new size', async () => {
+  smoothOnly('a resized container gets a map of its new size', async () => {
     const z = 60;
     const p = await open({ z });
     assert.equal(await waitIdle(p.page), true);
@@ -264,7 +288,7 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
     assert.ok(compareIds(ids.upper, ref, 500, 300).share >= 0.995);
   });
 
-  test('a lost WebGL context is restored without reloading, with the same picture', async () => {
+  smoothOnly('a lost WebGL context is restored without reloading, with the same picture', async () => {
     const p = await open({ z: 180, supersampling: 8 });
     assert.equal(await waitIdle(p.page), true);
     const before = await screenshot(p.page);
@@ -278,7 +302,7 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
     assert.ok(new Set(idsAfter.upper).size > 20);
   });
 
-  test('without float render targets the surface is computed on the CPU, with the same slices', async () => {
+  smoothOnly('without float render targets the surface is computed on the CPU, with the same slices', async () => {
     // Some WebGL2 devices cannot render to float textures (no EXT_color_buffer_float).
     const noFloat = `(() => { const get = WebGL2RenderingContext.prototype.getExtension; WebGL2RenderingContext.prototype.getExtension = function (n) { return n === 'EXT_color_buffer_float' ? null : get.call(this, n); }; })()`;
     const z = 220, spec = 'sine:amplitude=150,wavelength=130,angle=30';
@@ -298,7 +322,7 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
     assert.ok(lo >= z - 150 - 1e-3 && hi <= z + 150 + 1e-3 && hi - lo > 250, `slice z from ${lo} to ${hi}`);
   });
 
-  test('without WebGL2 the container says so', async () => {
+  smoothOnly('without WebGL2 the container says so', async () => {
     const p = await open({}, { initScript: `(() => { const get = HTMLCanvasElement.prototype.getContext; HTMLCanvasElement.prototype.getContext = function (t, ...a) { return t === 'webgl2' ? null : get.call(this, t, ...a); }; })()` });
     await p.page.waitForSelector('.ssc-no-webgl2');
     const text = await p.page.textContent('.ssc-no-webgl2');
@@ -307,7 +331,7 @@ describe('rendering and picking (bgt_otterlo_400m)', () => {
   });
 
   // z and scale agree with the shared definitions (a sanity check of the test's own numbers).
-  test('the scale of the default view and its z are consistent', async () => {
+  smoothOnly('the scale of the default view and its z are consistent', async () => {
     const p = await open({});
     assert.equal(await waitIdle(p.page), true);
     const [scale, z] = await p.page.evaluate(() => [map.getScaleDenominator(), map.getSliceZ()]);

@@ -1,7 +1,11 @@
 #version 300 es
 // Colour pass: from the ID buffer to colours. Per pixel the upper face's class colour (and its
 // pattern within the pattern's z range); near-intersection blending toward the face below when
-// the surface is less than uBlendDistance under the slice; face boundaries where the face id
+// the surface is less than uBlendDistance under the slice (d = slice z - surface z at this
+// pixel: on a tilted surface of the smooth cube, the z of its plane here as the ID pass
+// interpolated it from the vertices, so the blend fades in across the surface toward where the
+// slice meets it; the face below is the triangle's lower face, the one the surface replaces,
+// e.g. a merge's loser); face boundaries where the face id
 // changes between neighbouring pixels; last the paint of faces whose feature state has hover or
 // highlight, on their own pixels only (a fill, and an outline just inside the face's edge).
 precision highp float;

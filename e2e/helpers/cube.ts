@@ -1,5 +1,6 @@
 // Real cubes for the browser tests (`ssc build` of a dataset into a temporary directory) and
-// the CPU reference slicer (`ssc slice --ids`), the oracle of the GPU's ID buffer.
+// the CPU reference slicer (`ssc slice --ids`, or in this process with the z of each pixel), the
+// oracle of the GPU's ID buffer.
 import { execFile } from 'node:child_process';
 import { mkdtemp, readFile, rm } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
@@ -8,6 +9,11 @@ import { promisify } from 'node:util';
 import { decodeChunk } from '../../format/chunk.js';
 import { parseIndex, parseSubIndex, type ChunkLeaf, type CubeMeta, type InnerNode } from '../../format/cube-index.js';
 import { queryIndex } from '../../format/index-query.js';
+import { zAtScale } from '../../format/scale.js';
+import { parseSurface, surfaceZ, type Surface } from '../../format/slicing-surface.js';
+import { sliceCube } from '../../preprocess/commands/slice-cube.js';
+import { fitView } from '../../preprocess/map/rasterize.js';
+import { CubeReader } from '../../preprocess/ssc/read-cube.js';
 import { dataset, repoRoot, styleFile } from '../../testing/paths.js';
 
 const run = promisify(execFile);
@@ -57,6 +63,18 @@ export async function cpuSlice(cubeDir: string, a: SliceArgs): Promise<Uint32Arr
   }
 }
 
+/**
+ * The CPU slicer run here: per pixel (rows from the top) the face, the z of the surface shown
+ * (-Infinity: none) and the face below it; and the slicing surface's z.
+ */
+export async function cpuSliceWithZ(cubeDir: string, a: SliceArgs): Promise<{ ids: Uint32Array; z: Float64Array; lower: Uint32Array; zMax: number; sliceZ: (x: number, y: number) => number }> {
+  const cube = await CubeReader.open(cubeDir);
+  const meta = cube.index.meta;
+  const surface: Surface = { base: a.step ?? zAtScale(meta, a.scale!), spec: a.surface ? parseSurface(a.surface) : { kind: 'flat' } };
+  const { slicer } = await sliceCube(cube, meta.zMax, fitView(meta.extent, a.width, a.height, a.bbox), surface);
+  return { ids: slicer.ids, z: slicer.depth, lower: slicer.lower, zMax: meta.zMax, sliceZ: (x, y) => surfaceZ(surface, x, y, meta.zMax) };
+}
+
 export interface CubeContents {
   meta: CubeMeta;
   leaves: ChunkLeaf[];
@@ -78,8 +96,8 @@ export async function readCube(cubeDir: string): Promise<CubeContents> {
   return { meta: index.meta, leaves: q.leaves, subIndexFiles: [...subs.keys()], root: index.root, subs };
 }
 
-/** Every triangle of a cube as ground coordinates (x, y per corner, 6 numbers each). */
-export async function cubeTriangles(cubeDir: string): Promise<Float64Array> {
+/** Every triangle of a cube, x, y and z of each corner in ground coordinates, found by place. */
+export async function cubeTriangles(cubeDir: string): Promise<CubeTriangles> {
   const { leaves } = await readCube(cubeDir);
   const out: number[] = [];
   for (const leaf of leaves) {
@@ -87,10 +105,10 @@ export async function cubeTriangles(cubeDir: string): Promise<Float64Array> {
     const p = c.positions;
     for (let k = 0; k < c.indices.length; k++) {
       const v = c.indices[k]!;
-      out.push(c.originX + p[3 * v]!, c.originY + p[3 * v + 1]!);
+      out.push(c.originX + p[3 * v]!, c.originY + p[3 * v + 1]!, p[3 * v + 2]!);
     }
   }
-  return Float64Array.from(out);
+  return new CubeTriangles(Float64Array.from(out));
 }
 
 function segmentDistance(px: number, py: number, ax: number, ay: number, bx: number, by: number): number {
@@ -100,32 +118,76 @@ function segmentDistance(px: number, py: number, ax: number, ay: number, bx: num
   return Math.hypot(px - (ax + t * dx), py - (ay + t * dy));
 }
 
-/** True when (x, y) lies within `tol` (ground units) of an edge of one of the triangles. */
-export function nearTriangleEdge(tris: Float64Array, x: number, y: number, tol: number): boolean {
-  for (let t = 0; t < tris.length; t += 6) {
-    const ax = tris[t]!, ay = tris[t + 1]!, bx = tris[t + 2]!, by = tris[t + 3]!, cx = tris[t + 4]!, cy = tris[t + 5]!;
-    if (x < Math.min(ax, bx, cx) - tol || x > Math.max(ax, bx, cx) + tol || y < Math.min(ay, by, cy) - tol || y > Math.max(ay, by, cy) + tol) continue;
-    if (segmentDistance(x, y, ax, ay, bx, by) <= tol || segmentDistance(x, y, bx, by, cx, cy) <= tol || segmentDistance(x, y, cx, cy, ax, ay) <= tol) return true;
-  }
-  return false;
+/** A triangle's plane at a point over it: z there and |grad z| (steps per ground unit). */
+export interface PlaneAt {
+  z: number;
+  slope: number;
 }
 
-/**
- * True when (x, y) lies inside a triangle narrower than `width` (ground units; its smallest
- * altitude): a GPU rasterizes such a needle at its sub-pixel precision all along its length,
- * so a pixel well inside it by the CPU's exact test may still be left to the surface below.
- */
-export function inSliverTriangle(tris: Float64Array, x: number, y: number, width: number): boolean {
-  for (let t = 0; t < tris.length; t += 6) {
-    const ax = tris[t]!, ay = tris[t + 1]!, bx = tris[t + 2]!, by = tris[t + 3]!, cx = tris[t + 4]!, cy = tris[t + 5]!;
-    if (x < Math.min(ax, bx, cx) || x > Math.max(ax, bx, cx) || y < Math.min(ay, by, cy) || y > Math.max(ay, by, cy)) continue;
-    const d1 = (bx - ax) * (y - ay) - (by - ay) * (x - ax), d2 = (cx - bx) * (y - by) - (cy - by) * (x - bx), d3 = (ax - cx) * (y - cy) - (ay - cy) * (x - cx);
-    if (!((d1 >= 0 && d2 >= 0 && d3 >= 0) || (d1 <= 0 && d2 <= 0 && d3 <= 0))) continue;
-    const area2 = Math.abs((bx - ax) * (cy - ay) - (cx - ax) * (by - ay));
-    const longest = Math.max(Math.hypot(bx - ax, by - ay), Math.hypot(cx - bx, cy - by), Math.hypot(ax - cx, ay - cy));
-    if (area2 / longest < width) return true;
+/** Triangles (9 numbers each: x, y, z per corner) in a grid of square cells, to ask about a point. */
+export class CubeTriangles {
+  private readonly cells = new Map<string, number[]>();
+  private readonly cell: number;
+
+  constructor(readonly data: Float64Array) {
+    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+    for (let t = 0; t < data.length; t += 3) {
+      x0 = Math.min(x0, data[t]!); x1 = Math.max(x1, data[t]!);
+      y0 = Math.min(y0, data[t + 1]!); y1 = Math.max(y1, data[t + 1]!);
+    }
+    // About 64 x 64 cells over the extent.
+    this.cell = Math.max(x1 - x0, y1 - y0, 1) / 64;
+    for (let t = 0; t < data.length; t += 9) {
+      const [i0, j0] = this.key(Math.min(data[t]!, data[t + 3]!, data[t + 6]!), Math.min(data[t + 1]!, data[t + 4]!, data[t + 7]!));
+      const [i1, j1] = this.key(Math.max(data[t]!, data[t + 3]!, data[t + 6]!), Math.max(data[t + 1]!, data[t + 4]!, data[t + 7]!));
+      for (let i = i0; i <= i1; i++) {
+        for (let j = j0; j <= j1; j++) {
+          const list = this.cells.get(`${i},${j}`);
+          if (list) list.push(t);
+          else this.cells.set(`${i},${j}`, [t]);
+        }
+      }
+    }
   }
-  return false;
+
+  private key(x: number, y: number): [number, number] {
+    return [Math.floor(x / this.cell), Math.floor(y / this.cell)];
+  }
+
+  /** Offsets of the triangles whose boxes, grown by tol, may hold (x, y). */
+  private near(x: number, y: number, tol: number): Set<number> {
+    const out = new Set<number>();
+    const [i0, j0] = this.key(x - tol, y - tol), [i1, j1] = this.key(x + tol, y + tol);
+    for (let i = i0; i <= i1; i++) for (let j = j0; j <= j1; j++) for (const t of this.cells.get(`${i},${j}`) ?? []) out.add(t);
+    return out;
+  }
+
+  /** True when (x, y) lies within `tol` (ground units) of an edge of a triangle. */
+  nearEdge(x: number, y: number, tol: number): boolean {
+    const d = this.data;
+    for (const t of this.near(x, y, tol)) {
+      const ax = d[t]!, ay = d[t + 1]!, bx = d[t + 3]!, by = d[t + 4]!, cx = d[t + 6]!, cy = d[t + 7]!;
+      if (x < Math.min(ax, bx, cx) - tol || x > Math.max(ax, bx, cx) + tol || y < Math.min(ay, by, cy) - tol || y > Math.max(ay, by, cy) + tol) continue;
+      if (segmentDistance(x, y, ax, ay, bx, by) <= tol || segmentDistance(x, y, bx, by, cx, cy) <= tol || segmentDistance(x, y, cx, cy, ax, ay) <= tol) return true;
+    }
+    return false;
+  }
+
+  /** The planes of the upward triangles over (x, y): z from their corners' z, as the slicers take it. */
+  planesAt(x: number, y: number): PlaneAt[] {
+    const d = this.data;
+    const out: PlaneAt[] = [];
+    for (const t of this.near(x, y, 0)) {
+      const ax = d[t]!, ay = d[t + 1]!, az = d[t + 2]!, bx = d[t + 3]!, by = d[t + 4]!, bz = d[t + 5]!, cx = d[t + 6]!, cy = d[t + 7]!, cz = d[t + 8]!;
+      const area = (bx - ax) * (cy - ay) - (cx - ax) * (by - ay);
+      if (!(area > 0)) continue;
+      const w0 = ((bx - x) * (cy - y) - (cx - x) * (by - y)) / area, w1 = ((cx - x) * (ay - y) - (ax - x) * (cy - y)) / area, w2 = 1 - w0 - w1;
+      if (w0 < 0 || w1 < 0 || w2 < 0) continue;
+      const gx = ((bz - az) * (cy - ay) - (cz - az) * (by - ay)) / area, gy = ((cz - az) * (bx - ax) - (bz - az) * (cx - ax)) / area;
+      out.push({ z: w0 * az + w1 * bz + w2 * cz, slope: Math.hypot(gx, gy) });
+    }
+    return out;
+  }
 }
 
 export interface Comparison {
@@ -134,7 +196,7 @@ export interface Comparison {
   share: number;
   /** Differing pixels on a face boundary of the reference (a differing id among their 8 neighbours). */
   onFaceBoundary: number;
-  /** Differing pixels whose centre is within the sub-pixel tolerance of a triangle edge, or inside a needle narrower than a pixel. */
+  /** Differing pixels the caller's `nearEdge` explains (sub-pixel precision). */
   subPixel: number;
   /** Differing pixels that are neither. */
   unexplained: number;

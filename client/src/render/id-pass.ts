@@ -1,8 +1,10 @@
 // ID pass: every chunk's triangles into the ID targets; per pixel the nearest surface at or
-// below the slicing surface wins (discard above, depth = distance below).
+// below the slicing surface wins (discard above, depth = distance below), its z taken where the
+// pixel centre meets the plane through the triangle's vertices (id.vert, id.frag).
 import { mat4 } from 'gl-matrix';
 import idFrag from '../../shaders/id.frag?raw';
 import idVert from '../../shaders/id.vert?raw';
+import type { Surface } from '../../../format/slicing-surface.js';
 import type { ViewGeometry } from '../geometry/view.js';
 import type { GpuChunk } from './gpu-chunk.js';
 import { Program } from './program.js';
@@ -21,10 +23,11 @@ export class IdPass {
   }
 
   /**
-   * Draws the chunks; `jitter` shifts the image by a fraction of a pixel (supersampling).
-   * Returns the triangles submitted.
+   * Draws the chunks sliced by `surface` (whose z per pixel is in the surface target);
+   * `jitter` shifts the image by a fraction of a pixel (supersampling). Returns the triangles
+   * submitted.
    */
-  draw(targets: Targets, view: ViewGeometry, chunks: Iterable<GpuChunk>, depthRange: number, jitter: [number, number]): number {
+  draw(targets: Targets, view: ViewGeometry, chunks: Iterable<GpuChunk>, surface: Surface, zMax: number, jitter: [number, number]): number {
     const gl = this.gl;
     const p = this.program;
     const hw = (view.width * view.resolution) / 2, hh = (view.height * view.resolution) / 2;
@@ -47,7 +50,10 @@ export class IdPass {
     gl.activeTexture(gl.TEXTURE0);
     gl.bindTexture(gl.TEXTURE_2D, targets.surface);
     gl.uniform1i(p.loc('uSurface'), 0);
-    gl.uniform1f(p.loc('uDepthScale'), 1 / depthRange);
+    gl.uniform1f(p.loc('uDepthScale'), 1 / (zMax + 1));
+    // z is interpolated relative to the surface's base z too (id.frag says why), clamped as
+    // surface.frag clamps it: a flat slice less uZRef is then 0 exactly.
+    gl.uniform1f(p.loc('uZRef'), Math.min(Math.max(surface.base, 0), zMax));
     const uMatrix = p.loc('uMatrix');
     let triangles = 0;
     for (const c of chunks) {
