@@ -77,6 +77,20 @@ function columnViews(buf: ArrayBufferLike, base: number, L: number, P: number, V
   };
 }
 
+/** The ground box x0, y0, x1, y1 of polylines given as flat x, y pairs. */
+export function groundBox(paths: readonly Float64Array[]): [number, number, number, number] {
+  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+  for (const p of paths) {
+    for (let i = 0; i < p.length; i += 2) {
+      x0 = Math.min(x0, p[i]!);
+      x1 = Math.max(x1, p[i]!);
+      y0 = Math.min(y0, p[i + 1]!);
+      y1 = Math.max(y1, p[i + 1]!);
+    }
+  }
+  return [x0, y0, x1, y1];
+}
+
 /** The chunk's bytes and its box in ground units (for the index). */
 export function encodeLineChunk(lines: readonly LineRecord[]): { bytes: Uint8Array; bbox: Box3 } {
   if (lines.length === 0) throw new Error('a line chunk needs at least one line');
@@ -89,13 +103,12 @@ export function encodeLineChunk(lines: readonly LineRecord[]): { bytes: Uint8Arr
     l.paths.forEach((p, k) => {
       if (p.length < 4 || l.leaveZ[k]!.length !== p.length / 2) throw new Error(`a line of class ${l.classIndex}, feature #${l.feature}: polyline ${k} needs two points or more and a leave z per point`);
       V += p.length / 2;
-      for (let i = 0; i < p.length; i += 2) {
-        x0 = Math.min(x0, p[i]!);
-        x1 = Math.max(x1, p[i]!);
-        y0 = Math.min(y0, p[i + 1]!);
-        y1 = Math.max(y1, p[i + 1]!);
-      }
     });
+    const g = groundBox(l.paths);
+    x0 = Math.min(x0, g[0]);
+    y0 = Math.min(y0, g[1]);
+    x1 = Math.max(x1, g[2]);
+    y1 = Math.max(y1, g[3]);
   }
   const L = lines.length;
   // A whole-unit origin, as surface chunks have: exact in float64, positions within the chunk's size.
