@@ -3,7 +3,7 @@
 // the vertices gone by then, and a damaged file is refused with a message saying what is wrong.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { decodeLineChunk, encodeLineChunk, lineAliveAt, lineOfChunk, linePathsAtZ, type LineRecord } from './line-chunk.js';
+import { decodeLineChunk, encodeLineChunk, lineAliveAt, lineOfChunk, linePathsAtZ, lineSegments, type LineRecord } from './line-chunk.js';
 import { FormatError } from './format-error.js';
 
 /** A road of two polylines (a T: 3 + 2 points) and a brook of one (3 points). */
@@ -64,6 +64,30 @@ describe('line chunk file', () => {
     assert.deepEqual(linePathsAtZ(road, 20).map((p) => [...p]), [[181000.5, 457000.25, 181010.5, 457000.25, 181020.5, 457000.25], [181010.5, 457000.25, 181010.5, 457030.75]]);
     assert.deepEqual(linePathsAtZ(road, 20.125)[0], Float64Array.of(181000.5, 457000.25, 181020.5, 457000.25), 'the middle vertex has gone');
     assert.deepEqual(linePathsAtZ(brook, 12), [], 'pruned');
+  });
+
+  test('segments with their z ranges: at every z, the segments of the polylines at that z', () => {
+    const [road, brook] = lines() as [LineRecord, LineRecord];
+    const seg = (ax: number, ay: number, bx: number, by: number, z0: number, z1: number): object => ({ ax, ay, bx, by, z0, z1 });
+    assert.deepEqual(lineSegments(road), [
+      seg(181000.5, 457000.25, 181010.5, 457000.25, 10.5, 20.125),
+      seg(181000.5, 457000.25, 181020.5, 457000.25, 20.125, 40.25),
+      seg(181010.5, 457000.25, 181020.5, 457000.25, 10.5, 20.125),
+      seg(181010.5, 457000.25, 181010.5, 457030.75, 10.5, 40.25),
+    ]);
+    // A line whose vertices leave one after another, checked at many z against linePathsAtZ.
+    const zig: LineRecord = {
+      classIndex: 0, feature: 0, zStart: 1, zEnd: 9,
+      paths: [Float64Array.from({ length: 14 }, (_, i) => (i % 2 === 0 ? i : (i % 4) * 3))],
+      leaveZ: [Float64Array.of(9, 4, 2, 6, 3, 5, 9)],
+    };
+    for (const l of [road, brook, zig]) {
+      for (let z = 0; z < 42; z += 0.25) {
+        const want = linePathsAtZ(l, z).flatMap((p) => Array.from({ length: p.length / 2 - 1 }, (_, i) => [...p.subarray(2 * i, 2 * i + 4)].join(' ')));
+        const got = lineSegments(l).filter((s) => s.z0 <= z && z < s.z1).map((s) => [s.ax, s.ay, s.bx, s.by].join(' '));
+        assert.deepEqual(got.sort(), want.sort(), `segments at z ${z}`);
+      }
+    }
   });
 
   test('damaged files are refused, saying what is wrong', () => {

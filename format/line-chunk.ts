@@ -211,3 +211,37 @@ export function linePathsAtZ(l: LineRecord, z: number): Float64Array[] {
     return Float64Array.from(out);
   });
 }
+
+/** A segment of a line that is drawn for z0 <= z < z1. */
+export interface LineSegment {
+  ax: number;
+  ay: number;
+  bx: number;
+  by: number;
+  z0: number;
+  z1: number;
+}
+
+/**
+ * Every segment a line has at some z, with its z range: (a, b) joins vertices a and b of a
+ * polyline from the z where the last vertex between them is gone (the line's zStart for
+ * neighbours) until a or b goes. At any z these are exactly the segments of `linePathsAtZ`,
+ * so a slicing surface whose z varies over the map is drawn by testing each pixel against its
+ * segment's range (the GPU's rule too).
+ */
+export function lineSegments(l: LineRecord): LineSegment[] {
+  const out: LineSegment[] = [];
+  l.paths.forEach((p, k) => {
+    const leave = l.leaveZ[k]!, n = leave.length;
+    for (let a = 0; a + 1 < n; a++) {
+      const la = Math.min(leave[a]!, l.zEnd);
+      let between = l.zStart;
+      for (let b = a + 1; b < n && between < la; b++) {
+        const z1 = Math.min(la, leave[b]!, l.zEnd);
+        if (between < z1) out.push({ ax: p[2 * a]!, ay: p[2 * a + 1]!, bx: p[2 * b]!, by: p[2 * b + 1]!, z0: between, z1 });
+        between = Math.max(between, leave[b]!);
+      }
+    }
+  });
+  return out;
+}
