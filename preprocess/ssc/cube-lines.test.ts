@@ -16,6 +16,7 @@ import { linePathsAt, simplifyLines } from '../lines/simplify-lines.js';
 import { generalizeFile } from '../pipeline.js';
 import { loadStyle } from '../style.js';
 import { buildCube } from './build-cube.js';
+import { inspectCube } from './inspect-cube.js';
 import { CubeReader } from './read-cube.js';
 
 /** Every line of the cube as read back, with the origin of its chunk. */
@@ -122,10 +123,15 @@ test('a style without linear classes gives a cube without lines; the classic bui
   await buildCube(noLines, path.join(dir, 'areas'), { precompress: false, smooth: false });
   const areas = await CubeReader.open(path.join(dir, 'areas'));
   assert.equal(areas.index.lines, undefined, 'no lines entry');
+  assert.equal((await inspectCube(path.join(dir, 'areas'))).lines, null);
   assert.deepEqual(areas.lineChunks({ ground: tgap.meta.extent, zMin: 0, zMax: 0 }), []);
 
   const report = await buildCube(tgap, path.join(dir, 'classic'), { precompress: false, smooth: false });
   const classic = await CubeReader.open(path.join(dir, 'classic'));
   assert.ok(report.lines > 50);
   assert.equal((await readAll(classic)).length, report.lines, 'the classic cube holds the lines');
+  const inspected = await inspectCube(path.join(dir, 'classic'));
+  assert.deepEqual(inspected.lines, { chunks: report.lineChunkBytes.length, lines: report.lines, bytes: report.lineChunkBytes.reduce((a, b) => a + b, 0) });
+  assert.equal(inspected.views[0]!.lines, 0, 'no lines at the base scale: every linear face is still an area');
+  assert.ok(inspected.views.slice(1).every((v) => v.lines > 0), 'lines in a view at every scale above the base');
 });
