@@ -58,8 +58,9 @@ for (const d of sets) {
   console.log(`  chunks ${rep.chunks}, triangles ${rep.triangles}, bytes ${kb(rep.bytes.total)} (min ${kb(rep.bytes.min)}, median ${kb(rep.bytes.median)}, max ${kb(rep.bytes.max)}, CV ${rep.bytes.cv.toFixed(3)})`);
   console.log(`  chunked / unchunked ${rep.overhead.toFixed(4)}; index depth ${rep.index.depth}, ${rep.index.files} file(s), ${kb(rep.index.bytes)}`);
   console.log(`  index query: median ${q.medianUs.toFixed(1)} us, p99 ${q.p99Us.toFixed(1)} us over ${q.chunks} chunks (${q.hits.toFixed(1)} chunks per view)`);
-  console.log('  view 1280x720 (mean over 25 places): scale, z, chunks, triangles, bytes');
-  for (const v of rep.views) console.log(`    1:${Math.round(v.scale)}  z ${v.z.toFixed(1)}  ${v.chunks.toFixed(1)}  ${v.triangles}  ${kb(v.bytes)}`);
+  console.log(rep.lines ? `  line chunks ${rep.lines.chunks}, lines ${rep.lines.lines}, bytes ${kb(rep.lines.bytes)}` : '  no lines');
+  console.log('  view 1280x720 (mean over 25 places): scale, z, chunks, triangles, bytes, lines, line bytes');
+  for (const v of rep.views) console.log(`    1:${Math.round(v.scale)}  z ${v.z.toFixed(1)}  ${v.chunks.toFixed(1)}  ${v.triangles}  ${kb(v.bytes)}  ${v.lines}  ${kb(v.lineBytes)}`);
   console.log(`  max/min over the scales: triangles ${rep.viewRatio.triangles.toFixed(2)}, bytes ${rep.viewRatio.bytes.toFixed(2)}`);
   rmSync(out, { recursive: true, force: true });
 }

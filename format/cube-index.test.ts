@@ -79,6 +79,14 @@ describe('index.json', () => {
     assert.throws(() => parseIndex({ ...index(), format: 'geojson' }), /format: must be "ssc-index"/);
   });
 
+  test('line chunks: read back when listed, absent when not, a bad entry refused by its place', () => {
+    const lines = [{ bbox: [0, 0, 0.1, 2, 1, 3] as [number, number, number, number, number, number], file: 'l-dddddddddddddddd.bin', bytes: 120, lines: 2, sha256: sha('d') }];
+    assert.deepEqual(parseIndex(JSON.parse(new TextDecoder().decode(encodeIndex({ ...index(), lines })))).lines, lines);
+    assert.equal(parseIndex(index()).lines, undefined, 'a cube without linear classes has no lines entry');
+    assert.throws(() => parseIndex({ ...index(), lines: [{ ...lines[0], file: 'http://x/l.bin' }] }), /lines\.0\.file/);
+    assert.throws(() => parseIndex({ ...index(), lines: [{ ...lines[0], lines: -1 }] }), /lines\.0\.lines/);
+  });
+
   test('the writer refuses what the reader would refuse', () => {
     const j = index();
     j.meta.extent = [0, 0, 1] as unknown as [number, number, number, number];

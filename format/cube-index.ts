@@ -51,6 +51,15 @@ const LeafSchema = v.object({
   triangles: count(),
   sha256: v.pipe(v.string(), v.regex(/^[0-9a-f]{64}$/, 'must be 64 lowercase hex digits')),
 });
+/** A line chunk (docs/FORMAT.md, "Line chunk file"): its box (z0, z1: the lines' z range) and how many lines it holds. */
+const LineLeafSchema = v.object({
+  bbox: Box3Schema,
+  file: FileNameSchema,
+  bytes: count(),
+  lines: count(),
+  sha256: LeafSchema.entries.sha256,
+});
+export type LineChunkLeaf = v.InferOutput<typeof LineLeafSchema>;
 const ExternalSchema = v.object({ bbox: Box3Schema, ref: FileNameSchema, chunks: count() });
 const InnerSchema: v.GenericSchema<InnerNode> = v.object({
   bbox: Box3Schema,
@@ -98,6 +107,8 @@ const IndexSchema = v.object({
   version: v.literal(INDEX_VERSION, `must be ${INDEX_VERSION} (this reader's version)`),
   meta: MetaSchema,
   root: InnerSchema,
+  /** Line chunks, a flat list (absent when the style has no linear classes). */
+  lines: v.optional(v.array(LineLeafSchema)),
 });
 
 const SubIndexSchema = v.object({
@@ -117,6 +128,7 @@ export type CubeMeta = Omit<v.InferOutput<typeof MetaSchema>, 'style'> & { style
 export interface CubeIndex {
   meta: CubeMeta;
   root: InnerNode;
+  lines?: LineChunkLeaf[];
 }
 
 export class IndexFormatError extends FormatError {
@@ -154,6 +166,7 @@ export function parseIndex(json: unknown, file = 'index.json'): CubeIndex {
   return {
     meta: { ...out.meta, style: drawnStyle(out.meta.style) },
     root: out.root,
+    ...(out.lines ? { lines: out.lines } : {}),
   };
 }
 

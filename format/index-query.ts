@@ -1,7 +1,8 @@
 // The chunks a view needs: R-tree leaves whose box meets the view's ground box and the z range
-// of its slicing surface (docs/FORMAT.md: z0 <= zMax and z1 > zMin). Sub-index files not yet
-// loaded are reported, so the caller can fetch them and ask again. Pure and synchronous.
-import { isExternal, isLeaf, type Box3, type ChunkLeaf, type IndexNode, type InnerNode } from './cube-index.js';
+// of its slicing surface (docs/FORMAT.md: z0 <= zMax and z1 > zMin), and the line chunks by the
+// same rule. Sub-index files not yet loaded are reported, so the caller can fetch them and ask
+// again. Pure and synchronous.
+import { isExternal, isLeaf, type Box3, type ChunkLeaf, type IndexNode, type InnerNode, type LineChunkLeaf } from './cube-index.js';
 
 export interface QueryBox {
   /** Ground box x0, y0, x1, y1. */
@@ -52,4 +53,9 @@ export function chunkPriority(b: Box3, cx: number, cy: number, z: number, halfDi
   const dy = Math.max(b[1] - cy, 0, cy - b[4]);
   const dz = Math.max(b[2] - z, 0, z - b[5]);
   return Math.hypot(dx, dy) / Math.max(halfDiagonal, 1e-9) + dz / Math.max(zScale, 1e-9);
+}
+
+/** The line chunks a view needs: those whose box meets the view's, by the chunks' rule. */
+export function queryLineChunks(lines: readonly LineChunkLeaf[], q: QueryBox): LineChunkLeaf[] {
+  return lines.filter((l) => boxMeets(l.bbox, q));
 }

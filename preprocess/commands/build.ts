@@ -68,9 +68,13 @@ export async function run(argv: string[]): Promise<void> {
   options.log?.(`build timings (ms): ${Object.entries(r.timings).map(([k, v]) => `${k} ${v}`).join(', ')}`);
   // Without a definition the map cannot convert longitude/latitude: say so now, not in a browser later.
   if (r.proj4 === null) process.stderr.write(`warning: no proj4 definition known for the CRS "${tgap.meta.crs}": the map of this cube takes and gives projected coordinates only (getCenterProjected, jumpTo({ centerProjected }), ...)\n`);
-  const sorted = [...r.chunkBytes].sort((a, b) => a - b);
+  const range = (bytes: number[]): string => {
+    const sorted = [...bytes].sort((a, b) => a - b);
+    return `${sorted[0] ?? 0}..${sorted[sorted.length - 1] ?? 0} bytes`;
+  };
+  const lines = r.lineChunkBytes.length > 0 ? `, ${r.lines} lines in ${r.lineChunkBytes.length} line chunks (${range(r.lineChunkBytes)})` : '';
   process.stdout.write(
-    `cube: ${tgap.meta.steps} steps, CRS ${tgap.meta.crs}${r.proj4 ? ' (with its proj4 definition)' : ''}, ${r.triangles} triangles in ${r.chunks} chunks (${sorted[0] ?? 0}..${sorted[sorted.length - 1] ?? 0} bytes), ${r.indexFiles} index file(s)\n` +
+    `cube: ${tgap.meta.steps} steps, CRS ${tgap.meta.crs}${r.proj4 ? ' (with its proj4 definition)' : ''}, ${r.triangles} triangles in ${r.chunks} chunks (${range(r.chunkBytes)})${lines}, ${r.indexFiles} index file(s)\n` +
       `wrote ${values.out}: ${r.files} files, ${r.bytesWritten} bytes with the compressed copies, in ${((performance.now() - t0) / 1000).toFixed(1)} s\n`,
   );
 }

@@ -1,11 +1,11 @@
-// tGAP -> the cube directory (docs/FORMAT.md): surfaces, chunks, face and attribute pages, the
-// R-tree index, and a gzip and a brotli copy of every file. Written to a temporary directory
+// tGAP -> the cube directory (docs/FORMAT.md): surfaces, chunks, line chunks, face and
+// attribute pages, the R-tree index, and a gzip and a brotli copy of every file. Written to a temporary directory
 // and renamed into place, so a failed build leaves nothing behind.
 import { createHash } from 'node:crypto';
 import { promises as fs } from 'node:fs';
 import path from 'node:path';
 import { brotliCompressSync, constants as zc, gzipSync } from 'node:zlib';
-import { encodeIndex, INDEX_FORMAT, INDEX_VERSION, type ChunkLeaf, type CubeIndexJson } from '../../format/cube-index.js';
+import { encodeIndex, INDEX_FORMAT, INDEX_VERSION, type ChunkLeaf, type CubeIndexJson, type LineChunkLeaf } from '../../format/cube-index.js';
 import { PIXEL_SIZE_MM } from '../../format/pixel-size.js';
 import { scaleAtZ } from '../../format/scale.js';
 import { writeDirAtomic } from '../io/atomic-write.js';
@@ -17,6 +17,8 @@ import { encodeAttributePage, ATTRIBUTE_PAGE_SIZE } from '../../format/attribute
 import { encodeFacePage, FACE_PAGE_SIZE } from '../../format/face-page.js';
 import { packTree, splitTree } from './rtree-index.js';
 import { buildSurfaces, type SurfaceStats } from './surfaces.js';
+import { cubeLines, lineChunks } from './cube-lines.js';
+import { parseStyle } from '../style.js';
 import { lapTimer } from '../lap-timer.js';
 
 export interface BuildOptions {
@@ -35,6 +37,9 @@ export interface BuildReport {
   surfaces: SurfaceStats;
   chunks: number;
   chunkBytes: number[];
+  /** Lines written (0 without linear classes) and the bytes of each line chunk. */
+  lines: number;
+  lineChunkBytes: number[];
   indexFiles: number;
   files: number;
   bytesWritten: number;
@@ -58,12 +63,13 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   lap('surfaces');
   log(`surfaces: ${surfaces.count} triangles (floor ${stats.floor}, merges ${stats.merge}, splits ${stats.split}, simplification ${stats.simplify}, redrawn ${stats.reemit})${smooth ? `, ${stats.tiltedMerges} merges and ${stats.tiltedRemovals} removals tilted` : ''}`);
   const info = scaleInfoOf(t);
-  const plan = planChunks({
-    surfaces, xs: surfaces.xs, ys: surfaces.ys, extent: t.meta.extent,
-    scaleAt: (z) => scaleAtZ(info, z),
-    viewPerScale: [(1280 * PIXEL_SIZE_MM) / 1000, (720 * PIXEL_SIZE_MM) / 1000],
+  const view = {
+    extent: t.meta.extent,
+    scaleAt: (z: number) => scaleAtZ(info, z),
+    viewPerScale: [(1280 * PIXEL_SIZE_MM) / 1000, (720 * PIXEL_SIZE_MM) / 1000] as [number, number],
     targetBytes: opts.chunkBytes ?? 256 * 1024,
-  });
+  };
+  const plan = planChunks({ surfaces, xs: surfaces.xs, ys: surfaces.ys, ...view });
   lap('plan');
   const files = new Map<string, Uint8Array>();
   const classOf = (f: number): number => faces[f]!.classIndex;
@@ -79,6 +85,17 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
     chunkBytes.push(ch.bytes.length);
   }
   lap('chunks');
+  // Lines from the tGAP as generalized (the smooth build's face ids do not matter to them).
+  const lineStyle = parseStyle(t.meta.style, `${t.meta.source}: the tGAP's style`);
+  const lines = lineStyle.classes.some((c) => c.linear) ? cubeLines(t, lineStyle) : null;
+  const lineLeaves: LineChunkLeaf[] = [];
+  for (const ch of lines ? lineChunks(lines, view) : []) {
+    const { name, sha256 } = hashName('l', ch.bytes, 'bin');
+    files.set(name, ch.bytes);
+    lineLeaves.push({ bbox: ch.bbox, file: name, bytes: ch.bytes.length, lines: ch.lines, sha256 });
+  }
+  if (lines) log(`lines: ${lines.length} in ${lineLeaves.length} chunks`);
+  lap('lines');
   const facePages: { first: number; file: string }[] = [];
   for (let first = 0; first < faces.length; first += FACE_PAGE_SIZE) {
     const bytes = encodeFacePage(faces, first, Math.min(FACE_PAGE_SIZE, faces.length - first));
@@ -122,6 +139,7 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
       attributes: { count: attrs.length, pageSize: ATTRIBUTE_PAGE_SIZE, pages: attributePages },
     },
     root: tree.root,
+    ...(lines ? { lines: lineLeaves } : {}),
   };
   files.set('index.json', encodeIndex(index));
   lap('index');
@@ -142,5 +160,5 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
     }
   });
   lap('write');
-  return { triangles: surfaces.count, surfaces: stats, chunks: leaves.length, chunkBytes, indexFiles: 1 + tree.files.length, files: files.size, bytesWritten, proj4, timings };
+  return { triangles: surfaces.count, surfaces: stats, chunks: leaves.length, chunkBytes, lines: lines?.length ?? 0, lineChunkBytes: lineLeaves.map((l) => l.bytes), indexFiles: 1 + tree.files.length, files: files.size, bytesWritten, proj4, timings };
 }

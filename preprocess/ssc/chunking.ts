@@ -27,22 +27,30 @@ const EVEN_WITHIN = 0.15;
 
 export function planChunks(inp: ChunkingInput): ChunkPlan {
   const s = inp.surfaces;
-  const n = s.count;
-  const boxes = triangleBoxes(s, inp.xs, inp.ys);
-  const cost = triangleBytes(s);
+  const { chunkOf, start } = splitEvenly(triangleBoxes(s, inp.xs, inp.ys), triangleBytes(s), inp);
+  // Within a chunk, keep a piece's triangles together (shared vertices) in a fixed order.
+  const order = sortedBy(s.count, (i) => chunkOf[i]! * 4294967296 + s.piece[i]!);
+  return { order, start };
+}
+
+/**
+ * Items (triangles, lines) with boxes and sizes in bytes into chunks of nearly
+ * `targetBytes` each: the chunk of every item, and the first position of each chunk in items
+ * ordered by chunk (with the count last).
+ */
+export function splitEvenly(boxes: TriangleBoxes, cost: Float64Array, inp: ViewModel & { targetBytes: number }): { chunkOf: Int32Array; start: number[] } {
+  const n = cost.length;
   let total = 0;
   for (let i = 0; i < n; i++) total += cost[i]!;
   const target = Math.min(inp.targetBytes, total);
   const split = new ChunkSplit(boxes, cost, viewHitChance(inp));
   split.split(0, n, Math.max(1, Math.round(total / target)), total);
   const start = [...split.start, n];
-  // The chunks' triangles in the order of the first axis list (any list holds the same sets).
+  // The chunks' items in the order of the first axis list (any list holds the same sets).
   const chunkOf = new Int32Array(n);
   const x = split.lists[0]!;
   for (let c = 0; c + 1 < start.length; c++) for (let k = start[c]!; k < start[c + 1]!; k++) chunkOf[x[k]!] = c;
-  // Within a chunk, keep a piece's triangles together (shared vertices) in a fixed order.
-  const order = sortedBy(n, (i) => chunkOf[i]! * 4294967296 + s.piece[i]!);
-  return { order, start };
+  return { chunkOf, start };
 }
 
 /** Per triangle: its ground box and its z range. */

@@ -12,7 +12,8 @@ export class CpuSlicer {
   readonly lower: Uint32Array;
   /** Class of the shown face. */
   readonly classes: Uint16Array;
-  private readonly zs: Float64Array;
+  /** z of the slicing surface at each pixel centre. */
+  readonly zs: Float64Array;
   private readonly px: number;
   private readonly py: number;
 

@@ -1,11 +1,13 @@
 // What a cube directory holds, measured: chunk sizes, what chunking costs over one unchunked
-// file, the index, and what a 1280x720 view needs at scales from the base scale to the whole
+// file, the index, the line chunks, and what a 1280x720 view needs at scales from the base scale to the whole
 // extent (detail must follow scale).
 import { promises as fs } from 'node:fs';
 import path from 'node:path';
 import { isExternal, isLeaf, type IndexNode } from '../../format/cube-index.js';
 import { scaleAtZ, zAtScale } from '../../format/scale.js';
 import { PIXEL_SIZE_MM } from '../../format/pixel-size.js';
+import { boxMeets } from '../../format/index-query.js';
+import { groundBox, lineAliveAt, lineOfChunk } from '../../format/line-chunk.js';
 import { CubeReader } from './read-cube.js';
 
 export interface ViewRow {
@@ -14,6 +16,9 @@ export interface ViewRow {
   chunks: number;
   triangles: number;
   bytes: number;
+  /** Lines alive at z whose box meets the view, and the bytes of the line chunks fetched for it. */
+  lines: number;
+  lineBytes: number;
 }
 
 export interface CubeReport {
@@ -27,6 +32,8 @@ export interface CubeReport {
   unchunkedBytes: number;
   overhead: number;
   index: { depth: number; files: number; bytes: number };
+  /** The line chunks (null: a cube without lines). */
+  lines: { chunks: number; lines: number; bytes: number } | null;
   views: ViewRow[];
   viewRatio: { triangles: number; bytes: number };
 }
@@ -66,6 +73,11 @@ export async function inspectCube(dir: string): Promise<CubeReport> {
   for (const name of await fs.readdir(dir)) {
     if (name === 'index.json' || (name.startsWith('i-') && name.endsWith('.json'))) indexBytes += (await fs.stat(path.join(dir, name))).size;
   }
+  const lineLeaves = cube.lineChunks({ ground: [-Infinity, -Infinity, Infinity, Infinity], zMin: -Infinity, zMax: Infinity });
+  const lineData = await Promise.all(lineLeaves.map(async (leaf) => {
+    const c = await cube.lineChunk(leaf);
+    return { leaf, lines: Array.from({ length: c.lineCount }, (_, i) => lineOfChunk(c, i)).map((l) => ({ ...l, box: groundBox(l.paths) })) };
+  }));
   const views: ViewRow[] = [];
   const [x0, y0, x1, y1] = meta.extent;
   const px = PIXEL_SIZE_MM / 1000;
@@ -77,7 +89,7 @@ export async function inspectCube(dir: string): Promise<CubeReport> {
     const hw = 640 * px * scale, hh = 360 * px * scale;
     // The mean over a 5 x 5 grid of view centres over the extent (a view at one place alone can
     // sit on the very edges where chunks meet).
-    let tris = 0, bytes = 0, chunks = 0;
+    let tris = 0, bytes = 0, chunks = 0, lines = 0, lineBytes = 0;
     const grid = 5;
     for (let gy = 0; gy < grid; gy++) {
       for (let gx = 0; gx < grid; gx++) {
@@ -90,10 +102,16 @@ export async function inspectCube(dir: string): Promise<CubeReport> {
           bytes += leaf.bytes;
         }
         chunks += hit.size;
+        const q = { ground, zMin: z, zMax: z };
+        for (const { leaf, lines: ls } of lineData) {
+          if (!boxMeets(leaf.bbox, q)) continue;
+          lineBytes += leaf.bytes;
+          lines += ls.filter((l) => lineAliveAt(l, z) && l.box[0] <= ground[2] && l.box[2] >= ground[0] && l.box[1] <= ground[3] && l.box[3] >= ground[1]).length;
+        }
       }
     }
     const g2 = grid * grid;
-    views.push({ scale, z, chunks: chunks / g2, triangles: Math.round(tris / g2), bytes: Math.round(bytes / g2) });
+    views.push({ scale, z, chunks: chunks / g2, triangles: Math.round(tris / g2), bytes: Math.round(bytes / g2), lines: Math.round(lines / g2), lineBytes: Math.round(lineBytes / g2) });
   }
   const ratio = (k: 'triangles' | 'bytes'): number => {
     const v = views.map((r) => r[k]);
@@ -110,6 +128,7 @@ export async function inspectCube(dir: string): Promise<CubeReport> {
     unchunkedBytes,
     overhead: total / Math.max(1, unchunkedBytes),
     index: { depth, files: 1 + cube.subIndexFiles, bytes: indexBytes },
+    lines: cube.index.lines ? { chunks: lineData.length, lines: lineData.reduce((n, d) => n + d.lines.length, 0), bytes: lineLeaves.reduce((n, l) => n + l.bytes, 0) } : null,
     views,
     viewRatio: { triangles: ratio('triangles'), bytes: ratio('bytes') },
   };

@@ -1,11 +1,12 @@
 // Reading a cube directory the way the map does: index.json, sub-index files on demand, and
-// chunks checked against the index's SHA-256 before they are decoded.
+// chunks and line chunks checked against the index's SHA-256 before they are decoded.
 import { createHash } from 'node:crypto';
 import { promises as fs } from 'node:fs';
 import path from 'node:path';
 import { decodeChunk, type DecodedChunk } from '../../format/chunk.js';
-import { parseIndex, parseSubIndex, type ChunkLeaf, type CubeIndex, type InnerNode } from '../../format/cube-index.js';
-import { queryIndex, type QueryBox } from '../../format/index-query.js';
+import { parseIndex, parseSubIndex, type ChunkLeaf, type CubeIndex, type InnerNode, type LineChunkLeaf } from '../../format/cube-index.js';
+import { queryIndex, queryLineChunks, type QueryBox } from '../../format/index-query.js';
+import { decodeLineChunk, type LineChunkData } from '../../format/line-chunk.js';
 import { InputError } from '../io/errors.js';
 
 export class CubeReader {
@@ -66,20 +67,34 @@ export class CubeReader {
   }
 
   async chunk(leaf: ChunkLeaf): Promise<DecodedChunk> {
+    return this.checkedFile(leaf, 'chunk', decodeChunk);
+  }
+
+  /** The line chunks whose boxes meet the query (none in a cube without lines). */
+  lineChunks(q: QueryBox): LineChunkLeaf[] {
+    return queryLineChunks(this.index.lines ?? [], q);
+  }
+
+  async lineChunk(leaf: LineChunkLeaf): Promise<LineChunkData> {
+    return this.checkedFile(leaf, 'line chunk', decodeLineChunk);
+  }
+
+  /** A file of the index read, checked against the index's size and SHA-256, and decoded. */
+  private async checkedFile<T>(leaf: { file: string; bytes: number; sha256: string }, kind: string, decode: (bytes: Uint8Array, name: string) => T): Promise<T> {
     const file = path.join(this.dir, leaf.file);
     let bytes: Buffer;
     try {
       bytes = await fs.readFile(file);
     } catch (err) {
-      throw new InputError(`cannot read chunk: ${(err as Error).message}`, { file });
+      throw new InputError(`cannot read ${kind}: ${(err as Error).message}`, { file });
     }
     if (bytes.length !== leaf.bytes) throw new InputError(`is ${bytes.length} bytes; the index says ${leaf.bytes} (truncated or replaced)`, { file });
     const sha = createHash('sha256').update(bytes).digest('hex');
     if (sha !== leaf.sha256) throw new InputError(`is corrupt: its SHA-256 does not match the index`, { file });
     try {
-      return decodeChunk(new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength), leaf.file);
+      return decode(new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength), leaf.file);
     } catch (err) {
-      throw new InputError(`is not a valid chunk: ${(err as Error).message}`, { file });
+      throw new InputError(`is not a valid ${kind}: ${(err as Error).message}`, { file });
     }
   }
 }

@@ -1,0 +1,137 @@
+// Lines in the cube, on the 400 m cut of Otterlo: built by buildCube, read back by CubeReader
+// as the map would (the index's line chunks of a view, checked and decoded), they are the lines
+// of collapseLines + pruneLines: as many per class, the same coordinates to float32, z ranges at
+// phase 0 of the step born and the step pruned, and exactly the lines whose range holds a z are
+// alive there. A style without linear classes gives a cube without a lines entry.
+import assert from 'node:assert/strict';
+import path from 'node:path';
+import test from 'node:test';
+import { lineAliveAt, lineOfChunk, linePathsAtZ, type LineRecord } from '../../format/line-chunk.js';
+import type { Tgap } from '../../format/tgap-model.js';
+import { dataset, styleFile } from '../../testing/paths.js';
+import { tempDir } from '../../testing/temp-dir.js';
+import { collapseLines } from '../lines/collapse-lines.js';
+import { pruneLines, type PrunedLine } from '../lines/prune-lines.js';
+import { linePathsAt, simplifyLines } from '../lines/simplify-lines.js';
+import { generalizeFile } from '../pipeline.js';
+import { loadStyle } from '../style.js';
+import { buildCube } from './build-cube.js';
+import { inspectCube } from './inspect-cube.js';
+import { CubeReader } from './read-cube.js';
+
+/** Every line of the cube as read back, with the origin of its chunk. */
+async function readAll(reader: CubeReader): Promise<{ line: LineRecord; originX: number; originY: number }[]> {
+  const out: { line: LineRecord; originX: number; originY: number }[] = [];
+  for (const leaf of reader.lineChunks({ ground: [-Infinity, -Infinity, Infinity, Infinity], zMin: -Infinity, zMax: Infinity })) {
+    const c = await reader.lineChunk(leaf);
+    assert.equal(c.lineCount, leaf.lines, `${leaf.file}: lines as the index says`);
+    for (let i = 0; i < c.lineCount; i++) out.push({ line: lineOfChunk(c, i), originX: c.originX, originY: c.originY });
+  }
+  return out;
+}
+
+const key = (classIndex: number, feature: number, firstX: number): string => `${classIndex}|${feature}|${Math.round(firstX)}`;
+
+test('bgt_otterlo_400m: the cube\'s lines read back are the collapsed and pruned lines, alive exactly in their z range', async (t) => {
+  const styleName = styleFile('bgt.json');
+  const { tgap } = await generalizeFile(dataset('bgt_otterlo_400m.geojson'), { style: styleName });
+  const style = await loadStyle(styleName);
+  const steps = tgap.meta.steps;
+  const pruned = pruneLines(collapseLines(tgap, style).lines, tgap, style).lines;
+  // Lines pruned the step they are born are never on the map and not written.
+  const shown = pruned.filter((l) => l.step < l.prunedStep);
+  assert.ok(shown.length > 50 && shown.length < pruned.length, `${shown.length} of ${pruned.length} lines shown`);
+  const simplified = new Map(simplifyLines(shown, tgap).lines.map((l, i) => [shown[i]!, l]));
+
+  const dir = path.join(tempDir(t), 'cube');
+  const report = await buildCube(tgap, dir, { precompress: false, chunkBytes: 32 * 1024 });
+  assert.equal(report.lines, shown.length);
+  assert.ok(report.lineChunkBytes.length >= 2, `${report.lineChunkBytes.length} line chunks`);
+  const reader = await CubeReader.open(dir);
+  const read = await readAll(reader);
+
+  // As many lines per class.
+  const perClass = (classes: number[]): number[] => style.classes.map((_, ci) => classes.filter((c) => c === ci).length);
+  assert.deepEqual(perClass(read.map((r) => r.line.classIndex)), perClass(shown.map((l) => l.classIndex)));
+
+  // Each line read back is one line of pruneLines' (by class, feature and first point), with its coordinates to float32 and its z range.
+  const expected = new Map<string, PrunedLine[]>();
+  for (const l of shown) {
+    const k = key(l.classIndex, l.feature, l.paths[0]![0]!);
+    expected.set(k, [...(expected.get(k) ?? []), l]);
+  }
+  const phase0 = (s: number): number => Math.fround(s - 1 + 1 / 9);
+  const readOf = new Map<PrunedLine, LineRecord>();
+  for (const { line, originX, originY } of read) {
+    const candidates = expected.get(key(line.classIndex, line.feature, line.paths[0]![0]!)) ?? [];
+    const same = (l: PrunedLine): boolean =>
+      l.paths.length === line.paths.length &&
+      l.paths.every((p, k) => p.length === line.paths[k]!.length && p.every((v, i) => line.paths[k]![i] === (i % 2 === 0 ? originX + Math.fround(v - originX) : originY + Math.fround(v - originY))));
+    const match = candidates.find((l) => same(l) && !readOf.has(l));
+    assert.ok(match, `a line of class ${line.classIndex}, feature #${line.feature} read back matches no line of pruneLines to float32`);
+    readOf.set(match, line);
+    assert.equal(line.zStart, phase0(match.step), 'zStart: phase 0 of the step the line is born');
+    assert.equal(line.zEnd, match.prunedStep > steps ? steps + 1 : phase0(match.prunedStep), 'zEnd: phase 0 of the step pruned, or the top');
+  }
+  assert.equal(readOf.size, shown.length);
+
+  // At states and between them, in the whole extent and in a corner: the lines of the chunks the
+  // index gives for the view that are alive there are exactly those whose state range holds it,
+  // each with its simplified vertices of that state.
+  const [x0, y0, x1, y1] = tgap.meta.extent;
+  const views: [number, number, number, number][] = [[x0, y0, x1, y1], [x0, y0, (x0 + x1) / 2, (y0 + y1) / 2]];
+  const changes = [...new Set(shown.flatMap((l) => [l.step, l.prunedStep]))].filter((s) => s <= steps).sort((a, b) => a - b);
+  const states = [0, ...Array.from({ length: 6 }, (_, k) => changes[Math.floor((k * (changes.length - 1)) / 5)]!), steps];
+  for (const ground of views) {
+    for (const s of states) {
+      for (const z of s < steps ? [s, s + 0.5] : [s]) {
+        const got: string[] = [];
+        for (const leaf of reader.lineChunks({ ground, zMin: z, zMax: z })) {
+          const c = await reader.lineChunk(leaf);
+          for (let i = 0; i < c.lineCount; i++) {
+            const l = lineOfChunk(c, i);
+            if (lineAliveAt(l, z) && meets(l, ground)) got.push(key(l.classIndex, l.feature, l.paths[0]![0]!));
+          }
+        }
+        // Between states s and s + 1 the lines of state s + 1 are shown: phase 0 of step s + 1 is at s + 1/9.
+        const state = z === s ? s : s + 1;
+        const want = shown.filter((l) => l.step <= state && state < l.prunedStep && meets(readOf.get(l)!, ground));
+        assert.deepEqual(got.sort(), want.map((l) => key(l.classIndex, l.feature, l.paths[0]![0]!)).sort(), `lines alive at z ${z} in ${ground.join(',')}`);
+        if (z === s) {
+          for (const l of want) {
+            const atZ = linePathsAtZ(readOf.get(l)!, z).map((p) => p.length / 2);
+            assert.deepEqual(atZ, linePathsAt(simplified.get(l)!, s).map((p) => p.length / 2), `vertices of a line at state ${s}`);
+          }
+        }
+      }
+    }
+  }
+});
+
+/** Whether a line's ground box meets a view's. */
+function meets(l: LineRecord, g: [number, number, number, number]): boolean {
+  const xs = l.paths.flatMap((p) => [...p].filter((_, i) => i % 2 === 0)), ys = l.paths.flatMap((p) => [...p].filter((_, i) => i % 2 === 1));
+  return Math.min(...xs) <= g[2] && Math.max(...xs) >= g[0] && Math.min(...ys) <= g[3] && Math.max(...ys) >= g[1];
+}
+
+test('a style without linear classes gives a cube without lines; the classic build writes them too', async (t) => {
+  const styleName = styleFile('bgt.json');
+  const { tgap } = await generalizeFile(dataset('bgt_otterlo_400m.geojson'), { style: styleName });
+  const style = tgap.meta.style as { classes: Record<string, unknown>[] };
+  const noLines: Tgap = { ...tgap, meta: { ...tgap.meta, style: { ...style, classes: style.classes.map((c) => ({ ...c, linear: false })) } } };
+  const dir = tempDir(t);
+  await buildCube(noLines, path.join(dir, 'areas'), { precompress: false, smooth: false });
+  const areas = await CubeReader.open(path.join(dir, 'areas'));
+  assert.equal(areas.index.lines, undefined, 'no lines entry');
+  assert.equal((await inspectCube(path.join(dir, 'areas'))).lines, null);
+  assert.deepEqual(areas.lineChunks({ ground: tgap.meta.extent, zMin: 0, zMax: 0 }), []);
+
+  const report = await buildCube(tgap, path.join(dir, 'classic'), { precompress: false, smooth: false });
+  const classic = await CubeReader.open(path.join(dir, 'classic'));
+  assert.ok(report.lines > 50);
+  assert.equal((await readAll(classic)).length, report.lines, 'the classic cube holds the lines');
+  const inspected = await inspectCube(path.join(dir, 'classic'));
+  assert.deepEqual(inspected.lines, { chunks: report.lineChunkBytes.length, lines: report.lines, bytes: report.lineChunkBytes.reduce((a, b) => a + b, 0) });
+  assert.equal(inspected.views[0]!.lines, 0, 'no lines at the base scale: every linear face is still an area');
+  assert.ok(inspected.views.slice(1).every((v) => v.lines > 0), 'lines in a view at every scale above the base');
+});

@@ -1,0 +1,64 @@
+// The cube's lines (issue 12): linear faces collapsed to lines, pruned and simplified over scale
+// (preprocess/lines/), with their states turned into z as docs/FORMAT.md ("Line chunk file")
+// states, and packed into line chunks of even size by the surfaces' split (chunking.ts).
+import type { Box3 } from '../../format/cube-index.js';
+import { encodeLineChunk, groundBox, type LineRecord } from '../../format/line-chunk.js';
+import { phaseZ, type Tgap } from '../../format/tgap-model.js';
+import { collapseLines } from '../lines/collapse-lines.js';
+import { pruneLines } from '../lines/prune-lines.js';
+import { simplifyLines } from '../lines/simplify-lines.js';
+import type { Style } from '../style.js';
+import type { TriangleBoxes } from './chunk-cuts.js';
+import { splitEvenly } from './chunking.js';
+import type { ViewModel } from './view-hit-chance.js';
+
+/** z from which a line, or a vertex of it, is gone: the first state without it, at phase 0; past the top, the surfaces' top. */
+export function stateEndZ(state: number, steps: number): number {
+  return state > steps ? steps + 1 : phaseZ(state, 0);
+}
+
+/** Lines in the cube's z, in the order collapseLines gives them; lines never on the map (pruned at birth) are left out. */
+export function cubeLines(tgap: Tgap, style: Pick<Style, 'classes'>): LineRecord[] {
+  const steps = tgap.meta.steps;
+  const pruned = pruneLines(collapseLines(tgap, style).lines, tgap, style).lines.filter((l) => l.step < l.prunedStep);
+  return simplifyLines(pruned, tgap).lines.map((l) => ({
+    classIndex: l.classIndex,
+    feature: l.feature,
+    zStart: phaseZ(l.step, 0),
+    zEnd: stateEndZ(l.prunedStep, steps),
+    paths: l.paths,
+    leaveZ: l.vertexEnd.map((ends) => Float64Array.from(ends, (e) => stateEndZ(e, steps))),
+  }));
+}
+
+export interface LineChunk {
+  bytes: Uint8Array;
+  bbox: Box3;
+  lines: number;
+}
+
+/** Bytes a line takes in a line chunk (docs/FORMAT.md), but for its share of the header and padding. */
+function lineBytes(l: LineRecord): number {
+  let vertices = 0;
+  for (const p of l.paths) vertices += p.length / 2;
+  return 18 + 4 * l.paths.length + 12 * vertices;
+}
+
+/** Lines into chunks of nearly `targetBytes`, split where views are least likely to need both sides; lines keep their order within a chunk. */
+export function lineChunks(lines: readonly LineRecord[], view: ViewModel & { targetBytes: number }): LineChunk[] {
+  if (lines.length === 0) return [];
+  const n = lines.length;
+  const boxes: TriangleBoxes = {
+    x0: new Float64Array(n), y0: new Float64Array(n), x1: new Float64Array(n), y1: new Float64Array(n),
+    z0: new Float64Array(n), z1: new Float64Array(n),
+  };
+  lines.forEach((l, i) => {
+    [boxes.x0[i], boxes.y0[i], boxes.x1[i], boxes.y1[i]] = groundBox(l.paths);
+    boxes.z0[i] = l.zStart;
+    boxes.z1[i] = l.zEnd;
+  });
+  const { chunkOf, start } = splitEvenly(boxes, Float64Array.from(lines, lineBytes), view);
+  const members: LineRecord[][] = Array.from({ length: start.length - 1 }, () => []);
+  lines.forEach((l, i) => members[chunkOf[i]!]!.push(l));
+  return members.filter((m) => m.length > 0).map((m) => ({ ...encodeLineChunk(m), lines: m.length }));
+}
