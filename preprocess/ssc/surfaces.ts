@@ -242,7 +242,9 @@ export function reachBackZ(info: ScaleInfo, z: number): number {
  * faces are the ones to write beside the surfaces.
  */
 export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surfaces: Surfaces; stats: SurfaceStats; transitions: MergeTransition[]; splits: SplitTransition[]; tgap: Tgap } {
-  const t = opts.smooth ? skipLateReemits(input, (z) => reachBackZ(scaleInfoOf(input), z)).tgap : input;
+  // The scale of every step: skipping re-emits keeps the tGAP's meta.
+  const scaleInfo = scaleInfoOf(input);
+  const t = opts.smooth ? skipLateReemits(input, (z) => reachBackZ(scaleInfo, z)).tgap : input;
   const steps = t.meta.steps;
   const zTop = steps + 1;
   const out = new Surfaces(t.xs, t.ys);
@@ -292,7 +294,6 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     return out;
   };
   const tris: number[] = [];
-  const scaleInfo = scaleInfoOf(t);
   /** The face each re-emitted face replaced (smooth merges run on through a winner's re-emits). */
   const replaced = opts.smooth ? replacedFaces(faces) : undefined;
   const reachBack = (z: number): number => reachBackZ(scaleInfo, z);
