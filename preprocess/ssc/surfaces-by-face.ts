@@ -89,8 +89,17 @@ export class SurfacesByFace {
    * The surfaces no later transition can reach (none above `zForget`) are forgotten.
    */
   lowestZ(face: number, tris: ArrayLike<number>, zFrom: number, gap: number, zForget: number): Map<number, number> {
+    return this.waitsAbove(tris, this.overlapping(face, tris, zFrom, gap, zForget), gap);
+  }
+
+  /**
+   * The corner rule for `pairs` (from `overlapping`): every corner of a triangle of `tris` that
+   * overlaps a surface `gap` above that surface's highest point. Always enough, often more than
+   * needed: a long triangle's far corner waits for a small surface at its other end.
+   */
+  waitsAbove(tris: ArrayLike<number>, pairs: readonly (readonly [number, number])[], gap: number): Map<number, number> {
     const lowest = new Map<number, number>();
-    for (const [i, t] of this.overlapping(face, tris, zFrom, gap, zForget)) {
+    for (const [i, t] of pairs) {
       const top = this.maxZ(t) + gap;
       for (let k = 0; k < 3; k++) {
         const w = tris[i + k]!;

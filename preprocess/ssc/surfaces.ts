@@ -342,19 +342,6 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     return ramp;
   };
   /**
-   * The waits of the corner rule: every corner of a triangle that overlaps an older surface
-   * `SURFACE_GAP` above that surface's highest point. Always enough, often more than needed: a
-   * long triangle's far corner waits for a small surface at its other end.
-   */
-  const cornerWaits = (own: number[], pairs: readonly [number, number][]): Map<number, number> => {
-    const waits = new Map<number, number>();
-    for (const [i, t] of pairs) {
-      const top = Math.max(out.z[3 * t]!, out.z[3 * t + 1]!, out.z[3 * t + 2]!) + SURFACE_GAP;
-      for (let k = 0; k < 3; k++) waits.set(own[i + k]!, Math.max(waits.get(own[i + k]!) ?? -Infinity, top));
-    }
-    return waits;
-  };
-  /**
    * The ramp with waits only where needed: solved without, then each triangle whose plane comes
    * within `SURFACE_GAP` of an older surface where they overlap (planeDeficit, exact) has its
    * corners held up by the shortfall, and the front is run again. null when that does not
@@ -410,7 +397,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       const z = smoothMergeZ(own, out.xs, out.ys, shared, { zFoot, zMerge, lowest: waits });
       return z && levels.length > 0 ? keepOffLevels(own, shared, zFoot, zMerge, waits, levels, z) : z;
     };
-    let z = exactRamp(own, pairs, zMerge, solve) ?? solve(cornerWaits(own, pairs));
+    let z = exactRamp(own, pairs, zMerge, solve) ?? solve(byFace.waitsAbove(own, pairs, SURFACE_GAP));
     if (levels.length > 0) {
       if (!z) {
         // No way round the winner's re-emits: start after the last, as its id is then one.
