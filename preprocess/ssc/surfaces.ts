@@ -8,7 +8,8 @@
 // - a split: the triangles the split gave each receiving face; with `smooth`, tilted per
 //   receiving face as a merge of that part into it;
 // - simplification: each removed vertex's triangle, between the faces on either side; with
-//   `smooth`, tilted from the removed corner up to the removal.
+//   `smooth`, tilted from the removed corner up to the removal. A smooth cube leaves out the
+//   re-emits of faces that end soon after (late-reemits.ts).
 import { planeDeficit } from '../geom/plane-deficit.js';
 import { orient } from '../geom/predicates.js';
 import { scaleAtZ, zAtScale, type ScaleInfo } from '../../format/scale.js';
@@ -462,7 +463,8 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   };
   /**
    * Where a smooth removal's corner starts to recede: the triangle (a, v, b) tilts from its
-   * corner v (the receding vertex) up to the removal's z on its chord, so the upper face takes
+   * corner v (the receding vertex) up to its chord, at the removal's z or before it when later
+   * removals of the step overlap it (removal-heights.ts), so the upper face takes
    * it from the corner, beside which it lies. No further back than one zoom level, nor before
    * the upper face was created or lay beside the corner (its side of the parent chain), and
    * above every older surface in the losing face's area.
