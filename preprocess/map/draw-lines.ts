@@ -3,6 +3,7 @@
 // gaps at vertices) and the slicing surface's z at that pixel lies in the segment's z range
 // (lineSegments). No anti-aliasing: the oracle says which pixels a line covers.
 import { lineSegments, type LineRecord } from '../../format/line-chunk.js';
+import { pointSegmentDistance } from '../geom/point-segment.js';
 import type { View } from './rasterize.js';
 
 /** Line width on screen when the style gives none. */
@@ -24,13 +25,11 @@ export function drawLines(view: View, lines: readonly LineRecord[], zAt: (p: num
       const i1 = Math.min(W - 1, Math.floor((Math.max(s.ax, s.bx) + half - bbox[0]) / px - 0.5));
       const j0 = Math.max(0, Math.ceil((bbox[3] - Math.max(s.ay, s.by) - half) / py - 0.5));
       const j1 = Math.min(H - 1, Math.floor((bbox[3] - Math.min(s.ay, s.by) + half) / py - 0.5));
-      const dx = s.bx - s.ax, dy = s.by - s.ay, len2 = dx * dx + dy * dy;
       for (let j = j0; j <= j1; j++) {
         const y = bbox[3] - (j + 0.5) * py;
         for (let i = i0; i <= i1; i++) {
           const x = bbox[0] + (i + 0.5) * px;
-          const t = len2 > 0 ? Math.max(0, Math.min(1, ((x - s.ax) * dx + (y - s.ay) * dy) / len2)) : 0;
-          if (Math.hypot(x - s.ax - t * dx, y - s.ay - t * dy) > half) continue;
+          if (pointSegmentDistance(x, y, s.ax, s.ay, s.bx, s.by) > half) continue;
           const p = j * W + i, z = zAt(p);
           if (s.z0 <= z && z < s.z1) out[p] = l.classIndex + 1;
         }

@@ -3,6 +3,7 @@
 // outlines, since a straight edge in one is curved in the other.
 import proj4, { type Converter } from 'proj4';
 import type { CubeMeta } from '../../../format/cube-index.js';
+import { boxAround } from '../geometry/box-around.js';
 import type { Bbox } from '../geometry/view.js';
 import { LngLat } from './lng-lat.js';
 import { LngLatBounds } from './lng-lat-bounds.js';
@@ -74,13 +75,3 @@ function outline(b: Bbox): [number, number][] {
   return pts;
 }
 
-function boxAround(pts: [number, number][]): Bbox {
-  const b: Bbox = [Infinity, Infinity, -Infinity, -Infinity];
-  for (const [x, y] of pts) {
-    b[0] = Math.min(b[0], x);
-    b[1] = Math.min(b[1], y);
-    b[2] = Math.max(b[2], x);
-    b[3] = Math.max(b[3], y);
-  }
-  return b;
-}

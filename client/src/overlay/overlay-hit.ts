@@ -4,6 +4,7 @@
 // (plus the same tolerance) of a point. Sizes are CSS px, turned into ground units at the
 // resolution of the moment. A Flatbush index over the parts' boxes finds the candidates. Pure.
 import Flatbush from 'flatbush';
+import { boxAround } from '../geometry/box-around.js';
 import type { Parts, XY } from './geojson-read.js';
 
 export interface HitReach {
@@ -73,15 +74,7 @@ export class HitIndex {
 }
 
 function box(it: Item): [number, number, number, number] {
-  const pts = it.kind === POINT ? [it.geometry as XY] : it.kind === LINE ? (it.geometry as XY[]) : (it.geometry as XY[][]).flat();
-  const b: [number, number, number, number] = [Infinity, Infinity, -Infinity, -Infinity];
-  for (const [x, y] of pts) {
-    b[0] = Math.min(b[0], x);
-    b[1] = Math.min(b[1], y);
-    b[2] = Math.max(b[2], x);
-    b[3] = Math.max(b[3], y);
-  }
-  return b;
+  return boxAround(it.kind === POINT ? [it.geometry as XY] : it.kind === LINE ? (it.geometry as XY[]) : (it.geometry as XY[][]).flat());
 }
 
 /** Distance from p to the segment a-b. */
