@@ -2,7 +2,7 @@ import test from 'node:test';
 import assert from 'node:assert/strict';
 import { generalizedDataset } from '../../testing/generalized-dataset.js';
 import { tempDir } from '../../testing/temp-dir.js';
-import { EventKind, faceStartZ, REEMIT_PHASE, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
+import { EventKind, faceStartZ, REEMIT_PHASE, replacedFaces, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
 import { fitView, rasterizeAt } from '../map/rasterize.js';
 import { skipLateReemits } from './late-reemits.js';
 import { buildSurfaces, reachBackZ } from './surfaces.js';
@@ -21,8 +21,7 @@ test('bgt_otterlo_400m: skipping late re-emits changes no state of the map, only
   const gone = new Set<number>();
   out.faces.forEach((f, i) => { if (i > 0 && f.stepLow === f.stepHigh && tgap.faces[i]!.stepLow < tgap.faces[i]!.stepHigh) gone.add(i); });
   assert.equal(gone.size, skipped);
-  const previous = new Map<number, number>();
-  tgap.faces.forEach((f, i) => { if (f.endPhase === REEMIT_PHASE && f.mergedInto > 0) previous.set(f.mergedInto, i); });
+  const previous = replacedFaces(tgap.faces);
   const root = (f: number): number => { let g = f; while (gone.has(g)) g = previous.get(g)!; return g; };
   // Nothing names a skipped id any more.
   for (const e of out.edges) assert.ok(!gone.has(e.left) && !gone.has(e.right));
