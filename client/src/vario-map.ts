@@ -366,6 +366,16 @@ export class VarioMap extends Evented<VarioMapEvents> {
     return this;
   }
 
+  /** Shows or hides the cube's lines (roads and watercourses drawn as lines at smaller scales). */
+  setLinesVisible(visible: boolean): this {
+    this.engine.setLinesVisible(visible);
+    return this;
+  }
+
+  getLinesVisible(): boolean {
+    return this.engine.getLinesVisible();
+  }
+
   getSettings(): VarioMapSettings {
     return { ...this.settings };
   }

@@ -6,13 +6,16 @@ import type { CubeMeta } from '../../../format/cube-index.js';
 import type { CubeStyle } from '../../../format/style.js';
 import type { Surface } from '../../../format/slicing-surface.js';
 import type { ViewGeometry } from '../geometry/view.js';
-import type { ChunkPayload } from '../source/worker-protocol.js';
+import type { Payload } from '../source/worker-protocol.js';
 import { ChunkStore } from './chunk-store.js';
 import { ColourPass, type ColourParams } from './colour-pass.js';
 import { FaceStateTexture } from './face-state-texture.js';
 import type { GpuChunk } from './gpu-chunk.js';
+import type { GpuLineChunk } from './gpu-line-chunk.js';
 import type { IdBuffer } from './id-buffer.js';
 import { IdPass } from './id-pass.js';
+import { LinePass } from './line-pass.js';
+import { classLineRules, createLineRuleTexture } from './line-rules.js';
 import { OverlayPass, type OverlayDrawable } from './overlay-pass.js';
 import { PresentPass } from './present-pass.js';
 import { createStyleTexture, parseColour } from './style-texture.js';
@@ -28,6 +31,8 @@ export interface FrameParams {
   colour: Omit<ColourParams, RendererColourParams>;
   /** Device pixels per CSS pixel (the overlays' widths are in CSS pixels). */
   pixelRatio: number;
+  /** The slicing surface's z range over the view (line segments outside it are skipped). */
+  sliceRange: [number, number];
 }
 
 /** What the renderer adds to the colour pass's parameters: its own textures and the style's background. */
@@ -39,9 +44,11 @@ interface Gpu {
   colour: ColourPass;
   present: PresentPass;
   overlay: OverlayPass;
+  lines: LinePass;
   targets: Targets;
   emptyVao: WebGLVertexArrayObject;
   style: { texture: WebGLTexture; classCount: number } | null;
+  lineRules: WebGLTexture | null;
   faceState: FaceStateTexture | null;
 }
 
@@ -54,6 +61,7 @@ export class Renderer {
   private readonly faceStates = new Map<number, number>();
   private lastFrame: FrameParams | null = null;
   private lastChunks: GpuChunk[] = [];
+  private lastLineChunks: GpuLineChunk[] = [];
   private idsJittered = false;
   /** The overlay layers drawn over the map, bottom first. */
   private overlays: readonly OverlayDrawable[] = [];
@@ -104,9 +112,11 @@ export class Renderer {
       colour: new ColourPass(gl),
       present: new PresentPass(gl),
       overlay: new OverlayPass(gl),
+      lines: new LinePass(gl),
       targets,
       emptyVao: gl.createVertexArray(),
       style: null,
+      lineRules: null,
       faceState: null,
     };
     this.makeStyleTextures();
@@ -116,10 +126,17 @@ export class Renderer {
   private makeStyleTextures(): void {
     const g = this.gpu, meta = this.meta;
     if (!g || !meta) return;
-    if (g.style) this.gl.deleteTexture(g.style.texture);
-    g.style = createStyleTexture(this.gl, this.style ?? meta.style, meta);
+    this.makeDrawnStyle(g, this.style ?? meta.style, meta);
     g.faceState?.delete();
     g.faceState = new FaceStateTexture(this.gl, meta.faces.count, this.faceStates);
+  }
+
+  /** The class and line rule textures for `style`. */
+  private makeDrawnStyle(g: Gpu, style: CubeStyle, meta: CubeMeta): void {
+    if (g.style) this.gl.deleteTexture(g.style.texture);
+    g.style = createStyleTexture(this.gl, style, meta);
+    if (g.lineRules) this.gl.deleteTexture(g.lineRules);
+    g.lineRules = createLineRuleTexture(this.gl, classLineRules(style));
   }
 
   private readonly lostHandler = (ev: Event): void => {
@@ -127,6 +144,7 @@ export class Renderer {
     ev.preventDefault();
     this.gpu = null;
     this.lastChunks = [];
+    this.lastLineChunks = [];
     this.onLost(this.store.clear(null));
   };
 
@@ -147,8 +165,7 @@ export class Renderer {
     this.style = style;
     const g = this.gpu, meta = this.meta;
     if (!g || !meta) return;
-    if (g.style) this.gl.deleteTexture(g.style.texture);
-    g.style = createStyleTexture(this.gl, style, meta);
+    this.makeDrawnStyle(g, style, meta);
   }
 
   /** The face's drawn states from the next frame on (bit i: DRAWN_STATES[i]). */
@@ -164,7 +181,7 @@ export class Renderer {
     this.gpu?.overlay.keep(layers);
   }
 
-  upload(payload: ChunkPayload, frame: number): boolean {
+  upload(payload: Payload, frame: number): boolean {
     if (!this.gpu) return false;
     this.store.add(this.gl, payload, frame);
     return true;
@@ -175,10 +192,10 @@ export class Renderer {
     return this.store.evict(this.gl, visible, margin);
   }
 
-  /** Draws a frame; returns the triangles submitted. */
-  render(f: FrameParams, chunks: GpuChunk[]): number {
+  /** Draws a frame; returns the triangles and line segments submitted. */
+  render(f: FrameParams, chunks: GpuChunk[], lineChunks: GpuLineChunk[] = []): { triangles: number; segments: number } {
     const g = this.gpu;
-    if (!g || !g.style || !g.faceState || !this.style) return 0;
+    if (!g || !g.style || !g.faceState || !this.style) return { triangles: 0, segments: 0 };
     const gl = this.gl;
     g.targets.resize(f.view.width, f.view.height);
     gl.bindVertexArray(g.emptyVao);
@@ -188,11 +205,13 @@ export class Renderer {
     gl.bindVertexArray(g.emptyVao);
     g.colour.draw(g.targets, { ...f.colour, style: g.style.texture, classCount: g.style.classCount, background: parseColour(this.style.background), faceState: g.faceState.texture });
     g.present.draw(g.targets);
+    const segments = this.drawLines(g, f, lineChunks);
     this.drawOverlays(g, f);
     gl.bindVertexArray(null);
     this.lastFrame = f;
     this.lastChunks = chunks;
-    return triangles;
+    this.lastLineChunks = lineChunks;
+    return { triangles, segments };
   }
 
   /** Shows the last frame's map again with the overlays as they are now (the map's image is kept). */
@@ -201,7 +220,14 @@ export class Renderer {
     // Nothing drawn since the context came back: the next frame draws everything.
     if (!g || !f || g.targets.width === 0) return;
     g.present.draw(g.targets);
+    this.drawLines(g, f, this.lastLineChunks.filter((c) => this.store.get(c.file) === c));
     this.drawOverlays(g, f);
+  }
+
+  /** The cube's lines over the map just presented; returns the segments submitted. */
+  private drawLines(g: Gpu, f: FrameParams, lineChunks: readonly GpuLineChunk[]): number {
+    if (!g.lineRules || lineChunks.length === 0) return 0;
+    return g.lines.draw(g.targets, f.view, f.pixelRatio, lineChunks, g.lineRules, f.sliceRange);
   }
 
   /** The overlays over the canvas, drawn again only if the view or the layers changed. */
@@ -301,9 +327,11 @@ export class Renderer {
       g.colour.delete();
       g.present.delete();
       g.overlay.delete();
+      g.lines.delete();
       g.targets.delete();
       this.gl.deleteVertexArray(g.emptyVao);
       if (g.style) this.gl.deleteTexture(g.style.texture);
+      if (g.lineRules) this.gl.deleteTexture(g.lineRules);
       g.faceState?.delete();
     }
     this.gpu = null;
