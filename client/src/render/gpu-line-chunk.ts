@@ -21,6 +21,7 @@ export class GpuLineChunk {
   readonly segmentRule: Uint16Array;
   readonly lineClass: Uint16Array;
   readonly lineFeature: Int32Array;
+  private readonly lineZ: Float32Array;
   lastUsed = 0;
   private readonly vao: WebGLVertexArrayObject;
   private readonly buffers: WebGLBuffer[];
@@ -37,6 +38,7 @@ export class GpuLineChunk {
     this.segmentRule = c.segmentRule;
     this.lineClass = c.lineClass;
     this.lineFeature = c.lineFeature;
+    this.lineZ = c.lineZ;
     const vao = gl.createVertexArray();
     gl.bindVertexArray(vao);
     const seg = gl.createBuffer();
@@ -59,6 +61,11 @@ export class GpuLineChunk {
     gl.bindBuffer(gl.ARRAY_BUFFER, null);
     this.vao = vao;
     this.buffers = [seg, rule];
+  }
+
+  /** Line i is on the map for z0 <= z < z1. */
+  lineZRange(i: number): [number, number] {
+    return [this.lineZ[2 * i]!, this.lineZ[2 * i + 1]!];
   }
 
   /** One quad (a triangle strip of 4 vertices) per segment. */

@@ -15,7 +15,8 @@ import type { GpuLineChunk } from './gpu-line-chunk.js';
 import type { IdBuffer } from './id-buffer.js';
 import { IdPass } from './id-pass.js';
 import { LinePass } from './line-pass.js';
-import { classLineRules, createLineRuleTexture } from './line-rules.js';
+import { classLineRules, createLineRuleTexture, type LineRule } from './line-rules.js';
+import { lineAt, type LineHit } from '../engine/line-hit.js';
 import { OverlayPass, type OverlayDrawable } from './overlay-pass.js';
 import { PresentPass } from './present-pass.js';
 import { createStyleTexture, parseColour } from './style-texture.js';
@@ -62,6 +63,8 @@ export class Renderer {
   private lastFrame: FrameParams | null = null;
   private lastChunks: GpuChunk[] = [];
   private lastLineChunks: GpuLineChunk[] = [];
+  /** The line rules drawn (the texture's contents, for picking). */
+  private lineRules: LineRule[] = [];
   private idsJittered = false;
   /** The overlay layers drawn over the map, bottom first. */
   private overlays: readonly OverlayDrawable[] = [];
@@ -136,7 +139,8 @@ export class Renderer {
     if (g.style) this.gl.deleteTexture(g.style.texture);
     g.style = createStyleTexture(this.gl, style, meta);
     if (g.lineRules) this.gl.deleteTexture(g.lineRules);
-    g.lineRules = createLineRuleTexture(this.gl, classLineRules(style));
+    this.lineRules = classLineRules(style);
+    g.lineRules = createLineRuleTexture(this.gl, this.lineRules);
   }
 
   private readonly lostHandler = (ev: Event): void => {
@@ -250,6 +254,14 @@ export class Renderer {
       this.idsJittered = false;
     }
     return g;
+  }
+
+  /** The line drawn on top at device pixel (x, y) of the last frame, where the slice is at z. */
+  lineAt(x: number, y: number, z: number): LineHit | null {
+    const f = this.lastFrame;
+    if (!f || !this.gpu) return null;
+    const chunks = this.lastLineChunks.filter((c) => this.store.get(c.file) === c);
+    return lineAt(chunks, this.lineRules, f.view, f.pixelRatio, x, y, z);
   }
 
   /** W x H pixels of a target's attachment from GL row glY up (4 values a pixel, rows from the bottom). */

@@ -21,6 +21,7 @@ test('the payload holds, at every z, exactly the segments of the polylines at th
   assert.equal(p.segments.length, 6 * p.segmentCount);
   assert.deepEqual([...p.lineClass], [4, 7]);
   assert.deepEqual([...p.lineFeature], [17, -1]);
+  assert.deepEqual([...p.lineZ], [1, 9, 2, 6]);
   for (const z of [0.5, 1, 2.5, 3, 4.99, 5, 5.5, 8.9, 9]) {
     const expected: string[] = [];
     lines.forEach((l, i) => {

@@ -37,5 +37,6 @@ export function lineSegmentPayload(c: LineChunkData): Omit<LinePayload, 'file' |
     segmentRule,
     lineClass: c.lineClass.slice(),
     lineFeature: c.lineFeature.slice(),
+    lineZ: Float32Array.from({ length: 2 * c.lineCount }, (_, k) => (k % 2 === 0 ? c.zStart : c.zEnd)[k >> 1]!),
   };
 }

@@ -94,9 +94,10 @@ export interface LinePayload {
   /** Per segment: the line it belongs to, and that line's style rule (for now its class). */
   segmentLine: Uint32Array;
   segmentRule: Uint16Array;
-  /** Per line: its class and its input feature (-1: none). */
+  /** Per line: its class, its input feature (-1: none) and its z range (zStart, zEnd). */
   lineClass: Uint16Array;
   lineFeature: Int32Array;
+  lineZ: Float32Array;
   verified: boolean;
 }
 
