@@ -12,6 +12,7 @@ interface ProjLike {
   a?: number;
   b?: number;
   to_meter?: number;
+  x0?: number;
   units?: string;
   datumCode?: string;
   forward(p: { x: number; y: number }): { x: number; y: number };
@@ -42,9 +43,10 @@ export function epsgFromWkt(wkt: string, points: [number, number][]): string | n
   for (const entry of Object.values(list())) {
     if (!entry) continue;
     const [code, def] = entry;
-    // Cheap filters before proj4 parses a definition (5000 of them take about a second).
+    // Cheap filters before proj4 parses a definition (all 5000 would take about a second).
     // Compound CRSs (+vunits) share their horizontal part's definition: the 2D one is meant.
     if (/\+proj=longlat\b/.test(def) !== geographic || /\+proj=geocent|\+vunits=|\+geoidgrids=/.test(def)) continue;
+    if (!geographic && toMetre(target) === 1 && Math.abs(falseEasting(def) - (target.x0 ?? 0)) > 1e-3) continue;
     const cand = parse(def);
     if (!cand || !sameShape(target, cand, geographic, points)) continue;
     // Same datum name first, then the lowest code (the older, usual one of duplicates).
@@ -83,6 +85,12 @@ function sameShape(p: ProjLike, q: ProjLike, geographic: boolean, points: [numbe
     if (!(Math.abs(back.x - x) <= 1e-3 && Math.abs(back.y - y) <= 1e-3)) return false;
   }
   return true;
+}
+
+/** A proj4 definition's false easting in metres (UTM's is implied). */
+function falseEasting(def: string): number {
+  const x0 = /\+x_0=(\S+)/.exec(def);
+  return x0 ? Number(x0[1]) : /\+proj=utm\b/.test(def) ? 500000 : 0;
 }
 
 function toMetre(p: ProjLike): number {
