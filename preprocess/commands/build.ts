@@ -8,7 +8,9 @@ import { readTgap, TGAP_MAGIC } from '../../format/tgap.js';
 import type { Tgap } from '../../format/tgap-model.js';
 import { generalizeOptionSpecs, parseNumber, pipelineOptions, UsageError } from './args.js';
 
-export const usage = `ssc build <input.geojson|file.tgap> --out <dir> [options]
+export const usage = `ssc build <input|file.tgap> --out <dir> [options]
+  input: polygons in any format ssc generalize reads (GeoJSON, TopoJSON, GeoPackage, Shapefile,
+  FlatGeobuf), or a tGAP that ssc generalize wrote
   --style <style.json>      for polygon input: classes, colours, weights (see ssc generalize)
   --chunk-bytes <n>         target chunk size (default 262144)
   --sub-index-bytes <n>     largest index file before subtrees move to sub-index files (default 131072)

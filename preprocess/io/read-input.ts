@@ -1,11 +1,14 @@
-// Reads polygon input (GeoJSON, gzipped GeoJSON, TopoJSON) into plain rings of numbers.
-// Everything that is not a polygon is refused here, with the feature named.
+// Reads polygon input (GeoJSON, TopoJSON, GeoPackage, Shapefile, FlatGeobuf, each optionally
+// gzipped) into plain rings of numbers. The binary formats come as GeoJSON features from their
+// readers (input-format.ts), so every format goes through the same checks below. Everything that
+// is not a polygon is refused here, with the feature named.
 import { promises as fs } from 'node:fs';
 import { gunzipSync } from 'node:zlib';
 import path from 'node:path';
 import { feature as topoFeature } from 'topojson-client';
 import type { Topology } from 'topojson-specification';
 import { InputError, type FeatureRef } from './errors.js';
+import { detectFormat, readBinaryFormat } from './input-format.js';
 
 export interface InputFeature {
   ref: FeatureRef;
@@ -28,7 +31,7 @@ export interface RawInput {
 }
 
 export interface ReadOptions {
-  /** For TopoJSON: the object to read (default: all objects, in key order). */
+  /** For GeoPackage: the layer to read (required when it has several); for TopoJSON: the object (default: all, in key order). */
   layer?: string;
   /** Property that names a feature in messages (default: feature.id, then "id"). */
   idProperty?: string;
@@ -48,6 +51,8 @@ export async function readInput(file: string, opts: ReadOptions = {}): Promise<R
       throw new InputError(`not a valid gzip file: ${(err as Error).message}`, { file });
     }
   }
+  const format = detectFormat(buf, file);
+  if (format !== 'json') return parseDocument(await readBinaryFormat(format, buf, file, opts.layer), path.basename(file), opts);
   let doc: unknown;
   try {
     doc = parseJson(buf.toString('utf8'));
