@@ -59,7 +59,14 @@ export async function run(argv: string[]): Promise<void> {
   const options = pipelineOptions(values);
   const t0 = performance.now();
   const input = positionals[0]!;
-  const tgap: Tgap = (await isTgap(input)) ? await readTgap(input) : (await generalizeFile(input, options)).tgap;
+  let tgap: Tgap;
+  let noStyle: string[] = [];
+  if (await isTgap(input)) tgap = await readTgap(input);
+  else {
+    const g = await generalizeFile(input, options);
+    tgap = g.tgap;
+    noStyle = g.report.noStyle ?? [];
+  }
   const r = await buildCube(tgap, values.out, {
     ...(chunkBytes !== undefined ? { chunkBytes } : {}),
     ...(subIndexBytes !== undefined ? { subIndexBytes } : {}),
@@ -76,6 +83,7 @@ export async function run(argv: string[]): Promise<void> {
   };
   const lines = r.lineChunkBytes.length > 0 ? `, ${r.lines} lines in ${r.lineChunkBytes.length} line chunks (${range(r.lineChunkBytes)})` : '';
   process.stdout.write(
+    noStyle.map((l) => l + '\n').join('') +
     `cube: ${tgap.meta.steps} steps, CRS ${tgap.meta.crs}${r.proj4 ? ' (with its proj4 definition)' : ''}, ${r.triangles} triangles in ${r.chunks} chunks (${range(r.chunkBytes)})${lines}, ${r.indexFiles} index file(s)\n` +
       `wrote ${values.out}: ${r.files} files, ${r.bytesWritten} bytes with the compressed copies, in ${((performance.now() - t0) / 1000).toFixed(1)} s\n`,
   );

@@ -34,6 +34,7 @@ export async function run(argv: string[]): Promise<void> {
   const repairs = Object.entries(r.topology.repairs).filter(([, n]) => n > 0).map(([k, n]) => `${k} ${n}`).join(', ') || 'none';
   process.stdout.write(
     [
+      ...(r.noStyle ?? []),
       `input: ${tgap.meta.source} (${tgap.meta.crs}${tgap.meta.projectedFrom ? `, projected from ${tgap.meta.projectedFrom}` : ''})`,
       `topology: ${r.topology.faceCount} faces, ${r.topology.edges} edges, ${r.topology.nodeCount} nodes, ${r.topology.vertexCount} vertices`,
       `repairs: ${repairs}`,
