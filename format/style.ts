@@ -1,7 +1,7 @@
 // The style (docs/FORMAT.md, "Style"): which property holds the class, and per class its
-// colour, label, importance weight, pattern and whether it is linear. One schema for the file
-// a cartographer writes (`ssc generalize --style`) and for the copy stored in the tGAP and in
-// index.json (meta.style), which the map reads.
+// colour, label, importance weight, pattern, whether it is linear and how its lines are drawn
+// (line-style.ts). One schema for the file a cartographer writes (`ssc generalize --style`)
+// and for the copy stored in the tGAP and in index.json (meta.style), which the map reads.
 import * as v from 'valibot';
 import { lineRules, LineStyleSchema, type LineRule, type LineStyleJson } from './line-style.js';
 import { PIXEL_SIZE_MM } from './pixel-size.js';
