@@ -3,6 +3,7 @@
 import { promises as fs } from 'node:fs';
 import * as v from 'valibot';
 import { describeIssues } from '../format/schema-issues.js';
+import { lineRules, type LineRule } from '../format/line-style.js';
 import { styleClasses, StyleSchema, type StyleClass } from '../format/style.js';
 import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
 import { InputError } from './io/errors.js';
@@ -24,6 +25,8 @@ export interface Style {
   allowHoles: boolean;
   background: string;
   classes: ClassStyle[];
+  /** The line rules of the linear classes in index order (format/line-style.ts). */
+  lineRules: LineRule[];
   /** compat[loser][neighbour] in [0, 1], indexed like `classes`. */
   compat: Float64Array[];
   attribution: string;
@@ -86,6 +89,7 @@ export function parseStyle(json: unknown, file = 'style'): Style {
     allowHoles: s.allowHoles,
     background: s.background.toLowerCase(),
     classes,
+    lineRules: lineRules(classes),
     compat,
     attribution: s.attribution,
   };
@@ -105,7 +109,7 @@ export function defaultStyle(classValues: string[], classProperty: string | null
     row[i] = 1;
     return row;
   });
-  return { name: 'default', classProperty, idProperty: null, baseScale: 0, resolutionMm: PIXEL_SIZE_MM, allowHoles: false, background: '#ffffff', classes, compat, attribution: '' };
+  return { name: 'default', classProperty, idProperty: null, baseScale: 0, resolutionMm: PIXEL_SIZE_MM, allowHoles: false, background: '#ffffff', classes, lineRules: [], compat, attribution: '' };
 }
 
 /** The style as JSON again (stored in the tGAP and the cube's metadata). */
@@ -113,7 +117,7 @@ export function styleToJson(style: Style): Record<string, unknown> {
   const classes: Record<string, unknown>[] = [];
   const compatibility: Record<string, Record<string, number>> = {};
   style.classes.forEach((c, i) => {
-    classes.push({ key: c.key, label: c.label, color: c.color, weight: c.weight, linear: c.linear, ...(c.pattern ? { pattern: c.pattern } : {}) });
+    classes.push({ key: c.key, label: c.label, color: c.color, weight: c.weight, linear: c.linear, ...(c.pattern ? { pattern: c.pattern } : {}), ...(c.line ? { line: c.line } : {}) });
     const row: Record<string, number> = {};
     style.classes.forEach((d, j) => {
       if (i !== j) row[d.key] = style.compat[i]![j]!;
