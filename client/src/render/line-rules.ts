@@ -1,6 +1,8 @@
-// How the line pass draws each line: per rule its fill and casing colours, widths in
-// millimetres on screen and the z range (its scale range turned into steps) in which it shows,
-// as a texture line.vert looks rules up in (one column per rule).
+// How the line pass draws each line: per rule of the style (format/line-style.ts, whose index
+// each line stores) its fill and casing colours, widths in millimetres on screen and the z range
+// (its scale range turned into steps) in which it shows, as a texture line.vert looks rules up
+// in (one column per rule).
+import { zAtScale, type ScaleInfo } from '../../../format/scale.js';
 import type { CubeStyle } from '../../../format/style.js';
 import { parseColour, type Rgba } from './style-texture.js';
 import { texture2d } from './targets.js';
@@ -15,15 +17,16 @@ export interface LineRule {
   zMax: number;
 }
 
-/** Until the style gives line rules: a line of each linear class in its class's colour, 0.56 mm (two standard pixels) wide. */
-export function classLineRules(style: CubeStyle): LineRule[] {
-  return style.classes.map((c) => ({
-    fill: c.linear ? parseColour(c.color) : [0, 0, 0, 0],
-    casing: [0, 0, 0, 0],
-    widthMm: 0.56,
-    casingWidthMm: 0,
-    zMin: -Infinity,
-    zMax: Infinity,
+/** The style's line rules as the GPU draws them: the casing's width is the whole band, fill and both sides. */
+export function drawnLineRules(style: CubeStyle, info: ScaleInfo): LineRule[] {
+  return style.lines.map((r) => ({
+    fill: parseColour(r.color),
+    casing: r.casing ? parseColour(r.casing.color) : [0, 0, 0, 0],
+    widthMm: r.width,
+    casingWidthMm: r.casing ? r.width + 2 * r.casing.width : 0,
+    // A scale denominator grows with z: minScale bounds z from below.
+    zMin: r.minScale !== undefined ? zAtScale(info, r.minScale) : -Infinity,
+    zMax: r.maxScale !== undefined ? zAtScale(info, r.maxScale) : Infinity,
   }));
 }
 

@@ -15,7 +15,7 @@ import type { GpuLineChunk } from './gpu-line-chunk.js';
 import type { IdBuffer } from './id-buffer.js';
 import { IdPass } from './id-pass.js';
 import { LinePass } from './line-pass.js';
-import { classLineRules, createLineRuleTexture, type LineRule } from './line-rules.js';
+import { createLineRuleTexture, drawnLineRules, type LineRule } from './line-rules.js';
 import { lineAt, type LineHit } from '../engine/line-hit.js';
 import { OverlayPass, type OverlayDrawable } from './overlay-pass.js';
 import { PresentPass } from './present-pass.js';
@@ -139,7 +139,7 @@ export class Renderer {
     if (g.style) this.gl.deleteTexture(g.style.texture);
     g.style = createStyleTexture(this.gl, style, meta);
     if (g.lineRules) this.gl.deleteTexture(g.lineRules);
-    this.lineRules = classLineRules(style);
+    this.lineRules = drawnLineRules(style, meta);
     g.lineRules = createLineRuleTexture(this.gl, this.lineRules);
   }
 

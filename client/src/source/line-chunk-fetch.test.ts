@@ -7,11 +7,11 @@ import { lineSegmentPayload } from './line-chunk-fetch.js';
 // straight segment of another class from z 2.
 const lines: LineRecord[] = [
   {
-    classIndex: 4, feature: 17, zStart: 1, zEnd: 9,
+    classIndex: 4, rule: 6, feature: 17, zStart: 1, zEnd: 9,
     paths: [Float64Array.from([180000, 456000, 180010, 456004, 180020, 456000, 180030, 456006])],
     leaveZ: [Float64Array.from([9, 3, 5, 9])],
   },
-  { classIndex: 7, feature: -1, zStart: 2, zEnd: 6, paths: [Float64Array.from([180000.5, 456050, 180040.25, 456050])], leaveZ: [Float64Array.from([6, 6])] },
+  { classIndex: 7, rule: 5, feature: -1, zStart: 2, zEnd: 6, paths: [Float64Array.from([180000.5, 456050, 180040.25, 456050])], leaveZ: [Float64Array.from([6, 6])] },
 ];
 
 test('the payload holds, at every z, exactly the segments of the polylines at that z, at the stored positions', () => {
@@ -36,6 +36,7 @@ test('the payload holds, at every z, exactly the segments of the polylines at th
     }
     assert.deepEqual(got.sort(), expected.sort(), `z ${z}`);
   }
-  // The rule of each segment is its line's class (until the style gives line rules).
-  for (let s = 0; s < p.segmentCount; s++) assert.equal(p.segmentRule[s], lines[p.segmentLine[s]!]!.classIndex);
+  // The rule of each segment is its line's, and segments come in rule order (drawn so).
+  for (let s = 0; s < p.segmentCount; s++) assert.equal(p.segmentRule[s], lines[p.segmentLine[s]!]!.rule);
+  for (let s = 1; s < p.segmentCount; s++) assert.ok(p.segmentRule[s - 1]! <= p.segmentRule[s]!);
 });

@@ -13,11 +13,15 @@ export async function fetchLineChunk(leaf: LineChunkLeaf, url: string, retry: Re
   return { ...lineSegmentPayload(data), file: leaf.file, bbox: leaf.bbox, verified };
 }
 
-/** A decoded line chunk's segments, relative to its origin, in line order. */
+/**
+ * A decoded line chunk's segments, relative to its origin, lines in the order drawn: by rule,
+ * then as stored (a later rule over an earlier one, as the CPU drawer paints them).
+ */
 export function lineSegmentPayload(c: LineChunkData): Omit<LinePayload, 'file' | 'bbox' | 'verified'> {
   const coords: number[] = [];
   const owner: number[] = [];
-  for (let i = 0; i < c.lineCount; i++) {
+  const order = Array.from({ length: c.lineCount }, (_, i) => i).sort((a, b) => c.lineRule[a]! - c.lineRule[b]! || a - b);
+  for (const i of order) {
     for (const s of lineSegments(lineOfChunk(c, i))) {
       // lineOfChunk adds the origin in float64: taking it off again gives the stored float32 back.
       coords.push(s.ax - c.originX, s.ay - c.originY, s.bx - c.originX, s.by - c.originY, s.z0, s.z1);
@@ -26,7 +30,7 @@ export function lineSegmentPayload(c: LineChunkData): Omit<LinePayload, 'file' |
   }
   const segmentLine = Uint32Array.from(owner);
   const segmentRule = new Uint16Array(owner.length);
-  for (let k = 0; k < owner.length; k++) segmentRule[k] = c.lineClass[owner[k]!]!;
+  for (let k = 0; k < owner.length; k++) segmentRule[k] = c.lineRule[owner[k]!]!;
   return {
     kind: 'lines',
     originX: c.originX,

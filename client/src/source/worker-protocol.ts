@@ -91,7 +91,7 @@ export interface LinePayload {
   segmentCount: number;
   /** Per segment: ax, ay, bx, by (relative to the origin), z0, z1: drawn for z0 <= z < z1. */
   segments: Float32Array;
-  /** Per segment: the line it belongs to, and that line's style rule (for now its class). */
+  /** Per segment: the line it belongs to, and that line's style rule (format/line-style.ts). */
   segmentLine: Uint32Array;
   segmentRule: Uint16Array;
   /** Per line: its class, its input feature (-1: none) and its z range (zStart, zEnd). */
