@@ -1,6 +1,11 @@
 // A line chunk on the GPU: its segments as one instance buffer (each instance a quad around one
 // segment, line.vert) and each segment's style rule, bound in a vertex array object. The
 // segments and their lines stay on the CPU too, for picking.
+//
+// A slice meets only the segments alive at its z, a small part of a chunk's (each segment of
+// each simplified version of each line lives over a short z range). The buffers hold those that
+// meet a z window around the slice's range, chosen again when the slice leaves it: drawing a
+// frame then costs the segments near its z, not the whole chunk's.
 import type { Box3 } from '../../../format/cube-index.js';
 import { payloadBytes, type LinePayload } from '../source/worker-protocol.js';
 
@@ -25,6 +30,9 @@ export class GpuLineChunk {
   lastUsed = 0;
   private readonly vao: WebGLVertexArrayObject;
   private readonly buffers: WebGLBuffer[];
+  /** The z window the buffers hold the segments of, and how many they hold. */
+  private window: [number, number] = [Infinity, -Infinity];
+  private drawn = 0;
 
   constructor(gl: WebGL2RenderingContext, c: LinePayload) {
     this.file = c.file;
@@ -43,7 +51,7 @@ export class GpuLineChunk {
     gl.bindVertexArray(vao);
     const seg = gl.createBuffer();
     gl.bindBuffer(gl.ARRAY_BUFFER, seg);
-    gl.bufferData(gl.ARRAY_BUFFER, c.segments, gl.STATIC_DRAW);
+    gl.bufferData(gl.ARRAY_BUFFER, c.segments.byteLength, gl.DYNAMIC_DRAW);
     const stride = 4 * SEGMENT_FLOATS;
     gl.enableVertexAttribArray(0);
     gl.vertexAttribPointer(0, 4, gl.FLOAT, false, stride, 0);
@@ -53,7 +61,7 @@ export class GpuLineChunk {
     gl.vertexAttribDivisor(1, 1);
     const rule = gl.createBuffer();
     gl.bindBuffer(gl.ARRAY_BUFFER, rule);
-    gl.bufferData(gl.ARRAY_BUFFER, c.segmentRule, gl.STATIC_DRAW);
+    gl.bufferData(gl.ARRAY_BUFFER, c.segmentRule.byteLength, gl.DYNAMIC_DRAW);
     gl.enableVertexAttribArray(2);
     gl.vertexAttribIPointer(2, 1, gl.UNSIGNED_SHORT, 2, 0);
     gl.vertexAttribDivisor(2, 1);
@@ -68,11 +76,37 @@ export class GpuLineChunk {
     return [this.lineZ[2 * i]!, this.lineZ[2 * i + 1]!];
   }
 
-  /** One quad (a triangle strip of 4 vertices) per segment. */
+  /**
+   * Makes the buffers hold every segment that meets [zMin, zMax] (those of a window `margin`
+   * wider on each side, when the range is not inside the last one), in order; returns how many.
+   */
+  prepare(gl: WebGL2RenderingContext, zMin: number, zMax: number, margin: number): number {
+    const [w0, w1] = this.window;
+    if (zMin >= w0 && zMax <= w1) return this.drawn;
+    const lo = zMin - margin, hi = zMax + margin;
+    const s = this.segments, F = SEGMENT_FLOATS;
+    const keep: number[] = [];
+    for (let k = 0; k < this.segmentCount; k++) if (s[F * k + 4]! <= hi && s[F * k + 5]! > lo) keep.push(k);
+    const segs = new Float32Array(F * keep.length), rules = new Uint16Array(keep.length);
+    keep.forEach((k, i) => {
+      segs.set(s.subarray(F * k, F * k + F), F * i);
+      rules[i] = this.segmentRule[k]!;
+    });
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.buffers[0]!);
+    gl.bufferSubData(gl.ARRAY_BUFFER, 0, segs);
+    gl.bindBuffer(gl.ARRAY_BUFFER, this.buffers[1]!);
+    gl.bufferSubData(gl.ARRAY_BUFFER, 0, rules);
+    gl.bindBuffer(gl.ARRAY_BUFFER, null);
+    this.window = [lo, hi];
+    this.drawn = keep.length;
+    return this.drawn;
+  }
+
+  /** One quad (a triangle strip of 4 vertices) per segment prepared. */
   draw(gl: WebGL2RenderingContext): void {
-    if (this.segmentCount === 0) return;
+    if (this.drawn === 0) return;
     gl.bindVertexArray(this.vao);
-    gl.drawArraysInstanced(gl.TRIANGLE_STRIP, 0, 4, this.segmentCount);
+    gl.drawArraysInstanced(gl.TRIANGLE_STRIP, 0, 4, this.drawn);
   }
 
   delete(gl: WebGL2RenderingContext): void {

@@ -19,12 +19,15 @@ export class LinePass {
 
   /**
    * Draws the chunks' lines over the canvas, `ratio` device px per CSS px (a standard pixel of
-   * 0.28 mm is a CSS pixel); `sliceRange` the slicing surface's z range over the view. Returns
-   * the segments submitted.
+   * 0.28 mm is a CSS pixel); `sliceRange` the slicing surface's z range over the view, and
+   * `zWindow` how far beyond it the chunks keep segments ready (gpu-line-chunk.ts). Returns the
+   * segments submitted (each drawn twice, casing and fill).
    */
-  draw(targets: Targets, view: ViewGeometry, ratio: number, chunks: readonly GpuLineChunk[], rules: WebGLTexture, sliceRange: [number, number]): number {
+  draw(targets: Targets, view: ViewGeometry, ratio: number, chunks: readonly GpuLineChunk[], rules: WebGLTexture, sliceRange: [number, number], zWindow: number): number {
     if (chunks.length === 0) return 0;
     const gl = this.gl;
+    let segments = 0;
+    for (const c of chunks) segments += c.prepare(gl, sliceRange[0], sliceRange[1], zWindow);
     const p = this.program;
     p.use();
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
@@ -44,14 +47,12 @@ export class LinePass {
     gl.uniform2f(p.loc('uHalfSize'), view.width / 2, view.height / 2);
     gl.uniform2f(p.loc('uSliceRange'), sliceRange[0], sliceRange[1]);
     const uOffset = p.loc('uOffset'), uCasing = p.loc('uCasing');
-    let segments = 0;
     for (const casing of [1, 0]) {
       gl.uniform1i(uCasing, casing);
       for (const c of chunks) {
         // The origin's offset in float64, rounded once: positions stay small.
         gl.uniform2f(uOffset, c.originX - view.centerX, c.originY - view.centerY);
         c.draw(gl);
-        segments += c.segmentCount;
       }
     }
     gl.bindVertexArray(null);
@@ -61,7 +62,7 @@ export class LinePass {
       gl.activeTexture(gl.TEXTURE0 + u);
       gl.bindTexture(gl.TEXTURE_2D, null);
     }
-    return segments / 2;
+    return segments;
   }
 
   delete(): void {

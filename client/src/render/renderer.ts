@@ -231,7 +231,8 @@ export class Renderer {
   /** The cube's lines over the map just presented; returns the segments submitted. */
   private drawLines(g: Gpu, f: FrameParams, lineChunks: readonly GpuLineChunk[]): number {
     if (!g.lineRules || lineChunks.length === 0) return 0;
-    return g.lines.draw(g.targets, f.view, f.pixelRatio, lineChunks, g.lineRules, f.sliceRange);
+    // A window of 2% of the cube's z either side: refilled every few dozen frames of a zoom.
+    return g.lines.draw(g.targets, f.view, f.pixelRatio, lineChunks, g.lineRules, f.sliceRange, 0.02 * f.zMax);
   }
 
   /** The overlays over the canvas, drawn again only if the view or the layers changed. */
