@@ -53,7 +53,7 @@ export async function main(argv: string[]): Promise<number> {
     }
     // Any other path that cannot be read or written: one line naming it, not a stack trace.
     if (isFsError(err)) {
-      process.stderr.write(`ssc ${name}: cannot ${err.syscall ?? 'use'} ${err.path}: ${fsReason(err)}\n`);
+      process.stderr.write(`ssc ${name}: cannot ${err.syscall}${err.path ? ` ${err.path}` : ''}: ${fsReason(err)}\n`);
       return 1;
     }
     throw err;

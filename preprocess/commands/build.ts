@@ -2,7 +2,7 @@
 import { promises as fs } from 'node:fs';
 import { parseArgs } from 'node:util';
 import { InputError } from '../io/errors.js';
-import { checkOutputPath } from '../io/output-path.js';
+import { checkOutputPath, fsReason, isFsError } from '../io/output-path.js';
 import { generalizeFile } from '../pipeline.js';
 import { buildCube } from '../ssc/build-cube.js';
 import { readTgap, TGAP_MAGIC } from '../../format/tgap.js';
@@ -33,7 +33,7 @@ async function isTgap(file: string): Promise<boolean> {
       await h.close();
     }
   } catch (err) {
-    throw new InputError(`cannot read input: ${(err as Error).message}`, { file });
+    throw new InputError(`cannot read input: ${isFsError(err) ? fsReason(err) : (err as Error).message}`, { file });
   }
 }
 

@@ -50,5 +50,6 @@ export async function writeDirAtomic(target: string, fill: (dir: string) => Prom
 
 /** A file-system failure named by the target the user gave (not the temporary sibling). */
 function writeError(target: string, err: unknown): unknown {
-  return isFsError(err) ? new OutputError(`cannot write ${target}: ${fsReason(err)}`) : err;
+  if (!isFsError(err)) return err;
+  return new OutputError(`cannot write ${target}: ${err.code === 'ENOENT' ? `the folder ${path.dirname(path.resolve(target))} does not exist` : fsReason(err)}`);
 }

@@ -26,8 +26,10 @@ export function fsReason(err: NodeJS.ErrnoException): string {
   }
 }
 
-export function isFsError(err: unknown): err is NodeJS.ErrnoException & { path: string } {
-  return err instanceof Error && typeof (err as NodeJS.ErrnoException).code === 'string' && typeof (err as NodeJS.ErrnoException).path === 'string';
+/** An error of a file-system call (it has a code such as ENOENT and the call's name). */
+export function isFsError(err: unknown): err is NodeJS.ErrnoException & { code: string; syscall: string } {
+  const e = err as NodeJS.ErrnoException;
+  return err instanceof Error && typeof e.code === 'string' && typeof e.syscall === 'string';
 }
 
 /**

@@ -7,6 +7,7 @@ import path from 'node:path';
 import { feature as topoFeature } from 'topojson-client';
 import type { Topology } from 'topojson-specification';
 import { InputError, type FeatureRef } from './errors.js';
+import { fsReason, isFsError } from './output-path.js';
 import { ProblemList } from './problems.js';
 
 export interface InputFeature {
@@ -50,7 +51,7 @@ export async function readInput(file: string, opts: ReadOptions = {}): Promise<R
   try {
     buf = await fs.readFile(file);
   } catch (err) {
-    throw new InputError(`cannot read input: ${(err as Error).message}`, { file });
+    throw new InputError(`cannot read input: ${isFsError(err) ? fsReason(err) : (err as Error).message}`, { file });
   }
   const gzipped = buf.length >= 2 && buf[0] === 0x1f && buf[1] === 0x8b;
   if (!gzipped && /\.gz$/i.test(file)) {
