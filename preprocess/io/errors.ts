@@ -38,6 +38,9 @@ export function formatLocation([x, y]: [number, number]): string {
   return `at (${fmt(x)}, ${fmt(y)})`;
 }
 
+// Millimetres for metres; for degrees (longitude/latitude, |v| <= 360) about a centimetre.
 function fmt(v: number): string {
-  return Number.isFinite(v) ? String(Math.round(v * 1000) / 1000) : String(v);
+  if (!Number.isFinite(v)) return String(v);
+  const k = Math.abs(v) <= 360 ? 1e7 : 1e3;
+  return String(Math.round(v * k) / k);
 }
