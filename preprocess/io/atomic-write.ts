@@ -26,7 +26,7 @@ export async function writeFileAtomic(target: string, data: Uint8Array | string)
 export async function writeDirAtomic(target: string, fill: (dir: string) => Promise<void>): Promise<void> {
   const tmp = tempSibling(target);
   try {
-    await fs.mkdir(tmp);
+    await fs.mkdir(tmp, { recursive: true });
   } catch (err) {
     throw writeError(target, err);
   }
