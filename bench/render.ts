@@ -3,7 +3,8 @@
 // extent. Per view: time from page load to the first complete map, frame time (median and p95
 // over 60 frames of continuous redrawing, each frame a new view so the worker queries the
 // index), triangles submitted per frame, index query time per frame, and the chunks and bytes
-// the view needs. Cubes are built fresh (ssc build) and served by the project's static server.
+// the view needs. Lines: segments submitted per frame, the line chunks' bytes, and the frame
+// time with the lines hidden, measured in turns with the lines shown on the same page. Cubes are built fresh (ssc build) and served by the project's static server.
 // SwiftShader is a software GPU: the numbers compare versions on one machine, nothing more.
 import { execFile } from 'node:child_process';
 import { cp, mkdtemp, readFile, rm } from 'node:fs/promises';
@@ -17,6 +18,8 @@ import { datasets, median, root } from './datasets.js';
 
 const run = promisify(execFile);
 const WIDTH = 1280, HEIGHT = 720, FRAMES = 60, WARMUP = 5;
+/** Frame time with and without lines: this many turns of each, FRAMES / TURNS frames a turn. */
+const TURNS = 3;
 
 /** The test page's map (a VarioMap) and its engine (engineOf(map)), as the page has them. */
 interface PageMap {
@@ -24,14 +27,16 @@ interface PageMap {
   getCenterProjected(): [number, number];
   jumpTo(v: { centerProjected: [number, number] }): void;
   getMetadata(): unknown;
+  setLinesVisible(v: boolean): void;
 }
 interface PageEngine {
   firstCompleteAt: number | null;
   redraw(): void;
-  on(t: 'render', f: (s: { triangles: number; queryMs: number }) => void): void;
-  off(t: 'render', f: (s: { triangles: number; queryMs: number }) => void): void;
+  on(t: 'render', f: (s: Stats) => void): void;
+  off(t: 'render', f: (s: Stats) => void): void;
   neededChunks(): { visible: string[]; margin: string[] };
 }
+interface Stats { triangles: number; segments: number; queryMs: number }
 declare const map: PageMap;
 declare const engine: PageEngine;
 
@@ -50,7 +55,7 @@ async function main(): Promise<void> {
   const filter = process.argv[2];
   const sets = datasets(filter, ['bgt_otterlo_1800m', 'nlcd_zion']);
   const browser = await launchChromium();
-  const rows: string[][] = [['dataset', 'view', 'scale', 'first map ms', 'frame ms median', 'frame ms p95', 'triangles/frame', 'at 5 places', 'query ms/frame', 'chunks', 'MB', 'long tasks load', 'long tasks frames']];
+  const rows: string[][] = [['dataset', 'view', 'scale', 'first map ms', 'frame ms median', 'frame ms p95', 'no lines ms', 'triangles/frame', 'at 5 places', 'segments/frame', 'query ms/frame', 'chunks', 'MB', 'line MB', 'long tasks load', 'long tasks frames']];
   const ratios: string[] = [];
   try {
     for (const d of sets) {
@@ -62,6 +67,7 @@ async function main(): Promise<void> {
         const index = parseIndex(JSON.parse(await readFile(path.join(dir, 'cube/index.json'), 'utf8')));
         // Sub-index files are not followed here: the byte count covers the chunks in index.json.
         const leafBytes = new Map(leaves(index.root, []).map((l) => [l.file, l.bytes]));
+        const lineBytes = new Map((index.lines ?? []).map((l) => [l.file, l.bytes]));
         const meta = index.meta;
         const [x0, y0, x1, y1] = meta.extent;
         const centre: [number, number] = [(x0 + x1) / 2, (y0 + y1) / 2];
@@ -93,16 +99,20 @@ async function main(): Promise<void> {
             const needed = await page.evaluate(() => engine.neededChunks());
             const files = [...needed.visible, ...needed.margin];
             const bytes = files.reduce((s, f) => s + (leafBytes.get(f) ?? 0), 0);
-            const samples = await page.evaluate(
-              ([n]) =>
-                new Promise<{ t: number; triangles: number; queryMs: number }[]>((resolve) => {
-                  const out: { t: number; triangles: number; queryMs: number }[] = [];
+            const lineMb = files.reduce((s, f) => s + (lineBytes.get(f) ?? 0), 0) / 1e6;
+            /** n frames in a row, each a new view; the first `warmup` are dropped. */
+            const frames = (n: number, warmup: number, lines: boolean): Promise<{ ms: number[]; stats: Stats[] }> => page.evaluate(
+              ([n, warmup, lines]) =>
+                new Promise<{ ms: number[]; stats: Stats[] }>((resolve) => {
+                  map.setLinesVisible(lines);
+                  const out: { t: number; s: Stats }[] = [];
                   const [cx, cy] = map.getCenterProjected();
-                  const f = (s: { triangles: number; queryMs: number }): void => {
-                    out.push({ t: performance.now(), triangles: s.triangles, queryMs: s.queryMs });
-                    if (out.length >= n) {
+                  const f = (s: Stats): void => {
+                    out.push({ t: performance.now(), s: { triangles: s.triangles, segments: s.segments, queryMs: s.queryMs } });
+                    if (out.length >= n + warmup + 1) {
                       engine.off('render', f);
-                      resolve(out);
+                      const kept = out.slice(warmup);
+                      resolve({ ms: kept.slice(1).map((k, i) => k.t - kept[i]!.t), stats: kept.map((k) => k.s) });
                       return;
                     }
                     // A new view every frame (a millimetre pan): a full redraw and an index query.
@@ -111,12 +121,19 @@ async function main(): Promise<void> {
                   engine.on('render', f);
                   engine.redraw();
                 }),
-              [FRAMES + WARMUP + 1] as const,
+              [n, warmup, lines] as const,
             );
+            const frameMs: number[] = [], noLinesMs: number[] = [];
+            const kept: Stats[] = [];
+            for (let t = 0; t < TURNS; t++) {
+              const on = await frames(FRAMES / TURNS, t === 0 ? WARMUP : 2, true);
+              frameMs.push(...on.ms);
+              kept.push(...on.stats);
+              noLinesMs.push(...(await frames(FRAMES / TURNS, 2, false)).ms);
+            }
+            await page.evaluate(() => map.setLinesVisible(true));
             const longFrames = await page.evaluate(() => (globalThis as unknown as { longTasks: number[] }).longTasks.splice(0));
             const fmt = (xs: number[]): string => (xs.length === 0 ? '0' : `${xs.length} (max ${Math.round(Math.max(...xs))} ms)`);
-            const kept = samples.slice(WARMUP);
-            const frameMs = kept.slice(1).map((s, i) => s.t - kept[i]!.t);
             // One place can sit where chunks meet; the mean over the centre and four places
             // around it says what a view at this scale usually draws.
             const placed: number[] = [];
@@ -141,11 +158,12 @@ async function main(): Promise<void> {
             rows.push([
               d.name, name, `1:${Math.round(scale)}`,
               firstMs === null ? 'never' : firstMs.toFixed(0),
-              median(frameMs).toFixed(1), p95(frameMs).toFixed(1),
+              median(frameMs).toFixed(1), p95(frameMs).toFixed(1), median(noLinesMs).toFixed(1),
               Math.round(median(kept.map((s) => s.triangles))).toString(),
               Math.round(triangleMeans[triangleMeans.length - 1]!).toString(),
+              Math.round(median(kept.map((s) => s.segments))).toString(),
               median(kept.map((s) => s.queryMs)).toFixed(2),
-              String(files.length), (bytes / 1e6).toFixed(2),
+              String(files.length), (bytes / 1e6).toFixed(2), lineMb.toFixed(2),
               fmt(longLoad), fmt(longFrames),
             ]);
             process.stderr.write(`${rows[rows.length - 1]!.join('  ')}\n`);

@@ -290,10 +290,11 @@ describe('interaction (bgt_otterlo_400m)', () => {
         new Promise<{ face: number; point: [number, number] } | null>((resolve) => {
           const m = (globalThis as unknown as VarioWindow).map;
           const fn = (ev: unknown): void => {
-            const e = ev as { feature: { face: number } | null; point: [number, number] };
-            if (!e.feature) return;
+            const e = ev as { features: { kind: string; face: number }[]; point: [number, number] };
+            const face = e.features.find((f) => f.kind === 'face');
+            if (!face) return;
             m.off('pointermove', fn);
-            resolve({ face: e.feature.face, point: e.point });
+            resolve({ face: face.face, point: e.point });
           };
           m.on('pointermove', fn);
         }),

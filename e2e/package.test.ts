@@ -29,7 +29,7 @@ const map = new VarioMap(options);
 map.addControl(new ZoomControl());
 const page = window as unknown as { map: VarioMap; clicked?: Feature | null };
 map.on('click', (e) => {
-  page.clicked = e.feature;
+  page.clicked = e.features.find((f) => f.kind === 'face') ?? null;
 });
 page.map = map;
 `;

@@ -30,6 +30,7 @@ interface StyleJson {
   classes: StyleClassJson[];
 }
 interface PickedFeature {
+  kind: string;
   face: number;
   classKey: string;
   classLabel: string;
@@ -37,6 +38,10 @@ interface PickedFeature {
   scaleRange: [number, number];
   sliceZ: number;
   outline?: [number, number][][];
+}
+/** A click or pointermove: everything under the pointer, topmost first (a line of the cube, then the face). */
+interface PointerEv {
+  features: PickedFeature[];
 }
 /** The part of VarioMap these tests use beyond the test page's MapApi. */
 interface StyleMap {
@@ -48,8 +53,8 @@ interface StyleMap {
   removeFeatureState(f: { face: number }, key?: string): unknown;
   getStatePaint(state: string): { color: string; opacity: number; outlineColor: string; outlineWidth: number };
   queryFeatures(p: [number, number], o?: { outline?: boolean }): Promise<PickedFeature[]>;
-  on(type: string, fn: (ev: { feature: PickedFeature | null }) => void): unknown;
-  off(type: string, fn: (ev: { feature: PickedFeature | null }) => void): unknown;
+  on(type: string, fn: (ev: PointerEv) => void): unknown;
+  off(type: string, fn: (ev: PointerEv) => void): unknown;
   getScaleDenominator(): number;
   getBoundsProjected(): [number, number, number, number];
 }
@@ -57,7 +62,7 @@ interface StyleWindow {
   map: StyleMap;
   clicked?: PickedFeature | null;
   hovered?: number;
-  onMove?: (ev: { feature: PickedFeature | null }) => void;
+  onMove?: (ev: PointerEv) => void;
 }
 
 /** The class of the upper face at pixel k (from the ID buffer). */
@@ -199,8 +204,9 @@ describe('run-time style and feature state (bgt_otterlo_400m)', () => {
     await p.page.evaluate(() => {
       const w = globalThis as unknown as StyleWindow;
       w.map.on('click', (ev) => {
-        w.clicked = ev.feature;
-        if (ev.feature) w.map.setFeatureState({ face: ev.feature.face }, { highlight: true });
+        const face = ev.features.find((f) => f.kind === 'face') ?? null;
+        w.clicked = face;
+        if (face) w.map.setFeatureState({ face: face.face }, { highlight: true });
       });
     });
     await p.page.mouse.click((k0 % W) + 0.5, Math.floor(k0 / W) + 0.5);
@@ -253,7 +259,7 @@ describe('run-time style and feature state (bgt_otterlo_400m)', () => {
 
     // Its outline on screen encloses exactly the face's pixels: the rings' signed area (outer
     // rings counter-clockwise, holes clockwise) is the face's pixel count times a pixel's area.
-    const [picked] = await p.page.evaluate((pt) => (globalThis as unknown as StyleWindow).map.queryFeatures(pt, { outline: true }), [(k0 % W) + 0.5, Math.floor(k0 / W) + 0.5] as [number, number]);
+    const picked = (await p.page.evaluate((pt) => (globalThis as unknown as StyleWindow).map.queryFeatures(pt, { outline: true }), [(k0 % W) + 0.5, Math.floor(k0 / W) + 0.5] as [number, number])).find((f) => f.kind === 'face');
     const bounds = await p.page.evaluate(() => (globalThis as unknown as StyleWindow).map.getBoundsProjected());
     const pixelArea = ((bounds[2] - bounds[0]) / W) * ((bounds[3] - bounds[1]) / H);
     let area = 0;
@@ -268,7 +274,7 @@ describe('run-time style and feature state (bgt_otterlo_400m)', () => {
       const w = globalThis as unknown as StyleWindow;
       w.onMove = (ev): void => {
         if (w.hovered !== undefined) w.map.removeFeatureState({ face: w.hovered }, 'hover');
-        w.hovered = ev.feature?.face;
+        w.hovered = ev.features.find((f) => f.kind === 'face')?.face;
         if (w.hovered !== undefined) w.map.setFeatureState({ face: w.hovered }, { hover: true });
       };
       w.map.on('pointermove', w.onMove);

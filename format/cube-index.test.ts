@@ -13,7 +13,7 @@ function index(): CubeIndexJson {
     meta: {
       name: 'Two', crs: 'EPSG:28992', extent: [0, 0, 2, 1], zMax: 2, steps: 2, phases: 8, baseScale: 1000, baseFaces: 2,
       pixelSizeMm: 0.28, scaleTable: [[0, 2], [2, 1]],
-      style: { name: 'Two', background: '#F4F1E8', classes: [{ key: 'b', label: 'B', color: '#AABBCC', weight: 2, linear: true }, { key: 'a', color: '#112233', pattern: { kind: 'hatch', color: '#000000', maxScale: 2500 } }] },
+      style: { name: 'Two', background: '#F4F1E8', classes: [{ key: 'b', label: 'B', color: '#AABBCC', weight: 2, linear: true, line: { width: 0.5 } }, { key: 'a', color: '#112233', pattern: { kind: 'hatch', color: '#000000', maxScale: 2500 } }] },
       attribution: '© us', source: 'two.geojson',
       faces: { count: 4, pageSize: 4096, pages: [{ first: 0, file: 'f-0123456789abcdef.bin' }] },
       attributes: { count: 2, pageSize: 4096, pages: [{ first: 0, file: 'a-0123456789abcdef.json' }] },
@@ -41,9 +41,10 @@ describe('index.json', () => {
     assert.deepEqual(back.meta.style, {
       name: 'Two', background: '#f4f1e8',
       classes: [
-        { key: 'b', label: 'B', color: '#aabbcc', weight: 2, linear: true },
+        { key: 'b', label: 'B', color: '#aabbcc', weight: 2, linear: true, line: { width: 0.5 } },
         { key: 'a', label: 'a', color: '#112233', weight: 1, linear: false, pattern: { kind: 'hatch', color: '#000000', maxScale: 2500 } },
       ],
+      lines: [{ classIndex: 0, by: null, values: null, width: 0.5, color: '#aabbcc', casing: null, weight: 2 }],
     });
     const [leaf, ext] = back.root.children;
     assert.ok(leaf && isLeaf(leaf) && leaf.sha256 === sha('a') && leaf.triangles === 2);

@@ -10,12 +10,14 @@ import type { Box3 } from './cube-index.js';
 import { FormatError } from './format-error.js';
 
 export const LINE_CHUNK_MAGIC = 0x4c435353; // "SSCL"
-export const LINE_CHUNK_VERSION = 1;
+export const LINE_CHUNK_VERSION = 2;
 const HEADER = 64;
 
 /** One line as the build hands it to the encoder (absolute coordinates). */
 export interface LineRecord {
   classIndex: number;
+  /** Index of the style's line rule that draws it (format/line-style.ts, `lineRules`). */
+  rule: number;
   /** Input feature whose attributes the line carries (-1: none). */
   feature: number;
   /** The line is on the map for zStart <= z < zEnd. */
@@ -37,6 +39,8 @@ export interface LineChunkData {
   /** x0, y0, z0, x1, y1, z1 with x, y relative to the origin. */
   box: Float32Array;
   lineClass: Uint16Array;
+  /** The line rule of each line (index into the style's `lineRules`). */
+  lineRule: Uint16Array;
   lineFeature: Int32Array;
   zStart: Float32Array;
   zEnd: Float32Array;
@@ -49,13 +53,12 @@ export interface LineChunkData {
   leaveZ: Float32Array;
 }
 
-const pad4 = (n: number): number => (n + 3) & ~3;
 
 export function lineChunkByteLength(lines: number, paths: number, vertices: number): number {
-  return HEADER + pad4(2 * lines) + 12 * lines + 4 * (lines + 1) + 4 * (paths + 1) + 12 * vertices;
+  return HEADER + 4 * lines + 12 * lines + 4 * (lines + 1) + 4 * (paths + 1) + 12 * vertices;
 }
 
-type Columns = Pick<LineChunkData, 'lineClass' | 'lineFeature' | 'zStart' | 'zEnd' | 'linePaths' | 'pathVertices' | 'positions' | 'leaveZ'>;
+type Columns = Pick<LineChunkData, 'lineClass' | 'lineRule' | 'lineFeature' | 'zStart' | 'zEnd' | 'linePaths' | 'pathVertices' | 'positions' | 'leaveZ'>;
 
 /** The columns, one after the other in this order, as views of `buf` from `base`. */
 function columnViews(buf: ArrayBufferLike, base: number, L: number, P: number, V: number): Columns {
@@ -66,7 +69,8 @@ function columnViews(buf: ArrayBufferLike, base: number, L: number, P: number, V
     return make(at);
   };
   return {
-    lineClass: take((at) => new Uint16Array(buf, at, L), pad4(2 * L)),
+    lineClass: take((at) => new Uint16Array(buf, at, L), 2 * L),
+    lineRule: take((at) => new Uint16Array(buf, at, L), 2 * L),
     lineFeature: take((at) => new Int32Array(buf, at, L), 4 * L),
     zStart: take((at) => new Float32Array(buf, at, L), 4 * L),
     zEnd: take((at) => new Float32Array(buf, at, L), 4 * L),
@@ -99,6 +103,7 @@ export function encodeLineChunk(lines: readonly LineRecord[]): { bytes: Uint8Arr
   for (const l of lines) {
     z0 = Math.min(z0, l.zStart);
     z1 = Math.max(z1, l.zEnd);
+    if (!Number.isInteger(l.rule) || l.rule < 0 || l.rule > 0xffff) throw new Error(`a line of class ${l.classIndex}, feature #${l.feature}: line rule ${l.rule} is not a u16`);
     P += l.paths.length;
     l.paths.forEach((p, k) => {
       if (p.length < 4 || l.leaveZ[k]!.length !== p.length / 2) throw new Error(`a line of class ${l.classIndex}, feature #${l.feature}: polyline ${k} needs two points or more and a leave z per point`);
@@ -129,6 +134,7 @@ export function encodeLineChunk(lines: readonly LineRecord[]): { bytes: Uint8Arr
   let path = 0, vertex = 0;
   lines.forEach((l, i) => {
     c.lineClass[i] = l.classIndex;
+    c.lineRule[i] = l.rule;
     c.lineFeature[i] = l.feature;
     c.zStart[i] = l.zStart;
     c.zEnd[i] = l.zEnd;
@@ -195,7 +201,7 @@ export function lineOfChunk(c: LineChunkData, i: number): LineRecord {
     paths.push(p);
     leaveZ.push(Float64Array.from(c.leaveZ.subarray(v0, v1)));
   }
-  return { classIndex: c.lineClass[i]!, feature: c.lineFeature[i]!, zStart: c.zStart[i]!, zEnd: c.zEnd[i]!, paths, leaveZ };
+  return { classIndex: c.lineClass[i]!, rule: c.lineRule[i]!, feature: c.lineFeature[i]!, zStart: c.zStart[i]!, zEnd: c.zEnd[i]!, paths, leaveZ };
 }
 
 /** Whether a line is on the map at z. */

@@ -1,17 +1,11 @@
 // The style (docs/FORMAT.md, "Style"): which property holds the class, and per class its
-// colour, label, importance weight, pattern and whether it is linear. One schema for the file
-// a cartographer writes (`ssc generalize --style`) and for the copy stored in the tGAP and in
-// index.json (meta.style), which the map reads.
+// colour, label, importance weight, pattern, whether it is linear and how its lines are drawn
+// (line-style.ts). One schema for the file a cartographer writes (`ssc generalize --style`)
+// and for the copy stored in the tGAP and in index.json (meta.style), which the map reads.
 import * as v from 'valibot';
+import { lineRules, LineStyleSchema, type LineRule, type LineStyleJson } from './line-style.js';
 import { PIXEL_SIZE_MM } from './pixel-size.js';
-
-const HEX = /^#[0-9a-fA-F]{6}$/;
-// Messages do not name the field: describeIssues puts its path in front.
-const hex = () => v.pipe(v.string('must be a colour "#rrggbb"'), v.regex(HEX, 'must be a colour "#rrggbb"'));
-const finite = () => v.pipe(v.number('must be a number'), v.finite('must be a finite number'));
-const unit = () => v.pipe(finite(), v.minValue(0, 'must be in [0, 1]'), v.maxValue(1, 'must be in [0, 1]'));
-const bool = () => v.boolean('must be true or false');
-const str = () => v.string('must be a string');
+import { bool, finite, hex, positive, str, unit } from './schema-values.js';
 
 export const PATTERN_KINDS = ['hatch', 'dots', 'cross'] as const;
 
@@ -26,16 +20,20 @@ const classEntries = {
   label: v.optional(str()),
   color: hex(),
   /** Importance per unit area: the least important face (area x weight) goes first. */
-  weight: v.optional(v.pipe(finite(), v.gtValue(0, 'must be a positive number')), 1),
+  weight: v.optional(positive(), 1),
   /** Long thin faces (roads, watercourses): split among their neighbours instead of merged whole. */
   linear: v.optional(bool(), false),
   /** Drawn over the fill within a scale range (client side). */
   pattern: v.optional(PatternSchema),
+  /** How its lines are drawn (line-style.ts); a linear class without it draws no lines. */
+  line: v.optional(LineStyleSchema),
 };
 
-const ClassSchema = v.object(classEntries);
+/** Only a linear class has lines. */
+const linesAreLinear = <T extends { linear: boolean; line?: unknown }>() => v.check<T, string>((c) => c.line === undefined || c.linear, 'line: only a linear class (linear: true) has lines');
+const ClassSchema = v.pipe(v.object(classEntries), linesAreLinear());
 /** In an array the key is given in the class: JSON objects put numeric keys first, arrays keep order. */
-const KeyedClassSchema = v.object({ key: v.union([v.string(), v.number()], 'must be a string or a number'), ...classEntries });
+const KeyedClassSchema = v.pipe(v.object({ key: v.union([v.string(), v.number()], 'must be a string or a number'), ...classEntries }), linesAreLinear());
 
 export const StyleSchema = v.object({
   name: v.optional(str(), 'unnamed'),
@@ -91,18 +89,23 @@ export interface StyleClass {
   weight: number;
   linear: boolean;
   pattern?: PatternJson;
+  /** How its lines are drawn, as the style gives it (resolved in `CubeStyle.lines`). */
+  line?: LineStyleJson;
 }
 
-/** The style as the map draws it: background and the classes in order. */
+/** The style as the map draws it: background, the classes in order and the line rules. */
 export interface CubeStyle {
   name: string;
   background: string;
   classes: StyleClass[];
+  /** The line rules in index order (line-style.ts), which a line chunk's rule column refers to. */
+  lines: LineRule[];
 }
 
-/** What the map draws of a parsed style: its name, background and classes (lower-case colours). */
+/** What the map draws of a parsed style: its name, background, classes (lower-case colours) and line rules. */
 export function drawnStyle(style: ParsedStyleJson): CubeStyle {
-  return { name: style.name, background: style.background.toLowerCase(), classes: styleClasses(style) };
+  const classes = styleClasses(style);
+  return { name: style.name, background: style.background.toLowerCase(), classes, lines: lineRules(classes) };
 }
 
 /** The classes of a parsed style in order, labels defaulting to the key and colours lower case. */
@@ -113,6 +116,7 @@ export function styleClasses(style: ParsedStyleJson): StyleClass[] {
   return entries.map(([key, c]) => {
     const out: StyleClass = { key, label: c.label ?? key, color: c.color.toLowerCase(), weight: c.weight, linear: c.linear };
     if (c.pattern) out.pattern = { ...c.pattern, color: c.pattern.color.toLowerCase() };
+    if (c.line) out.line = c.line;
     return out;
   });
 }

@@ -16,6 +16,7 @@ const commands: Record<string, () => Promise<Command>> = {
   build: () => import('./commands/build.js'),
   slice: () => import('./commands/slice.js'),
   inspect: () => import('./commands/inspect.js'),
+  style: () => import('./commands/style.js'),
 };
 
 function help(): string {

@@ -5,13 +5,15 @@ import { resolveCrs, type CrsInfo } from './io/crs.js';
 import { describeFeature, InputError } from './io/errors.js';
 import { InputProblems, ProblemList } from './io/problems.js';
 import { readInput, type InputFeature, type RawInput } from './io/read-input.js';
-import { defaultStyle, loadStyle, styleToJson } from './style.js';
+import { defaultStyle, loadStyle, styleToJson, type Style } from './style.js';
 import { generalize, type GeneralizeResult } from './tgap/generalize.js';
 import type { Tgap } from '../format/tgap-model.js';
 import { TGAP_VERSION } from '../format/tgap.js';
 import { buildTopology, type Topology } from './topology/build-topology.js';
 import { findDuplicateFeatures } from './topology/duplicate-features.js';
-import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
+import { recommendBaseScale } from './style-scaffold/base-scale.js';
+import { describeColourSources } from './style-scaffold/class-colours.js';
+import { guessClassProperty } from './style-scaffold/class-stats.js';
 import { lapTimer } from './lap-timer.js';
 
 export interface PipelineOptions {
@@ -36,6 +38,8 @@ export interface PipelineReport {
   topology: Pick<Topology, 'vertexCount' | 'nodeCount' | 'faceCount' | 'repairs' | 'holes'> & { edges: number; droppedDuplicates: number };
   generalize: GeneralizeResult['stats'] & { steps: number; facesLeft: number };
   timings: Record<string, number>;
+  /** Without a style: what was chosen instead, and how to write a style (lines to print). */
+  noStyle?: string[];
 }
 
 export async function generalizeFile(input: string, opts: PipelineOptions = {}): Promise<{ tgap: Tgap; report: PipelineReport }> {
@@ -62,7 +66,20 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
     }
     return String(v);
   });
-  const style = styleGiven ?? defaultStyle([...new Set(values.filter((v) => v !== null))], classProperty);
+  let style: Style;
+  let noStyle: string[] | undefined;
+  if (styleGiven) {
+    style = styleGiven;
+  } else {
+    const found = [...new Set(values.filter((v) => v !== null))];
+    style = defaultStyle(found, classProperty);
+    const hint = classProperty === null ? guessClassProperty(raw.features).property : null;
+    noStyle = [
+      classProperty === null
+        ? `no style: one class, one colour${hint ? ` (the property ${JSON.stringify(hint)} looks like a class: --class-property ${hint})` : ''}`
+        : `no style: class property ${JSON.stringify(classProperty)}, ${style.classes.length} classes coloured by ${describeColourSources(found)}`,
+    ];
+  }
   const classIndex = new Map(style.classes.map((c, i) => [c.key, i]));
   const classes = new Uint16Array(raw.features.length + 1);
   raw.features.forEach((f, i) => {
@@ -96,7 +113,11 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
     if (y < y0) y0 = y;
     if (y > y1) y1 = y;
   }
-  const baseScale = opts.baseScale ?? (style.baseScale > 0 ? style.baseScale : autoBaseScale(topo));
+  const baseScale = opts.baseScale ?? (style.baseScale > 0 ? style.baseScale : autoBaseScale(topo, style.resolutionMm));
+  noStyle?.push(
+    `no style: base scale 1:${baseScale}${opts.baseScale !== undefined ? ' (--base-scale)' : ' (chosen from the data: its mean face is 20 pixels across there)'}`,
+    `no style: to write one, run ssc style ${path.basename(input)} --out style.json and see docs/STYLE.md`,
+  );
   const g = generalize(topo, (f) => classes[f]!, style, {
     baseScale,
     resolutionMm: style.resolutionMm,
@@ -127,6 +148,7 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
     topology: { vertexCount: topo.vertexCount, nodeCount: topo.nodeCount, faceCount: topo.faceCount - 1, edges: topo.edges.length, repairs: topo.repairs, holes: topo.holes, droppedDuplicates },
     generalize: { ...g.stats, steps, facesLeft: g.facesAlive[g.facesAlive.length - 1]! },
     timings,
+    ...(noStyle ? { noStyle } : {}),
   };
   return { tgap: { meta, xs: g.xs, ys: g.ys, faces: g.faces, edges: g.edges, events: g.events }, report };
 }
@@ -173,13 +195,9 @@ function firstPoint(f: InputFeature): { location?: [number, number] } {
   return r && r.length >= 2 ? { location: [r[0]!, r[1]!] } : {};
 }
 
-/** A base scale at which an average face is about 20 screen pixels (0.28 mm) across, rounded to 1, 2 or 5 x 10^n. */
-function autoBaseScale(topo: Topology): number {
+/** The recommended base scale (style-scaffold/base-scale.ts) from the topology's faces. */
+function autoBaseScale(topo: Topology, resolutionMm: number): number {
   let area2 = 0;
   for (let f = 1; f < topo.faceCount; f++) area2 += Math.abs(topo.faceArea2[f]!);
-  const side = Math.sqrt(area2 / 2 / Math.max(1, topo.faceCount - 1));
-  const raw = side / ((20 * PIXEL_SIZE_MM) / 1000);
-  const e = Math.pow(10, Math.floor(Math.log10(raw)));
-  const m = raw / e;
-  return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * e;
+  return recommendBaseScale(area2 / 2, topo.faceCount - 1, resolutionMm);
 }

@@ -22,9 +22,17 @@ describe('style', () => {
   });
 
   test('the stored style reads back the same', () => {
-    const s = parseStyle({ name: 'x', baseScale: 5000, classes: [{ key: 2, color: '#010203', pattern: { kind: 'dots', color: '#000000', minScale: 100 } }, { key: 1, color: '#040506' }], compatibility: { 2: { 1: 0.7 } } });
+    const s = parseStyle({
+      name: 'x', baseScale: 5000,
+      classes: [
+        { key: 2, color: '#010203', pattern: { kind: 'dots', color: '#000000', minScale: 100 } },
+        { key: 1, color: '#040506', linear: true, line: { width: 0.3, casing: { width: 0.1, color: '#000000' }, by: 'k', rules: [{ values: ['a'], width: 0.5, casing: null }] } },
+      ],
+      compatibility: { 2: { 1: 0.7 } },
+    });
     const again = parseStyle(styleToJson(s));
     assert.deepEqual(again, s);
+    assert.deepEqual(again.lineRules.map((r) => [r.classIndex, r.width, r.casing?.width ?? null]), [[1, 0.3, 0.1], [1, 0.5, null]], 'the line rules with it');
   });
 
   test('every problem of a style file is named in one error', () => {

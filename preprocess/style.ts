@@ -3,9 +3,12 @@
 import { promises as fs } from 'node:fs';
 import * as v from 'valibot';
 import { describeIssues } from '../format/schema-issues.js';
+import { lineRules, type LineRule } from '../format/line-style.js';
 import { styleClasses, StyleSchema, type StyleClass } from '../format/style.js';
 import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
 import { InputError } from './io/errors.js';
+import { chooseClassColours, ONE_CLASS_COLOR } from './style-scaffold/class-colours.js';
+import { sortClassKeys } from './style-scaffold/class-stats.js';
 
 /** A class as the generalization uses it (format/style.ts has the file's form). */
 export type ClassStyle = StyleClass;
@@ -22,6 +25,8 @@ export interface Style {
   allowHoles: boolean;
   background: string;
   classes: ClassStyle[];
+  /** The line rules of the linear classes in index order (format/line-style.ts). */
+  lineRules: LineRule[];
   /** compat[loser][neighbour] in [0, 1], indexed like `classes`. */
   compat: Float64Array[];
   attribution: string;
@@ -84,22 +89,27 @@ export function parseStyle(json: unknown, file = 'style'): Style {
     allowHoles: s.allowHoles,
     background: s.background.toLowerCase(),
     classes,
+    lineRules: lineRules(classes),
     compat,
     attribution: s.attribution,
   };
 }
 
-/** A style for data without one: every distinct class value gets a colour of a fixed palette. */
+/**
+ * A style for data without one: the classes coloured as `ssc style` colours them (a known
+ * nomenclature, the class name, else a fixed palette); one class when there is no class property.
+ */
 export function defaultStyle(classValues: string[], classProperty: string | null): Style {
-  const palette = ['#8dd3c7', '#ffffb3', '#bebada', '#fb8072', '#80b1d3', '#fdb462', '#b3de69', '#fccde5', '#d9d9d9', '#bc80bd', '#ccebc5', '#ffed6f'];
-  const keys = [...classValues].sort();
-  const classes: ClassStyle[] = keys.map((key, i) => ({ key, label: key, color: palette[i % palette.length]!, weight: 1, linear: false }));
+  const chosen = classProperty === null
+    ? classValues.map((key) => ({ key, label: key, color: ONE_CLASS_COLOR, weight: 1 }))
+    : chooseClassColours(sortClassKeys(new Set(classValues)));
+  const classes: ClassStyle[] = chosen.map((c) => ({ key: c.key, label: c.label, color: c.color, weight: c.weight, linear: false }));
   const compat = classes.map((_, i) => {
     const row = new Float64Array(classes.length).fill(0.5);
     row[i] = 1;
     return row;
   });
-  return { name: 'default', classProperty, idProperty: null, baseScale: 0, resolutionMm: PIXEL_SIZE_MM, allowHoles: false, background: '#ffffff', classes, compat, attribution: '' };
+  return { name: 'default', classProperty, idProperty: null, baseScale: 0, resolutionMm: PIXEL_SIZE_MM, allowHoles: false, background: '#ffffff', classes, lineRules: [], compat, attribution: '' };
 }
 
 /** The style as JSON again (stored in the tGAP and the cube's metadata). */
@@ -107,7 +117,7 @@ export function styleToJson(style: Style): Record<string, unknown> {
   const classes: Record<string, unknown>[] = [];
   const compatibility: Record<string, Record<string, number>> = {};
   style.classes.forEach((c, i) => {
-    classes.push({ key: c.key, label: c.label, color: c.color, weight: c.weight, linear: c.linear, ...(c.pattern ? { pattern: c.pattern } : {}) });
+    classes.push({ key: c.key, label: c.label, color: c.color, weight: c.weight, linear: c.linear, ...(c.pattern ? { pattern: c.pattern } : {}), ...(c.line ? { line: c.line } : {}) });
     const row: Record<string, number> = {};
     style.classes.forEach((d, j) => {
       if (i !== j) row[d.key] = style.compat[i]![j]!;

@@ -4,6 +4,7 @@
 import assert from 'node:assert/strict';
 import type { InputFeature } from '../preprocess/io/read-input.js';
 import type { ClassStyle, Style } from '../preprocess/style.js';
+import { lineRules, type LineStyleJson } from '../format/line-style.js';
 import { TGAP_VERSION } from '../format/tgap.js';
 import type { Tgap } from '../format/tgap-model.js';
 import { generalize } from '../preprocess/tgap/generalize.js';
@@ -92,13 +93,18 @@ export function edgePoints(st: PlanarState, e: number): XY[] {
 }
 
 /**
- * A style for the fixtures: classes with their weights and linearity; compatibility 1 within
- * a class and `compat[a][b]` (default 1) between classes a and b.
+ * A style for the fixtures: classes with their weights and linearity (a linear class draws its
+ * lines 0.5 mm wide unless `line` says otherwise); compatibility 1 within a class and
+ * `compat[a][b]` (default 1) between classes a and b.
  */
-export function fixtureStyle(classes: { key: string; weight?: number; linear?: boolean }[], compat: Record<string, Record<string, number>> = {}): Style {
-  const cs: ClassStyle[] = classes.map((c) => ({ key: c.key, label: c.key, color: '#808080', weight: c.weight ?? 1, linear: c.linear ?? false }));
+export function fixtureStyle(classes: { key: string; weight?: number; linear?: boolean; line?: LineStyleJson }[], compat: Record<string, Record<string, number>> = {}): Style {
+  const cs: ClassStyle[] = classes.map((c) => {
+    const out: ClassStyle = { key: c.key, label: c.key, color: '#808080', weight: c.weight ?? 1, linear: c.linear ?? false };
+    if (c.line ?? c.linear) out.line = c.line ?? { width: 0.5 };
+    return out;
+  });
   const matrix = cs.map((a) => Float64Array.from(cs.map((b) => (a.key === b.key ? 1 : compat[a.key]?.[b.key] ?? 1))));
-  return { name: 'fixture', classProperty: 'cls', idProperty: null, baseScale: 1000, resolutionMm: 0.28, allowHoles: false, background: '#ffffff', classes: cs, compat: matrix, attribution: '' };
+  return { name: 'fixture', classProperty: 'cls', idProperty: null, baseScale: 1000, resolutionMm: 0.28, allowHoles: false, background: '#ffffff', classes: cs, lineRules: lineRules(cs), compat: matrix, attribution: '' };
 }
 
 /** Equal up to rounding (areas summed from float coordinates). */

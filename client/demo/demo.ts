@@ -62,10 +62,11 @@ class InfoBox implements Control {
     m.off('click', this.onClick);
   }
 
-  private readonly onClick = (ev: { feature: { classLabel: string; face: number; scaleRange: [number, number] } | null }): void => {
+  private readonly onClick = (ev: { feature: ({ kind: 'face'; face: number } | { kind: 'line' }) & { classLabel: string; scaleRange: [number, number] } | null }): void => {
     if (!this.feature) return;
     const f = ev.feature;
-    this.feature.textContent = f ? `${f.classLabel} (face ${f.face}), shown from 1:${Math.round(f.scaleRange[0])} to 1:${Math.round(f.scaleRange[1])}` : '';
+    const what = f?.kind === 'face' ? `face ${f.face}` : 'line';
+    this.feature.textContent = f ? `${f.classLabel} (${what}), shown from 1:${Math.round(f.scaleRange[0])} to 1:${Math.round(f.scaleRange[1])}` : '';
   };
 }
 map.addControl(new InfoBox(), 'top-left');

@@ -63,7 +63,8 @@ if (params.get('legend') === '1') map.addControl(new LegendControl(), 'top-right
 if (tool !== 'idw') {
   map.on('click', (ev) => {
     const f = ev.feature;
-    say(f ? `${f.classLabel} (face ${f.face}, steps ${f.stepLow}-${f.stepHigh})\n${JSON.stringify(f.properties, null, 1)}` : '');
+    const what = f?.kind === 'face' ? `face ${f.face}, steps ${f.stepLow}-${f.stepHigh}` : 'line';
+    say(f ? `${f.classLabel} (${what})\n${JSON.stringify(f.properties, null, 1)}` : '');
   });
 }
 

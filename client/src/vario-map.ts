@@ -10,7 +10,7 @@ import { ScaleLimits } from './camera/scale-limits.js';
 import { StepZoom } from './camera/step-zoom.js';
 import { bindEngine } from './engine/engine-of.js';
 import { MapEngine } from './engine/map-engine.js';
-import type { Feature, QueryOptions } from './engine/picking.js';
+import type { FaceFeature, Feature, LineFeature, QueryOptions } from './engine/picking.js';
 import { Evented } from './events.js';
 import { CrsError, CrsTransform } from './geo/crs-transform.js';
 import { LngLat, type LngLatLike } from './geo/lng-lat.js';
@@ -33,7 +33,7 @@ import { AttributionControl } from './ui/attribution-control.js';
 import { MapDom, type Control, type ControlPosition } from './ui/map-dom.js';
 import { UrlHash } from './ui/url-hash.js';
 
-export type { Bbox, Feature, QueryOptions, FeatureRef, FeatureState, DrawnState, StatePaint, ClassStyleJson, CubeStyle, StyleJson, BlendingOptions, BlendMode, BoundaryOptions, SurfaceSpec, SourceErrorInfo, Camera, HandlerName, InteractionSettings, MapPointerEvent, Control, ControlPosition };
+export type { Bbox, FaceFeature, Feature, LineFeature, QueryOptions, FeatureRef, FeatureState, DrawnState, StatePaint, ClassStyleJson, CubeStyle, StyleJson, BlendingOptions, BlendMode, BoundaryOptions, SurfaceSpec, SourceErrorInfo, Camera, HandlerName, InteractionSettings, MapPointerEvent, Control, ControlPosition };
 export type { LngLatLike, LngLatBoundsLike };
 export type { AnimationOptions, CameraOptions, FitBoundsOptions, FlyToOptions, MapMoveEvent, VarioMapEvents, VarioMapOptions, VarioMapSettings } from './map-options.js';
 
@@ -364,6 +364,16 @@ export class VarioMap extends Evented<VarioMapEvents> {
   setBoundaries(b: Partial<BoundaryOptions>): this {
     this.engine.setBoundaries(b);
     return this;
+  }
+
+  /** Shows or hides the cube's lines (roads and watercourses drawn as lines at smaller scales). */
+  setLinesVisible(visible: boolean): this {
+    this.engine.setLinesVisible(visible);
+    return this;
+  }
+
+  getLinesVisible(): boolean {
+    return this.engine.getLinesVisible();
   }
 
   getSettings(): VarioMapSettings {

@@ -1,4 +1,3 @@
-import { DEFAULT_LINE_WIDTH_PX } from '../map/draw-lines.js';
 import type { PipelineOptions } from '../pipeline.js';
 
 // Small parsers for command-line values; a bad value is a UsageError naming the option.
@@ -94,7 +93,7 @@ export function pipelineOptions(values: GeneralizeValues): PipelineOptions {
 }
 
 /** Options of the commands that draw a view to an image (ssc map, ssc slice). */
-// --line-width: lines of linear classes, in pixels (the style gives no width yet).
+// --no-lines: the faces alone (lines are drawn as the style's line rules say).
 export const viewOptionSpecs = {
   step: { type: 'string' },
   scale: { type: 'string' },
@@ -102,7 +101,7 @@ export const viewOptionSpecs = {
   bbox: { type: 'string' },
   out: { type: 'string' },
   ids: { type: 'string' },
-  'line-width': { type: 'string' },
+  'no-lines': { type: 'boolean' },
 } as const;
 
 export interface ViewValues {
@@ -112,13 +111,13 @@ export interface ViewValues {
   bbox?: string | undefined;
   out?: string | undefined;
   ids?: string | undefined;
-  'line-width'?: string | undefined;
+  'no-lines'?: boolean | undefined;
 }
 
 /** The checked view options: image size, ground box, and the step or scale asked for. */
 export function viewArgs(values: ViewValues, positionals: string[], what: string): {
   input: string; out: string; width: number; height: number; bbox: [number, number, number, number] | undefined;
-  step: number | undefined; scale: number | undefined; lineWidth: number;
+  step: number | undefined; scale: number | undefined; lines: boolean;
 } {
   if (positionals.length !== 1) throw new UsageError(`give one ${what}`);
   if (!values.out) throw new UsageError('--out <image.png> is required');
@@ -127,6 +126,6 @@ export function viewArgs(values: ViewValues, positionals: string[], what: string
   return {
     input: positionals[0]!, out: values.out, width, height, bbox: parseBbox(values.bbox),
     step: parseNumber(values.step, '--step', { min: 0 }), scale: parseNumber(values.scale, '--scale', { min: 1 }),
-    lineWidth: parseNumber(values['line-width'], '--line-width', { min: 0 }) ?? DEFAULT_LINE_WIDTH_PX,
+    lines: !values['no-lines'],
   };
 }

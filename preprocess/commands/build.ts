@@ -10,7 +10,9 @@ import type { Tgap } from '../../format/tgap-model.js';
 import { generalizeOptionSpecs, parseNumber, pipelineOptions, UsageError } from './args.js';
 import { withProblemsFile } from './problems-file.js';
 
-export const usage = `ssc build <input.geojson|file.tgap> --out <dir> [options]
+export const usage = `ssc build <input|file.tgap> --out <dir> [options]
+  input: polygons in any format ssc generalize reads (GeoJSON, TopoJSON, GeoPackage, Shapefile,
+  FlatGeobuf), or a tGAP that ssc generalize wrote
   --style <style.json>      for polygon input: classes, colours, weights (see ssc generalize)
   --chunk-bytes <n>         target chunk size (default 262144)
   --sub-index-bytes <n>     largest index file before subtrees move to sub-index files (default 131072)
@@ -60,7 +62,14 @@ export async function run(argv: string[]): Promise<void> {
   await checkOutputPath(values.out, 'directory');
   const t0 = performance.now();
   const input = positionals[0]!;
-  const tgap: Tgap = (await isTgap(input)) ? await readTgap(input) : (await withProblemsFile(values.problems, () => generalizeFile(input, options))).tgap;
+  let tgap: Tgap;
+  let noStyle: string[] = [];
+  if (await isTgap(input)) tgap = await readTgap(input);
+  else {
+    const g = await withProblemsFile(values.problems, () => generalizeFile(input, options));
+    tgap = g.tgap;
+    noStyle = g.report.noStyle ?? [];
+  }
   const r = await buildCube(tgap, values.out, {
     ...(chunkBytes !== undefined ? { chunkBytes } : {}),
     ...(subIndexBytes !== undefined ? { subIndexBytes } : {}),
@@ -77,6 +86,7 @@ export async function run(argv: string[]): Promise<void> {
   };
   const lines = r.lineChunkBytes.length > 0 ? `, ${r.lines} lines in ${r.lineChunkBytes.length} line chunks (${range(r.lineChunkBytes)})` : '';
   process.stdout.write(
+    noStyle.map((l) => l + '\n').join('') +
     `cube: ${tgap.meta.steps} steps, CRS ${tgap.meta.crs}${r.proj4 ? ' (with its proj4 definition)' : ''}, ${r.triangles} triangles in ${r.chunks} chunks (${range(r.chunkBytes)})${lines}, ${r.indexFiles} index file(s)\n` +
       `wrote ${values.out}: ${r.files} files, ${r.bytesWritten} bytes with the compressed copies, in ${((performance.now() - t0) / 1000).toFixed(1)} s\n`,
   );

@@ -7,11 +7,16 @@ import { encodeTgap } from '../../format/tgap.js';
 import { generalizeOptionSpecs, pipelineOptions, UsageError } from './args.js';
 import { problemsUsage, withProblemsFile } from './problems-file.js';
 
-export const usage = `ssc generalize <input.geojson|.geojson.gz|.topojson> --out <file.tgap> [options]
+export const usage = `ssc generalize <input> --out <file.tgap> [options]
+  input: GeoJSON (.geojson, .json), TopoJSON (.topojson), GeoPackage (.gpkg), Shapefile (.shp,
+  with its .dbf, .prj and .cpg beside it) or FlatGeobuf (.fgb), each also gzipped (.gz); the
+  format is read from the content, the CRS from the file (crs member, .prj, GeoPackage SRS,
+  FlatGeobuf header)
   --style <style.json>      classes, colours, weights, compatibility, base scale
   --class-property <name>   property holding the class (overrides the style)
-  --crs <EPSG:n>            CRS of the input when the file does not say
-  --layer <name>            TopoJSON object to read (default: all)
+  --crs <EPSG:n>            CRS of the input when the file does not say (wins over the file's)
+  --layer <name>            GeoPackage layer to read (needed when it has several); TopoJSON
+                            object to read (default: all)
   --precision <units>       snapping grid and T-junction tolerance (default 0.001)
   --base-scale <n>          scale denominator of the input (default: the style's, else derived)
   --allow-holes             holes in the domain are enclaves, not gaps
@@ -35,6 +40,7 @@ export async function run(argv: string[]): Promise<void> {
   const repairs = Object.entries(r.topology.repairs).filter(([, n]) => n > 0).map(([k, n]) => `${k} ${n}`).join(', ') || 'none';
   process.stdout.write(
     [
+      ...(r.noStyle ?? []),
       `input: ${tgap.meta.source} (${tgap.meta.crs}${tgap.meta.projectedFrom ? `, projected from ${tgap.meta.projectedFrom}` : ''})`,
       `topology: ${r.topology.faceCount} faces, ${r.topology.edges} edges, ${r.topology.nodeCount} nodes, ${r.topology.vertexCount} vertices`,
       `repairs: ${repairs}`,

@@ -1,12 +1,13 @@
-// ssc slice <dir> (--step s | --scale n) --size WxH [--bbox] [--surface spec] [--line-width px] --out slice.png [--ids ids.bin]
+// ssc slice <dir> (--step s | --scale n) --size WxH [--bbox] [--surface spec] [--no-lines] --out slice.png [--ids ids.bin]
 import { parseArgs } from 'node:util';
-import { zAtScale } from '../../format/scale.js';
+import { scaleAtZ, zAtScale } from '../../format/scale.js';
 import { parseSurface, type Surface } from '../../format/slicing-surface.js';
 import { writeFileAtomic } from '../io/atomic-write.js';
 import { lineOfChunk, type LineRecord } from '../../format/line-chunk.js';
-import { DEFAULT_LINE_WIDTH_PX, drawLines } from '../map/draw-lines.js';
+import { drawLines, type LinePaint } from '../map/draw-lines.js';
+import type { LineRule } from '../../format/line-style.js';
 import { fitView } from '../map/rasterize.js';
-import { idsToPng } from '../map/render-png.js';
+import { pngWithLines } from '../map/png-with-lines.js';
 import type { CpuSlicer } from '../ssc/cpu-slicer.js';
 import { CubeReader } from '../ssc/read-cube.js';
 import { UsageError, viewArgs, viewOptionSpecs } from './args.js';
@@ -18,10 +19,11 @@ export const usage = `ssc slice <cube dir> (--step <z> | --scale <denominator>) 
                          tilted:cx=..,cy=..,dzdx=..,dzdy=..   sine:amplitude=..,wavelength=..,angle=..
                          lens:cx=..,cy=..,radius=..,depth=..   idw:power=2,points=x y z;x y z
   --ids <file>         also write the face id of every pixel (uint32 little-endian, rows from the top)
-  --line-width <px>    width of the lines of linear classes (default ${DEFAULT_LINE_WIDTH_PX}; 0: none)
+  --no-lines           the faces alone, without the lines of linear classes
 The CPU reference slicer: at each pixel centre the nearest surface at or below the slicing
 surface gives the face, read through the index from the chunk files like the map does; lines
-are drawn over the faces where the surface's z at the pixel lies in their range.`;
+are drawn over the faces, as the style's line rules say (widths in mm at 0.28 mm per pixel),
+where the surface's z at the pixel lies in their z range and its scale in their rule's.`;
 
 export async function run(argv: string[]): Promise<void> {
   const { values, positionals } = parseArgs({ args: argv, allowPositionals: true, options: { ...viewOptionSpecs, surface: { type: 'string' } } });
@@ -39,20 +41,20 @@ export async function run(argv: string[]): Promise<void> {
   const view = fitView(meta.extent, v.width, v.height, v.bbox);
   const { slicer, zMin, zMax, chunks, triangles } = await sliceCube(cube, meta.zMax, view, surface);
   const lines: LineRecord[] = [];
-  for (const leaf of v.lineWidth > 0 ? cube.lineChunks({ ground: view.bbox, zMin, zMax }) : []) {
+  for (const leaf of v.lines ? cube.lineChunks({ ground: view.bbox, zMin, zMax }) : []) {
     const c = await cube.lineChunk(leaf);
     for (let i = 0; i < c.lineCount; i++) lines.push(lineOfChunk(c, i));
   }
-  const lineClass = drawLines(view, lines, (p) => slicer.zs[p]!, v.lineWidth);
-  await writeFileAtomic(v.out, pngByClass(slicer, lineClass, meta.style.classes.map((c) => c.color)));
+  const linePaint = drawLines(view, lines, meta.style.lines, { zAt: (p) => slicer.zs[p]!, scaleAt: (z) => scaleAtZ(meta, z) });
+  await writeFileAtomic(v.out, pngByClass(slicer, linePaint, meta.style.lines, meta.style.classes.map((c) => c.color)));
   if (values.ids) await writeFileAtomic(values.ids, new Uint8Array(slicer.ids.buffer));
   process.stdout.write(`z ${base.toFixed(3)} (${surface.spec.kind}, ${zMin.toFixed(2)}..${zMax.toFixed(2)}): ${chunks} chunks, ${triangles} triangles, ${v.width}x${v.height} px\n`);
 }
 
-/** Colours by the class of the line, else of the surface, at each pixel (the chunks hold both; no face table needed). */
-function pngByClass(sl: CpuSlicer, lineClass: Uint16Array, colours: string[]): Uint8Array {
+/** Colours by the line painted, else by the class of the surface, at each pixel (the chunks hold both; no face table needed). */
+function pngByClass(sl: CpuSlicer, linePaint: LinePaint, rules: readonly LineRule[], colours: string[]): Uint8Array {
   const { width, height } = sl.view;
-  const byPixel = new Uint32Array(width * height);
-  for (let p = 0; p < byPixel.length; p++) byPixel[p] = lineClass[p] || (sl.ids[p] === 0 ? 0 : sl.classes[p]! + 1);
-  return idsToPng(byPixel, width, height, (c) => colours[c - 1] ?? '#ff00ff');
+  const byClass = new Uint32Array(width * height);
+  for (let p = 0; p < byClass.length; p++) byClass[p] = sl.ids[p] === 0 ? 0 : sl.classes[p]! + 1;
+  return pngWithLines(byClass, linePaint, rules, width, height, (c) => colours[c - 1]);
 }

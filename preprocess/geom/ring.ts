@@ -15,6 +15,17 @@ export function ringArea2Flat(coords: ArrayLike<number>): number {
   return s;
 }
 
+/** Length of the boundary of a closed ring given as flat x,y pairs (open: the closing segment is counted). */
+export function ringPerimeterFlat(coords: ArrayLike<number>): number {
+  const n = coords.length >> 1;
+  let p = 0;
+  for (let i = 0; i < n; i++) {
+    const j = (i + 1) % n;
+    p += Math.hypot(coords[2 * j]! - coords[2 * i]!, coords[2 * j + 1]! - coords[2 * i + 1]!);
+  }
+  return p;
+}
+
 /** Twice the signed area of the closed ring through the given vertex ids (last id may repeat the first). */
 export function ringArea2(ids: ArrayLike<number>, xs: Float64Array, ys: Float64Array): number {
   let n = ids.length;

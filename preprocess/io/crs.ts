@@ -2,6 +2,7 @@
 // that must be projected first (they are never silently treated as metres).
 import proj4 from 'proj4';
 import { InputError } from './errors.js';
+import { epsgFromWkt, wktName } from './crs-from-wkt.js';
 import type { RawInput } from './read-input.js';
 
 export interface CrsInfo {
@@ -33,9 +34,21 @@ export function normaliseCrsName(name: string): string {
   return s;
 }
 
-function crsFromMember(member: unknown): string | null {
+function crsFromMember(member: unknown, input: RawInput, ext: [number, number, number, number]): string | null {
   if (typeof member !== 'object' || member === null) return null;
-  const m = member as { type?: unknown; properties?: { name?: unknown; code?: unknown } };
+  const m = member as { type?: unknown; properties?: { name?: unknown; code?: unknown; wkt?: unknown } };
+  // The readers of Shapefile, GeoPackage and FlatGeobuf give a CRS without an EPSG code as WKT.
+  if (m.type === 'wkt' && m.properties && typeof m.properties.wkt === 'string') {
+    const [x0, y0, x1, y1] = ext;
+    const code = epsgFromWkt(m.properties.wkt, [[x0, y0], [x1, y1], [x0, y1], [x1, y0], [(x0 + x1) / 2, (y0 + y1) / 2]]);
+    if (code === null) {
+      throw new InputError(
+        `declares the CRS ${JSON.stringify(wktName(m.properties.wkt))}, which matches no EPSG definition ssc knows; pass --crs EPSG:<code> to say which it is`,
+        { file: input.file },
+      );
+    }
+    return code;
+  }
   if (m.properties && typeof m.properties.name === 'string') return normaliseCrsName(m.properties.name);
   if (m.type === 'EPSG' && m.properties && (typeof m.properties.code === 'number' || typeof m.properties.code === 'string')) {
     return `EPSG:${m.properties.code}`;
@@ -70,13 +83,13 @@ function looksGeographic(ext: [number, number, number, number]): boolean {
  * `override` is the --crs option and wins over the file's own member.
  */
 export function resolveCrs(input: RawInput, override?: string): CrsInfo {
-  const declared = override ? normaliseCrsName(override) : crsFromMember(input.crsMember);
   const ext = extentOf(input);
+  const declared = override ? normaliseCrsName(override) : crsFromMember(input.crsMember, input, ext);
   // RFC 7946: GeoJSON without a crs member is WGS 84 longitude/latitude.
   const geographic = declared === null ? looksGeographic(ext) : GEOGRAPHIC.has(declared);
   if (declared === null && !geographic) {
     throw new InputError(
-      'has no "crs" member and its coordinates are not longitude/latitude; pass --crs EPSG:<code> to say which projected CRS (in metres) they are in',
+      'does not say its CRS (no "crs" member, .prj or spatial reference) and its coordinates are not longitude/latitude; pass --crs EPSG:<code> to say which projected CRS (in metres) they are in',
       { file: input.file },
     );
   }

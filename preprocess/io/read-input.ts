@@ -1,12 +1,14 @@
-// Reads polygon input (GeoJSON, gzipped GeoJSON, TopoJSON) into plain rings of numbers.
-// Everything that is not a polygon is refused here, with the feature named (all such
-// features of the input at once).
+// Reads polygon input (GeoJSON, TopoJSON, GeoPackage, Shapefile, FlatGeobuf, each optionally
+// gzipped) into plain rings of numbers. The binary formats come as GeoJSON features from their
+// readers (input-format.ts), so every format goes through the same checks below. Everything that
+// is not a polygon is refused here, with the feature named (all such features at once).
 import { promises as fs } from 'node:fs';
 import { gunzipSync } from 'node:zlib';
 import path from 'node:path';
 import { feature as topoFeature } from 'topojson-client';
 import type { Topology } from 'topojson-specification';
 import { InputError, type FeatureRef } from './errors.js';
+import { detectFormat, readBinaryFormat } from './input-format.js';
 import { fsReason, isFsError } from './output-path.js';
 import { ProblemList } from './problems.js';
 
@@ -31,7 +33,7 @@ export interface RawInput {
 }
 
 export interface ReadOptions {
-  /** For TopoJSON: the object to read (default: all objects, in key order). */
+  /** For GeoPackage: the layer to read (required when it has several); for TopoJSON: the object (default: all, in key order). */
   layer?: string;
   /** Property that names a feature in messages (default: feature.id, then "id"). */
   idProperty?: string;
@@ -64,6 +66,8 @@ export async function readInput(file: string, opts: ReadOptions = {}): Promise<R
       throw new InputError(`broken gzip: ${(err as Error).message}`, { file });
     }
   }
+  const format = detectFormat(buf, file);
+  if (format !== 'json') return parseDocument(await readBinaryFormat(format, buf, file, opts.layer), path.basename(file), opts);
   let doc: unknown;
   try {
     doc = parseJson(buf.toString('utf8'));

@@ -141,6 +141,8 @@ export interface PruneOptions {
    * whole network's length over the data's extent).
    */
   density?: number;
+  /** Importance per metre of each line (default: its class's weight); the style's line rules give it. */
+  weights?: ArrayLike<number>;
 }
 
 /**
@@ -169,7 +171,7 @@ export function pruneLines(
   const budget = lineBudget(scaleInfoOf(tgap), steps, area, density);
   const history = new FaceHistory(tgap);
   const atEdge = lines.map((l) => (history.boundaryAt(l.face, l.step - 1).some((side) => side.other === 0) ? 1 : 0));
-  const importance = lines.map((l) => l.length * style.classes[l.classIndex]!.weight);
+  const importance = lines.map((l, i) => l.length * (opts.weights?.[i] ?? style.classes[l.classIndex]!.weight));
   const { prunedStep, stats } = pruneOrder(lines, { importance, budget, atEdge });
   return { lines: lines.map((l, i) => ({ ...l, prunedStep: prunedStep[i]! })), density, budget, stats };
 }

@@ -37,7 +37,7 @@ export interface BuildReport {
   surfaces: SurfaceStats;
   chunks: number;
   chunkBytes: number[];
-  /** Lines written (0 without linear classes) and the bytes of each line chunk. */
+  /** Lines written (0 without line rules) and the bytes of each line chunk. */
   lines: number;
   lineChunkBytes: number[];
   indexFiles: number;
@@ -87,7 +87,7 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   lap('chunks');
   // Lines from the tGAP as generalized (the smooth build's face ids do not matter to them).
   const lineStyle = parseStyle(t.meta.style, `${t.meta.source}: the tGAP's style`);
-  const lines = lineStyle.classes.some((c) => c.linear) ? cubeLines(t, lineStyle) : null;
+  const lines = lineStyle.lineRules.length > 0 ? cubeLines(t, lineStyle) : null;
   const lineLeaves: LineChunkLeaf[] = [];
   for (const ch of lines ? lineChunks(lines, view) : []) {
     const { name, sha256 } = hashName('l', ch.bytes, 'bin');

@@ -1,16 +1,21 @@
 // Lines in the cube, on the 400 m cut of Otterlo: built by buildCube, read back by CubeReader
 // as the map would (the index's line chunks of a view, checked and decoded), they are the lines
-// of collapseLines + pruneLines: as many per class, the same coordinates to float32, z ranges at
-// phase 0 of the step born and the step pruned, and exactly the lines whose range holds a z are
-// alive there. A style without linear classes gives a cube without a lines entry.
+// of collapseLines + pruneLines of the lines the style draws: as many per class, the same
+// coordinates to float32, z ranges at phase 0 of the step born and the step pruned, and exactly
+// the lines whose range holds a z are alive there. Each line's rule is the one styles/bgt.json
+// gives its input feature's `klasse` (read from the GeoJSON itself). A style without linear
+// classes gives a cube without a lines entry.
 import assert from 'node:assert/strict';
+import { readFile } from 'node:fs/promises';
 import path from 'node:path';
 import test from 'node:test';
 import { lineAliveAt, lineOfChunk, linePathsAtZ, type LineRecord } from '../../format/line-chunk.js';
+import type { LineRule } from '../../format/line-style.js';
 import type { Tgap } from '../../format/tgap-model.js';
 import { dataset, styleFile } from '../../testing/paths.js';
 import { tempDir } from '../../testing/temp-dir.js';
 import { collapseLines } from '../lines/collapse-lines.js';
+import { keepLines } from '../lines/keep-lines.js';
 import { pruneLines, type PrunedLine } from '../lines/prune-lines.js';
 import { linePathsAt, simplifyLines } from '../lines/simplify-lines.js';
 import { generalizeFile } from '../pipeline.js';
@@ -36,8 +41,17 @@ test('bgt_otterlo_400m: the cube\'s lines read back are the collapsed and pruned
   const styleName = styleFile('bgt.json');
   const { tgap } = await generalizeFile(dataset('bgt_otterlo_400m.geojson'), { style: styleName });
   const style = await loadStyle(styleName);
+  // The input's own attributes, by feature index (the GeoJSON's order).
+  const input = JSON.parse(await readFile(dataset('bgt_otterlo_400m.geojson'), 'utf8')) as { features: { properties: { layer: string; klasse: string } }[] };
+  const klasseOf = (feature: number): string => input.features[feature]!.properties.klasse;
+
   const steps = tgap.meta.steps;
-  const pruned = pruneLines(collapseLines(tgap, style).lines, tgap, style).lines;
+  // The lines the style draws: of a class with `line`, whose rule is wider than 0, weighed by it.
+  const collapsed = collapseLines(tgap, style).lines;
+  const ruleOf = collapsed.map((l) => expectedRule(style.lineRules, l.classIndex, klasseOf(l.feature)));
+  const drawn = ruleOf.map((r) => r >= 0 && style.lineRules[r]!.width > 0);
+  const kept = keepLines(collapsed, drawn);
+  const pruned = pruneLines(kept, tgap, style, { weights: ruleOf.filter((_, i) => drawn[i]).map((r) => style.lineRules[r]!.weight) }).lines;
   // Lines pruned the step they are born are never on the map and not written.
   const shown = pruned.filter((l) => l.step < l.prunedStep);
   assert.ok(shown.length > 50 && shown.length < pruned.length, `${shown.length} of ${pruned.length} lines shown`);
@@ -75,6 +89,33 @@ test('bgt_otterlo_400m: the cube\'s lines read back are the collapsed and pruned
   }
   assert.equal(readOf.size, shown.length);
 
+  // Each line read back carries the rule of its feature's klasse: cycle paths the cycle-path rule,
+  // main roads the main-road rule, and so on; classes and values without a drawn line have none.
+  const byKlasse = new Map<string, Set<number>>();
+  for (const { line } of read) {
+    const p = input.features[line.feature]!.properties;
+    assert.equal(style.classes[line.classIndex]!.key, p.layer, `feature #${line.feature}: the line's class is its layer`);
+    const k = `${p.layer}/${p.klasse}`;
+    byKlasse.set(k, (byKlasse.get(k) ?? new Set()).add(line.rule));
+  }
+  const rule = (values: string[] | null, layer = 'wegdeel'): number =>
+    style.lineRules.findIndex((r) => style.classes[r.classIndex]!.key === layer && JSON.stringify(r.values) === JSON.stringify(values));
+  const want: Record<string, number> = {
+    'wegdeel/fietspad': rule(['fietspad']),
+    'wegdeel/rijbaan regionale weg': rule(['rijbaan regionale weg']),
+    'wegdeel/rijbaan lokale weg': rule(['rijbaan lokale weg']),
+    'wegdeel/voetpad': rule(['voetpad', 'voetpad op trap', 'voetgangersgebied']),
+    'wegdeel/inrit': rule(['inrit', 'parkeervlak']),
+    'wegdeel/parkeervlak': rule(['inrit', 'parkeervlak']),
+    'waterdeel/waterloop': rule(['waterloop'], 'waterdeel'),
+  };
+  assert.deepEqual(style.lineRules[want['wegdeel/fietspad']!]!.color, '#d06a5a', 'the cycle-path rule');
+  for (const [k, r] of Object.entries(want)) {
+    if (byKlasse.has(k)) assert.deepEqual([...byKlasse.get(k)!], [r], `${k}: every line has rule ${r}`);
+  }
+  for (const k of ['wegdeel/fietspad', 'wegdeel/rijbaan regionale weg', 'wegdeel/rijbaan lokale weg', 'wegdeel/voetpad', 'waterdeel/waterloop']) assert.ok(byKlasse.has(k), `lines of ${k} are stored`);
+  assert.deepEqual([...byKlasse.keys()].filter((k) => !(k in want)), [], 'no lines of verges, banks or classes without a drawn line');
+
   // At states and between them, in the whole extent and in a corner: the lines of the chunks the
   // index gives for the view that are alive there are exactly those whose state range holds it,
   // each with its simplified vertices of that state.
@@ -108,6 +149,12 @@ test('bgt_otterlo_400m: the cube\'s lines read back are the collapsed and pruned
   }
 });
 
+/** The rule styles/bgt.json gives a line of class `classIndex` with this klasse: the rule listing it, else the class's default. */
+function expectedRule(rules: readonly LineRule[], classIndex: number, klasse: string): number {
+  const listed = rules.findIndex((r) => r.classIndex === classIndex && r.values?.includes(klasse));
+  return listed >= 0 ? listed : rules.findIndex((r) => r.classIndex === classIndex && r.values === null);
+}
+
 /** Whether a line's ground box meets a view's. */
 function meets(l: LineRecord, g: [number, number, number, number]): boolean {
   const xs = l.paths.flatMap((p) => [...p].filter((_, i) => i % 2 === 0)), ys = l.paths.flatMap((p) => [...p].filter((_, i) => i % 2 === 1));
@@ -118,7 +165,7 @@ test('a style without linear classes gives a cube without lines; the classic bui
   const styleName = styleFile('bgt.json');
   const { tgap } = await generalizeFile(dataset('bgt_otterlo_400m.geojson'), { style: styleName });
   const style = tgap.meta.style as { classes: Record<string, unknown>[] };
-  const noLines: Tgap = { ...tgap, meta: { ...tgap.meta, style: { ...style, classes: style.classes.map((c) => ({ ...c, linear: false })) } } };
+  const noLines: Tgap = { ...tgap, meta: { ...tgap.meta, style: { ...style, classes: style.classes.map(({ line: _, ...c }) => ({ ...c, linear: false })) } } };
   const dir = tempDir(t);
   await buildCube(noLines, path.join(dir, 'areas'), { precompress: false, smooth: false });
   const areas = await CubeReader.open(path.join(dir, 'areas'));

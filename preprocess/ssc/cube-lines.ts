@@ -4,7 +4,9 @@
 import type { Box3 } from '../../format/cube-index.js';
 import { encodeLineChunk, groundBox, type LineRecord } from '../../format/line-chunk.js';
 import { phaseZ, type Tgap } from '../../format/tgap-model.js';
+import { lineRuleFinder } from '../../format/line-style.js';
 import { collapseLines } from '../lines/collapse-lines.js';
+import { keepLines } from '../lines/keep-lines.js';
 import { pruneLines } from '../lines/prune-lines.js';
 import { simplifyLines } from '../lines/simplify-lines.js';
 import type { Style } from '../style.js';
@@ -17,12 +19,25 @@ export function stateEndZ(state: number, steps: number): number {
   return state > steps ? steps + 1 : phaseZ(state, 0);
 }
 
-/** Lines in the cube's z, in the order collapseLines gives them; lines never on the map (pruned at birth) are left out. */
-export function cubeLines(tgap: Tgap, style: Pick<Style, 'classes'>): LineRecord[] {
+/**
+ * Lines in the cube's z, in the order collapseLines gives them, each with its line rule (the
+ * style's, from its feature's attributes). Lines never on the map are left out: those whose
+ * rule draws nothing (keep-lines.ts: they take no share of the line budget either) and those
+ * pruned at birth. Pruning weighs each line by its rule's weight.
+ */
+export function cubeLines(tgap: Tgap, style: Pick<Style, 'classes' | 'lineRules'>): LineRecord[] {
   const steps = tgap.meta.steps;
-  const pruned = pruneLines(collapseLines(tgap, style).lines, tgap, style).lines.filter((l) => l.step < l.prunedStep);
-  return simplifyLines(pruned, tgap).lines.map((l) => ({
+  const ruleOf = lineRuleFinder(style.lineRules);
+  const collapsed = collapseLines(tgap, style).lines;
+  const rules = collapsed.map((l) => ruleOf(l.classIndex, l.feature >= 0 ? tgap.meta.attributes[l.feature] : null));
+  const drawn = rules.map((r) => r >= 0 && style.lineRules[r]!.width > 0);
+  const kept = keepLines(collapsed, drawn);
+  const keptRules = rules.filter((_, i) => drawn[i]);
+  const { lines } = pruneLines(kept, tgap, style, { weights: keptRules.map((r) => style.lineRules[r]!.weight) });
+  const shown = lines.map((l, i) => ({ l, rule: keptRules[i]! })).filter(({ l }) => l.step < l.prunedStep);
+  return simplifyLines(shown.map(({ l }) => l), tgap).lines.map((l, i) => ({
     classIndex: l.classIndex,
+    rule: shown[i]!.rule,
     feature: l.feature,
     zStart: phaseZ(l.step, 0),
     zEnd: stateEndZ(l.prunedStep, steps),
@@ -41,7 +56,7 @@ export interface LineChunk {
 function lineBytes(l: LineRecord): number {
   let vertices = 0;
   for (const p of l.paths) vertices += p.length / 2;
-  return 18 + 4 * l.paths.length + 12 * vertices;
+  return 20 + 4 * l.paths.length + 12 * vertices;
 }
 
 /** Lines into chunks of nearly `targetBytes`, split where views are least likely to need both sides; lines keep their order within a chunk. */

@@ -12,7 +12,7 @@ const BOX: Box3 = [0, 0, 0, 10, 10, 100];
 
 /** A chunk of `bytes` vertex bytes and no triangles. */
 const chunk = (file: string, bytes = 100, bbox = BOX): ChunkPayload => ({
-  file, bbox, buffer: new ArrayBuffer(0), vertexCount: 0, triangleCount: 0, originX: 0, originY: 0,
+  kind: 'surfaces', file, bbox, buffer: new ArrayBuffer(0), vertexCount: 0, triangleCount: 0, originX: 0, originY: 0,
   vertexByteOffset: 0, vertexByteLength: bytes, indexByteOffset: 0, indexSize: 2, verified: true,
 });
 

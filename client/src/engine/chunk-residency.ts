@@ -6,7 +6,7 @@ import { surfaceRange } from '../../../format/slicing-surface.js';
 import type { MapView } from '../camera/map-view.js';
 import type { Camera } from '../geometry/camera.js';
 import { growBbox, viewBbox, type Bbox, type ViewGeometry } from '../geometry/view.js';
-import type { AheadView, ChunkPayload, ChunkStatus, NeededChunks, ViewRequest } from '../source/worker-protocol.js';
+import { payloadBytes, type AheadView, type ChunkStatus, type NeededChunks, type Payload, type ViewRequest } from '../source/worker-protocol.js';
 
 /** The worker's side (ChunkSource) as residency uses it. */
 export interface ChunkRequests {
@@ -18,7 +18,7 @@ export interface ChunkRequests {
 
 /** The GPU's side (Renderer) as residency uses it. */
 export interface GpuChunks {
-  upload(payload: ChunkPayload, frame: number): unknown;
+  upload(payload: Payload, frame: number): unknown;
   /** Frees memory beyond the budget, never a chunk in either set; returns the files freed. */
   evict(visible: ReadonlySet<string>, kept: ReadonlySet<string>): string[];
   readonly store: { has(file: string): boolean };
@@ -49,7 +49,7 @@ export class ChunkResidency {
   private visibleSet = new Set<string>();
   /** Kept on the GPU beyond the budget besides those on screen: margin and ahead. */
   private keptSet = new Set<string>();
-  private readonly pending: ChunkPayload[] = [];
+  private readonly pending: Payload[] = [];
   private ahead: Camera[] = [];
   private aheadChanged = false;
   private sentSeq = -1;
@@ -76,7 +76,7 @@ export class ChunkResidency {
     this.queryMs = n.queryMs;
   }
 
-  arrived(chunk: ChunkPayload): void {
+  arrived(chunk: Payload): void {
     this.pending.push(chunk);
   }
 
@@ -118,7 +118,7 @@ export class ChunkResidency {
       this.renderer.upload(c, frameNo);
       this.source.uploaded(c.file);
       this.uploaded(c.file);
-      bytes += c.vertexByteLength + c.indexSize * 3 * c.triangleCount;
+      bytes += payloadBytes(c);
       if (boxMeets(c.bbox, drawn)) changed = true;
     }
     this.source.evicted(dropped);

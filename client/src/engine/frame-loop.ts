@@ -6,6 +6,7 @@ import { boxMeets } from '../../../format/index-query.js';
 import type { MapView } from '../camera/map-view.js';
 import { colourParams, type BlendingOptions, type BoundaryOptions, type StatePaints } from '../render/colour-options.js';
 import type { GpuChunk } from '../render/gpu-chunk.js';
+import type { GpuLineChunk } from '../render/gpu-line-chunk.js';
 import type { Renderer } from '../render/renderer.js';
 import { jitter, weight } from '../render/supersampling.js';
 import { queryView, type ChunkResidency } from './chunk-residency.js';
@@ -21,6 +22,8 @@ export interface RenderSettings {
   paints: StatePaints;
   /** Frames accumulated (jittered) while the view is still; 1: off. */
   supersampling: number;
+  /** Draw the cube's lines. */
+  lines: boolean;
   /** Chunks are also fetched this fraction of the view's size around it. */
   prefetchMargin: number;
 }
@@ -28,6 +31,8 @@ export interface RenderSettings {
 export interface RenderStats {
   frame: number;
   triangles: number;
+  /** Line segments submitted (each drawn twice: casing and fill). */
+  segments: number;
   chunks: number;
   /** Last index query in the worker. */
   queryMs: number;
@@ -56,7 +61,7 @@ export class FrameLoop {
   private stopped = false;
   /** The overlays changed: the finished map is shown again with them, without drawing it again. */
   private overlaysDue = false;
-  private lastStats: RenderStats = { frame: 0, triangles: 0, chunks: 0, queryMs: 0, gpuBytes: 0, jittered: false };
+  private lastStats: RenderStats = { frame: 0, triangles: 0, segments: 0, chunks: 0, queryMs: 0, gpuBytes: 0, jittered: false };
 
   constructor(
     private readonly view: MapView,
@@ -149,14 +154,19 @@ export class FrameLoop {
     if (this.residency.upload(this.frameNo, this.viewSeq, drawn)) this.accumulated = 0;
     this.residency.evict();
     const chunks: GpuChunk[] = [];
+    const lineChunks: GpuLineChunk[] = [];
     for (const c of r.store.values()) {
       if (!boxMeets(c.bbox, drawn)) continue;
       c.lastUsed = this.frameNo;
-      chunks.push(c);
+      if (c.kind !== 'lines') chunks.push(c);
+      else if (this.settings.lines) lineChunks.push(c);
     }
     // The depth test keeps the first of two equal depths: drawn in a fixed order (not the order
     // they arrived in), the same chunks give the same picture after a reload or a lost context.
-    chunks.sort((a, b) => (a.file < b.file ? -1 : a.file > b.file ? 1 : 0));
+    // Lines too: a later line is drawn over an earlier one.
+    const byFile = (a: { file: string }, b: { file: string }): number => (a.file < b.file ? -1 : a.file > b.file ? 1 : 0);
+    chunks.sort(byFile);
+    lineChunks.sort(byFile);
     const { blending, boundaries, supersampling } = this.settings;
     const blendOn = blending.mode === 'always' || (blending.mode === 'moving' && now - this.lastSliceMove < MOVING_MS);
     if (blendOn !== this.blendingWasOn) this.accumulated = 0;
@@ -167,9 +177,9 @@ export class FrameLoop {
     if (this.accumulated < supersampling) {
       const n = this.accumulated;
       const colour = colourParams({ view: q.view, ratio: this.canvas.deviceRatio(), boundaries, paints: this.settings.paints, blendDistance: blendOn ? blending.distance : 0, weight: weight(n) });
-      const triangles = r.render({ view: q.view, surface: this.view.surface(), zMax: meta.zMax, jitter: jitter(n), colour, pixelRatio: this.canvas.deviceRatio() }, chunks);
+      const { triangles, segments } = r.render({ view: q.view, surface: this.view.surface(), zMax: meta.zMax, jitter: jitter(n), colour, pixelRatio: this.canvas.deviceRatio(), sliceRange: [q.zMin, q.zMax] }, chunks, lineChunks);
       this.accumulated = n + 1;
-      this.lastStats = { frame: this.frameNo, triangles, chunks: chunks.length, queryMs: this.residency.queryMs, gpuBytes: r.store.bytes, jittered: n > 0 };
+      this.lastStats = { frame: this.frameNo, triangles, segments, chunks: chunks.length, queryMs: this.residency.queryMs, gpuBytes: r.store.bytes, jittered: n > 0 };
       this.sink.render(this.stats());
     } else if (this.overlaysDue) {
       r.present();

@@ -33,6 +33,8 @@ export interface EngineOptions {
   statePaint?: Partial<Record<DrawnState, Partial<StatePaint>>>;
   /** Frames accumulated (jittered) while the view is still; 1: off. */
   supersampling?: number;
+  /** Draw the cube's lines (roads, watercourses collapsed to lines); default true. */
+  lines?: boolean;
   /** GPU memory for chunks, bytes. */
   gpuMemoryBudget?: number;
   /** Chunks are also fetched this fraction of the view's size around it. */
@@ -94,6 +96,7 @@ export class MapEngine extends Evented<EngineEvents> {
         hover: checkedPaint('hover', { ...DEFAULT_STATE_PAINTS.hover, ...options.statePaint?.hover }),
       },
       supersampling: Math.max(1, Math.floor(options.supersampling ?? 16)),
+      lines: options.lines ?? true,
       prefetchMargin: options.prefetchMargin ?? 0.25,
     };
     this.renderer = Renderer.create(this.canvas.element, options.gpuMemoryBudget ?? DEFAULT_BUDGET, (files) => this.contextLost(files), () => this.contextRestored());
@@ -246,6 +249,15 @@ export class MapEngine extends Evented<EngineEvents> {
     this.redraw();
   }
 
+  setLinesVisible(visible: boolean): void {
+    this.settings.lines = visible;
+    this.redraw();
+  }
+
+  getLinesVisible(): boolean {
+    return this.settings.lines;
+  }
+
   setGpuMemoryBudget(bytes: number): void {
     if (this.renderer) this.renderer.store.budgetBytes = bytes;
     this.redraw();
@@ -289,7 +301,7 @@ export class MapEngine extends Evented<EngineEvents> {
   }
 
   stats(): RenderStats {
-    return this.loop?.stats() ?? { frame: 0, triangles: 0, chunks: 0, queryMs: 0, gpuBytes: 0, jittered: false };
+    return this.loop?.stats() ?? { frame: 0, triangles: 0, segments: 0, chunks: 0, queryMs: 0, gpuBytes: 0, jittered: false };
   }
 
   /** The ID buffer of the current view (device pixels, rows from the top). */

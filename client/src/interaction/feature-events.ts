@@ -13,8 +13,10 @@ export interface MapPointerEvent {
   lngLat: LngLat | null;
   /** The same place in the cube's projected CRS. */
   projected: [number, number];
-  /** The face under the pointer (null: none, or not drawn yet). */
+  /** What is on top under the pointer: a line of the cube, else the face (null: none, or not drawn yet). */
   feature: Feature | null;
+  /** Everything under the pointer, topmost first: the line, if any, then the face. */
+  features: Feature[];
   originalEvent: MouseEvent;
 }
 
@@ -80,12 +82,12 @@ export class FeatureEvents {
     const point = this.host.point(originalEvent);
     const projected = this.host.unprojectProjected(point);
     const lngLat = this.host.lngLatAt(point);
-    let feature: Feature | null = null;
+    let features: Feature[] = [];
     try {
-      feature = (await this.host.queryFeatures(point))[0] ?? null;
+      features = await this.host.queryFeatures(point);
     } catch {
       // Removed meanwhile, or a failed page of attributes: the event goes without the face.
     }
-    if (!this.removed) this.host.fire(type, { point, lngLat, projected, feature, originalEvent });
+    if (!this.removed) this.host.fire(type, { point, lngLat, projected, feature: features[0] ?? null, features, originalEvent });
   }
 }

@@ -1,11 +1,15 @@
 // The chunks on the GPU, within a memory budget: when over it, the least recently drawn chunks
 // that the view does not need (on screen or in its prefetch margin) leave. Chunks the view needs
 // stay even beyond the budget: evicting them would only fetch them again at once, forever.
-import type { ChunkPayload } from '../source/worker-protocol.js';
+import type { Payload } from '../source/worker-protocol.js';
 import { GpuChunk } from './gpu-chunk.js';
+import { GpuLineChunk } from './gpu-line-chunk.js';
+
+/** A surface chunk or a line chunk on the GPU. */
+export type StoredChunk = GpuChunk | GpuLineChunk;
 
 export class ChunkStore {
-  private readonly chunks = new Map<string, GpuChunk>();
+  private readonly chunks = new Map<string, StoredChunk>();
   private totalBytes = 0;
 
   constructor(public budgetBytes: number) {}
@@ -22,18 +26,18 @@ export class ChunkStore {
     return this.chunks.has(file);
   }
 
-  get(file: string): GpuChunk | undefined {
+  get(file: string): StoredChunk | undefined {
     return this.chunks.get(file);
   }
 
-  values(): IterableIterator<GpuChunk> {
+  values(): IterableIterator<StoredChunk> {
     return this.chunks.values();
   }
 
-  add(gl: WebGL2RenderingContext, payload: ChunkPayload, frame: number): GpuChunk {
+  add(gl: WebGL2RenderingContext, payload: Payload, frame: number): StoredChunk {
     const old = this.chunks.get(payload.file);
     if (old) this.remove(gl, old);
-    const c = new GpuChunk(gl, payload);
+    const c = payload.kind === 'lines' ? new GpuLineChunk(gl, payload) : new GpuChunk(gl, payload);
     c.lastUsed = frame;
     this.chunks.set(c.file, c);
     this.totalBytes += c.bytes;
@@ -63,7 +67,7 @@ export class ChunkStore {
     return files;
   }
 
-  private remove(gl: WebGL2RenderingContext, c: GpuChunk): void {
+  private remove(gl: WebGL2RenderingContext, c: StoredChunk): void {
     c.delete(gl);
     this.chunks.delete(c.file);
     this.totalBytes -= c.bytes;

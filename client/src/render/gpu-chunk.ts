@@ -5,6 +5,7 @@ import type { Box3 } from '../../../format/cube-index.js';
 import type { ChunkPayload } from '../source/worker-protocol.js';
 
 export class GpuChunk {
+  readonly kind = 'surfaces';
   readonly file: string;
   readonly bbox: Box3;
   readonly originX: number;

@@ -6,13 +6,17 @@ import type { CubeMeta } from '../../../format/cube-index.js';
 import type { CubeStyle } from '../../../format/style.js';
 import type { Surface } from '../../../format/slicing-surface.js';
 import type { ViewGeometry } from '../geometry/view.js';
-import type { ChunkPayload } from '../source/worker-protocol.js';
+import type { Payload } from '../source/worker-protocol.js';
 import { ChunkStore } from './chunk-store.js';
 import { ColourPass, type ColourParams } from './colour-pass.js';
 import { FaceStateTexture } from './face-state-texture.js';
 import type { GpuChunk } from './gpu-chunk.js';
+import type { GpuLineChunk } from './gpu-line-chunk.js';
 import type { IdBuffer } from './id-buffer.js';
 import { IdPass } from './id-pass.js';
+import { LinePass } from './line-pass.js';
+import { classLineRules, createLineRuleTexture, type LineRule } from './line-rules.js';
+import { lineAt, type LineHit } from '../engine/line-hit.js';
 import { OverlayPass, type OverlayDrawable } from './overlay-pass.js';
 import { PresentPass } from './present-pass.js';
 import { createStyleTexture, parseColour } from './style-texture.js';
@@ -28,6 +32,8 @@ export interface FrameParams {
   colour: Omit<ColourParams, RendererColourParams>;
   /** Device pixels per CSS pixel (the overlays' widths are in CSS pixels). */
   pixelRatio: number;
+  /** The slicing surface's z range over the view (line segments outside it are skipped). */
+  sliceRange: [number, number];
 }
 
 /** What the renderer adds to the colour pass's parameters: its own textures and the style's background. */
@@ -39,9 +45,11 @@ interface Gpu {
   colour: ColourPass;
   present: PresentPass;
   overlay: OverlayPass;
+  lines: LinePass;
   targets: Targets;
   emptyVao: WebGLVertexArrayObject;
   style: { texture: WebGLTexture; classCount: number } | null;
+  lineRules: WebGLTexture | null;
   faceState: FaceStateTexture | null;
 }
 
@@ -54,6 +62,9 @@ export class Renderer {
   private readonly faceStates = new Map<number, number>();
   private lastFrame: FrameParams | null = null;
   private lastChunks: GpuChunk[] = [];
+  private lastLineChunks: GpuLineChunk[] = [];
+  /** The line rules drawn (the texture's contents, for picking). */
+  private lineRules: LineRule[] = [];
   private idsJittered = false;
   /** The overlay layers drawn over the map, bottom first. */
   private overlays: readonly OverlayDrawable[] = [];
@@ -104,9 +115,11 @@ export class Renderer {
       colour: new ColourPass(gl),
       present: new PresentPass(gl),
       overlay: new OverlayPass(gl),
+      lines: new LinePass(gl),
       targets,
       emptyVao: gl.createVertexArray(),
       style: null,
+      lineRules: null,
       faceState: null,
     };
     this.makeStyleTextures();
@@ -116,10 +129,18 @@ export class Renderer {
   private makeStyleTextures(): void {
     const g = this.gpu, meta = this.meta;
     if (!g || !meta) return;
-    if (g.style) this.gl.deleteTexture(g.style.texture);
-    g.style = createStyleTexture(this.gl, this.style ?? meta.style, meta);
+    this.makeDrawnStyle(g, this.style ?? meta.style, meta);
     g.faceState?.delete();
     g.faceState = new FaceStateTexture(this.gl, meta.faces.count, this.faceStates);
+  }
+
+  /** The class and line rule textures for `style`. */
+  private makeDrawnStyle(g: Gpu, style: CubeStyle, meta: CubeMeta): void {
+    if (g.style) this.gl.deleteTexture(g.style.texture);
+    g.style = createStyleTexture(this.gl, style, meta);
+    if (g.lineRules) this.gl.deleteTexture(g.lineRules);
+    this.lineRules = classLineRules(style);
+    g.lineRules = createLineRuleTexture(this.gl, this.lineRules);
   }
 
   private readonly lostHandler = (ev: Event): void => {
@@ -127,6 +148,7 @@ export class Renderer {
     ev.preventDefault();
     this.gpu = null;
     this.lastChunks = [];
+    this.lastLineChunks = [];
     this.onLost(this.store.clear(null));
   };
 
@@ -147,8 +169,7 @@ export class Renderer {
     this.style = style;
     const g = this.gpu, meta = this.meta;
     if (!g || !meta) return;
-    if (g.style) this.gl.deleteTexture(g.style.texture);
-    g.style = createStyleTexture(this.gl, style, meta);
+    this.makeDrawnStyle(g, style, meta);
   }
 
   /** The face's drawn states from the next frame on (bit i: DRAWN_STATES[i]). */
@@ -164,7 +185,7 @@ export class Renderer {
     this.gpu?.overlay.keep(layers);
   }
 
-  upload(payload: ChunkPayload, frame: number): boolean {
+  upload(payload: Payload, frame: number): boolean {
     if (!this.gpu) return false;
     this.store.add(this.gl, payload, frame);
     return true;
@@ -175,10 +196,10 @@ export class Renderer {
     return this.store.evict(this.gl, visible, margin);
   }
 
-  /** Draws a frame; returns the triangles submitted. */
-  render(f: FrameParams, chunks: GpuChunk[]): number {
+  /** Draws a frame; returns the triangles and line segments submitted. */
+  render(f: FrameParams, chunks: GpuChunk[], lineChunks: GpuLineChunk[] = []): { triangles: number; segments: number } {
     const g = this.gpu;
-    if (!g || !g.style || !g.faceState || !this.style) return 0;
+    if (!g || !g.style || !g.faceState || !this.style) return { triangles: 0, segments: 0 };
     const gl = this.gl;
     g.targets.resize(f.view.width, f.view.height);
     gl.bindVertexArray(g.emptyVao);
@@ -188,11 +209,13 @@ export class Renderer {
     gl.bindVertexArray(g.emptyVao);
     g.colour.draw(g.targets, { ...f.colour, style: g.style.texture, classCount: g.style.classCount, background: parseColour(this.style.background), faceState: g.faceState.texture });
     g.present.draw(g.targets);
+    const segments = this.drawLines(g, f, lineChunks);
     this.drawOverlays(g, f);
     gl.bindVertexArray(null);
     this.lastFrame = f;
     this.lastChunks = chunks;
-    return triangles;
+    this.lastLineChunks = lineChunks;
+    return { triangles, segments };
   }
 
   /** Shows the last frame's map again with the overlays as they are now (the map's image is kept). */
@@ -201,7 +224,14 @@ export class Renderer {
     // Nothing drawn since the context came back: the next frame draws everything.
     if (!g || !f || g.targets.width === 0) return;
     g.present.draw(g.targets);
+    this.drawLines(g, f, this.lastLineChunks.filter((c) => this.store.get(c.file) === c));
     this.drawOverlays(g, f);
+  }
+
+  /** The cube's lines over the map just presented; returns the segments submitted. */
+  private drawLines(g: Gpu, f: FrameParams, lineChunks: readonly GpuLineChunk[]): number {
+    if (!g.lineRules || lineChunks.length === 0) return 0;
+    return g.lines.draw(g.targets, f.view, f.pixelRatio, lineChunks, g.lineRules, f.sliceRange);
   }
 
   /** The overlays over the canvas, drawn again only if the view or the layers changed. */
@@ -224,6 +254,14 @@ export class Renderer {
       this.idsJittered = false;
     }
     return g;
+  }
+
+  /** The line drawn on top at device pixel (x, y) of the last frame, where the slice is at z. */
+  lineAt(x: number, y: number, z: number): LineHit | null {
+    const f = this.lastFrame;
+    if (!f || !this.gpu) return null;
+    const chunks = this.lastLineChunks.filter((c) => this.store.get(c.file) === c);
+    return lineAt(chunks, this.lineRules, f.view, f.pixelRatio, x, y, z);
   }
 
   /** W x H pixels of a target's attachment from GL row glY up (4 values a pixel, rows from the bottom). */
@@ -301,9 +339,11 @@ export class Renderer {
       g.colour.delete();
       g.present.delete();
       g.overlay.delete();
+      g.lines.delete();
       g.targets.delete();
       this.gl.deleteVertexArray(g.emptyVao);
       if (g.style) this.gl.deleteTexture(g.style.texture);
+      if (g.lineRules) this.gl.deleteTexture(g.lineRules);
       g.faceState?.delete();
     }
     this.gpu = null;

@@ -1,7 +1,8 @@
 // One chunk from the network to GPU-ready arrays: fetch (with retries), gunzip when the body
 // is still gzip, decode and check it, and compare its SHA-256 with the index.
 import type { ChunkLeaf } from '../../../format/cube-index.js';
-import { ChunkFormatError, decodeChunk } from '../../../format/chunk.js';
+import { decodeChunk } from '../../../format/chunk.js';
+import { FormatError } from '../../../format/format-error.js';
 import { gunzipIfNeeded } from './gunzip.js';
 import { sha256Hex } from './sha256.js';
 import { keepUpwardTriangles } from './upward-triangles.js';
@@ -15,7 +16,12 @@ export class ChunkCorrupt extends Error {
   }
 }
 
-export async function fetchChunk(leaf: ChunkLeaf, url: string, retry: RetryOptions, signal: AbortSignal): Promise<ChunkPayload> {
+/**
+ * A chunk file of either kind, fetched, gunzipped when the body is still gzip, decoded by
+ * `decode` (which checks the structure) and compared with the index's SHA-256; `verified` is
+ * false where no crypto.subtle could check the hash. Every failure of the file is ChunkCorrupt.
+ */
+export async function fetchChunkFile<T>(leaf: { file: string; sha256: string }, url: string, retry: RetryOptions, signal: AbortSignal, decode: (bytes: ArrayBuffer, name: string) => T): Promise<{ data: T; verified: boolean }> {
   const raw = await fetchBytes(url, retry, signal);
   let bytes: ArrayBuffer;
   try {
@@ -23,18 +29,24 @@ export async function fetchChunk(leaf: ChunkLeaf, url: string, retry: RetryOptio
   } catch (err) {
     throw new ChunkCorrupt(`${leaf.file}: bad gzip body (${(err as Error).message})`);
   }
-  let chunk;
+  let data: T;
   try {
-    chunk = decodeChunk(bytes, leaf.file);
+    data = decode(bytes, leaf.file);
   } catch (err) {
-    if (err instanceof ChunkFormatError) throw new ChunkCorrupt(err.message);
+    if (err instanceof FormatError) throw new ChunkCorrupt(err.message);
     throw err;
   }
   const hash = await sha256Hex(bytes);
   if (hash !== null && hash !== leaf.sha256) throw new ChunkCorrupt(`${leaf.file}: SHA-256 ${hash} does not match the index (${leaf.sha256})`);
+  return { data, verified: hash !== null };
+}
+
+export async function fetchChunk(leaf: ChunkLeaf, url: string, retry: RetryOptions, signal: AbortSignal): Promise<ChunkPayload> {
+  const { data: chunk, verified } = await fetchChunkFile(leaf, url, retry, signal, decodeChunk);
   // After the hash check: this rewrites the index section in place.
   const triangleCount = keepUpwardTriangles(chunk.positions, chunk.indices);
   return {
+    kind: 'surfaces',
     file: leaf.file,
     bbox: leaf.bbox,
     buffer: chunk.positions.buffer as ArrayBuffer,
@@ -46,6 +58,6 @@ export async function fetchChunk(leaf: ChunkLeaf, url: string, retry: RetryOptio
     vertexByteLength: chunk.vertexByteLength,
     indexByteOffset: chunk.indices.byteOffset,
     indexSize: chunk.indices.BYTES_PER_ELEMENT as 2 | 4,
-    verified: hash !== null,
+    verified,
   };
 }

@@ -4,15 +4,20 @@
 // - a request for a chunk that left the view (and its margin) is aborted;
 // - the nearest to the view centre and base z go first, the on-screen ones before the margin,
 //   then those of the views ahead (a flight's path), in the order they will be shown.
-import type { ChunkLeaf } from '../../../format/cube-index.js';
-import { boxMeets, chunkPriority } from '../../../format/index-query.js';
+import type { ChunkLeaf, LineChunkLeaf } from '../../../format/cube-index.js';
+import { boxMeets, chunkPriority, queryLineChunks, type QueryBox } from '../../../format/index-query.js';
 import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
+import { fetchLineChunk } from './line-chunk-fetch.js';
 import { FetchFailure } from './fetch-retry.js';
 import type { IndexTree } from './index-tree.js';
 import type { ChunkStatus, FromWorker, SourceErrorInfo, SourceOptions, ViewRequest } from './worker-protocol.js';
 
+/** A surface chunk or a line chunk: fetched, ranked and tracked alike. */
+type Leaf = ChunkLeaf | LineChunkLeaf;
+const isLineLeaf = (l: Leaf): l is LineChunkLeaf => 'lines' in l;
+
 interface Entry {
-  leaf: ChunkLeaf;
+  leaf: Leaf;
   status: ChunkStatus;
   /** The request in flight (its identity tells a stale completion from the current one). */
   controller: AbortController | null;
@@ -44,6 +49,7 @@ export class ChunkScheduler {
     const t0 = performance.now();
     const q = { ground: view.margin, zMin: view.zMin, zMax: view.zMax };
     const res = this.tree.query(q);
+    const lineLeaves = this.lineLeaves(q);
     const queryMs = performance.now() - t0;
     const visibleQ = { ground: view.visible, zMin: view.zMin, zMax: view.zMax };
     const visible: string[] = [];
@@ -51,7 +57,7 @@ export class ChunkScheduler {
     const ahead: string[] = [];
     const needed = new Set<string>();
     const missing = new Set(res.missing);
-    const want = (leaf: ChunkLeaf, priority: number): void => {
+    const want = (leaf: Leaf, priority: number): void => {
       let e = this.entries.get(leaf.file);
       if (!e) {
         e = { leaf, status: 'not-requested', controller: null, priority: 0 };
@@ -61,7 +67,7 @@ export class ChunkScheduler {
       needed.add(leaf.file);
     };
     const rank = view.visible;
-    for (const leaf of res.leaves) {
+    for (const leaf of [...res.leaves, ...lineLeaves]) {
       const onScreen = boxMeets(leaf.bbox, visibleQ);
       want(leaf, priorityIn(leaf, rank, view) + (onScreen ? 0 : MARGIN_TIER));
       (onScreen ? visible : margin).push(leaf.file);
@@ -69,7 +75,7 @@ export class ChunkScheduler {
     (view.ahead ?? []).forEach((a, i) => {
       const r = this.tree.query({ ground: a.box, zMin: a.zMin, zMax: a.zMax });
       for (const m of r.missing) missing.add(m);
-      for (const leaf of r.leaves) {
+      for (const leaf of [...r.leaves, ...this.lineLeaves({ ground: a.box, zMin: a.zMin, zMax: a.zMax })]) {
         if (needed.has(leaf.file)) continue;
         want(leaf, AHEAD_TIER + i * MARGIN_TIER + priorityIn(leaf, a.box, a));
         ahead.push(leaf.file);
@@ -97,6 +103,11 @@ export class ChunkScheduler {
       );
     }
     this.pump();
+  }
+
+  /** The line chunks a query box needs (none in a cube without lines). */
+  private lineLeaves(q: QueryBox): LineChunkLeaf[] {
+    return queryLineChunks(this.tree.index.lines ?? [], q);
   }
 
   uploaded(file: string): void {
@@ -137,13 +148,16 @@ export class ChunkScheduler {
     e.controller = controller;
     this.inFlight++;
     this.setStatus(e, 'requested');
-    fetchChunk(e.leaf, this.tree.url(e.leaf.file), this.opts, controller.signal)
+    const leaf = e.leaf;
+    const url = this.tree.url(leaf.file);
+    (isLineLeaf(leaf) ? fetchLineChunk(leaf, url, this.opts, controller.signal) : fetchChunk(leaf, url, this.opts, controller.signal))
       .then(
         (chunk) => {
           if (e.controller !== controller) return; // aborted meanwhile
           e.controller = null;
           this.setStatus(e, 'received');
-          this.post({ type: 'chunk', chunk }, [chunk.buffer]);
+          const transfer = chunk.kind === 'lines' ? [chunk.segments.buffer, chunk.segmentLine.buffer, chunk.segmentRule.buffer, chunk.lineClass.buffer, chunk.lineFeature.buffer, chunk.lineZ.buffer] : [chunk.buffer];
+          this.post({ type: 'chunk', chunk }, transfer as ArrayBuffer[]);
         },
         (err: unknown) => {
           if (e.controller !== controller) return;
@@ -168,7 +182,7 @@ export class ChunkScheduler {
 }
 
 /** Nearest to the centre and base z of a view with ground box `box` first. */
-function priorityIn(leaf: ChunkLeaf, box: [number, number, number, number], v: { centerX: number; centerY: number; z: number; zMin: number; zMax: number }): number {
+function priorityIn(leaf: Leaf, box: [number, number, number, number], v: { centerX: number; centerY: number; z: number; zMin: number; zMax: number }): number {
   const halfDiag = Math.hypot(box[2] - box[0], box[3] - box[1]) / 2;
   return chunkPriority(leaf.bbox, v.centerX, v.centerY, v.z, halfDiag, Math.max(1, v.zMax - v.zMin));
 }

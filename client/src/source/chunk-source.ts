@@ -4,11 +4,11 @@ import type { CubeMeta } from '../../../format/cube-index.js';
 import { Evented } from '../events.js';
 import { createChunkWorker } from './create-worker.js';
 import { indexUrl } from './index-url.js';
-import type { ChunkPayload, ChunkStatus, FeatureInfo, FromWorker, NeededChunks, SourceErrorInfo, SourceOptions, ToWorker, ViewRequest } from './worker-protocol.js';
+import type { ChunkStatus, Payload, FeatureInfo, FromWorker, NeededChunks, SourceErrorInfo, SourceOptions, ToWorker, ViewRequest } from './worker-protocol.js';
 
 export interface ChunkSourceEvents {
   meta: CubeMeta;
-  chunk: ChunkPayload;
+  chunk: Payload;
   needed: NeededChunks;
   status: { file: string; status: ChunkStatus };
   error: SourceErrorInfo;
@@ -63,6 +63,11 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
 
   features(faces: number[]): Promise<(FeatureInfo | null)[]> {
     return this.ask<(FeatureInfo | null)[]>((id) => ({ type: 'features', id, faces }));
+  }
+
+  /** The attributes of input features (null: none stored). */
+  attributes(features: number[]): Promise<(Record<string, unknown> | null)[]> {
+    return this.ask<(Record<string, unknown> | null)[]>((id) => ({ type: 'attributes', id, features }));
   }
 
   /** Absolute URLs of every file received so far (index, pages, chunks), oldest first. */
@@ -121,6 +126,9 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
         break;
       case 'features':
         this.answer(msg.id, msg.features, msg.error);
+        break;
+      case 'attributes':
+        this.answer(msg.id, msg.properties, msg.error);
         break;
       case 'loaded-urls':
         this.answer(msg.id, msg.urls);

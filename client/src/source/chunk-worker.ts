@@ -62,6 +62,16 @@ scope.addEventListener('message', (ev) => {
       run().catch((err: unknown) => post({ type: 'features', id, features: [], error: (err as Error).message }));
       break;
     }
+    case 'attributes': {
+      const { id, features } = msg;
+      const run = async (): Promise<void> => {
+        await ready;
+        const p = pages!;
+        post({ type: 'attributes', id, properties: await Promise.all(features.map((f) => p.properties(f))) });
+      };
+      run().catch((err: unknown) => post({ type: 'attributes', id, properties: [], error: (err as Error).message }));
+      break;
+    }
     case 'loaded-urls':
       post({ type: 'loaded-urls', id: msg.id, urls: [...loadedUrls] });
       break;

@@ -37,13 +37,14 @@ export class FeaturePages {
     if (!fp) return null;
     const rec = faceRecord(await this.facePage(fp.file), face);
     if (!rec) return null;
-    let properties: Record<string, unknown> | null = null;
-    const ap = rec.feature >= 0 ? pageOf(this.attributes, rec.feature) : undefined;
-    if (ap) {
-      const page = await this.attrPage(ap.file);
-      properties = featureAttributes(page, rec.feature);
-    }
-    return { ...rec, properties };
+    return { ...rec, properties: await this.properties(rec.feature) };
+  }
+
+  /** An input feature's attributes (null: no feature, or none stored). */
+  async properties(feature: number): Promise<Record<string, unknown> | null> {
+    const ap = feature >= 0 ? pageOf(this.attributes, feature) : undefined;
+    if (!ap) return null;
+    return featureAttributes(await this.attrPage(ap.file), feature);
   }
 
   private facePage(file: string): Promise<FacePage> {

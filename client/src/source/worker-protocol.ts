@@ -45,6 +45,7 @@ export type ToWorker =
   | { type: 'uploaded'; file: string }
   | { type: 'evicted'; files: string[] }
   | { type: 'features'; id: number; faces: number[] }
+  | { type: 'attributes'; id: number; features: number[] }
   | { type: 'loaded-urls'; id: number };
 
 export interface SourceErrorInfo {
@@ -59,6 +60,7 @@ export interface SourceErrorInfo {
 
 /** A decoded chunk as transferred: views over one buffer (moved, not copied). */
 export interface ChunkPayload {
+  kind: 'surfaces';
   file: string;
   /** The index leaf's box (z1: the top of its relevance). */
   bbox: Box3;
@@ -73,6 +75,38 @@ export interface ChunkPayload {
   indexSize: 2 | 4;
   /** False when crypto.subtle was unavailable (not a secure context) to check the hash. */
   verified: boolean;
+}
+
+/**
+ * A decoded line chunk as transferred: every segment its lines have at some z (format/line-chunk.ts,
+ * lineSegments), ready to be drawn as instances, and per line what picking names.
+ */
+export interface LinePayload {
+  kind: 'lines';
+  file: string;
+  /** The index entry's box (z0, z1: the lines' z range). */
+  bbox: Box3;
+  originX: number;
+  originY: number;
+  segmentCount: number;
+  /** Per segment: ax, ay, bx, by (relative to the origin), z0, z1: drawn for z0 <= z < z1. */
+  segments: Float32Array;
+  /** Per segment: the line it belongs to, and that line's style rule (for now its class). */
+  segmentLine: Uint32Array;
+  segmentRule: Uint16Array;
+  /** Per line: its class, its input feature (-1: none) and its z range (zStart, zEnd). */
+  lineClass: Uint16Array;
+  lineFeature: Int32Array;
+  lineZ: Float32Array;
+  verified: boolean;
+}
+
+/** Either kind of chunk, as the map receives it. */
+export type Payload = ChunkPayload | LinePayload;
+
+/** Bytes a payload takes on the GPU. */
+export function payloadBytes(p: Payload): number {
+  return p.kind === 'lines' ? p.segments.byteLength + p.segmentRule.byteLength : p.vertexByteLength + p.indexSize * 3 * p.triangleCount;
 }
 
 /** A face's record from its face page, with its input feature's attributes. */
@@ -96,9 +130,10 @@ export type FromWorker =
   | { type: 'meta'; meta: CubeMeta }
   | ({ type: 'needed'; visited: number } & NeededChunks)
   | { type: 'status'; file: string; status: ChunkStatus }
-  | { type: 'chunk'; chunk: ChunkPayload }
+  | { type: 'chunk'; chunk: Payload }
   | { type: 'error'; error: SourceErrorInfo }
   // The index could not be loaded: nothing will follow.
   | { type: 'index-failed'; error: SourceErrorInfo }
   | { type: 'features'; id: number; features: (FeatureInfo | null)[]; error?: string }
+  | { type: 'attributes'; id: number; properties: (Record<string, unknown> | null)[]; error?: string }
   | { type: 'loaded-urls'; id: number; urls: string[] };

@@ -2,6 +2,7 @@
 // schema as the cube's style (format/style.ts), and against the cube's classes, whose order the
 // faces' class numbers refer to. Nothing is changed when a check fails. Pure.
 import * as v from 'valibot';
+import { lineRules } from '../../../format/line-style.js';
 import { describeIssues } from '../../../format/schema-issues.js';
 import { ClassStyleSchema, drawnStyle, StyleSchema, type ClassStyleJson, type CubeStyle, type StyleClass, type StyleJson } from '../../../format/style.js';
 
@@ -38,7 +39,9 @@ export function parseMapStyle(json: unknown, cubeClasses: readonly Pick<StyleCla
   if (missing.length) faults.push(`classes: the cube's ${quoted(missing)} ${missing.length === 1 ? 'is' : 'are'} missing`);
   if (unknown.length) faults.push(`classes: the cube has no ${quoted(unknown)} (its classes: ${quoted([...cubeKeys])})`);
   if (faults.length) throw new StyleError(`setStyle: ${faults.join('; ')}`);
-  return { ...style, classes: cubeClasses.map((c) => byKey.get(c.key)!) };
+  // The line rules follow the classes into the cube's order, which the line chunks' rule numbers refer to.
+  const classes = cubeClasses.map((c) => byKey.get(c.key)!);
+  return { ...style, classes, lines: lineRules(classes) };
 }
 
 /** `style` with class `key` changed as `change` says (a new object; `style` is left alone). */

@@ -1,0 +1,51 @@
+#version 300 es
+// Line pass: a quad around one segment of a cube line (one instance per segment), its corners
+// half the rule's width plus a pixel (for anti-aliasing) out from the segment and past its ends,
+// so consecutive segments join round. A segment whose z range (intersected with its rule's
+// scale range) misses the slicing surface's z range over the view is moved out of clip space:
+// at a flat slice that is every segment not on the map, so they cost no fragments.
+precision highp float;
+precision highp int;
+
+layout(location = 0) in vec4 aEnds;  // a (xy) and b (zw), ground units from the chunk's origin
+layout(location = 1) in vec2 aZ;     // drawn for aZ.x <= z < aZ.y
+layout(location = 2) in uint aRule;  // column of uRules
+
+uniform sampler2D uRules;  // RGBA32F, one column per rule: fill; casing; (fill width, casing width mm, z range)
+uniform int uCasing;       // 1: this draw paints the casings, 0: the fills
+uniform float uPxPerMm;    // device pixels per millimetre on screen
+uniform vec2 uOffset;      // chunk origin - view centre, ground units
+uniform float uRes;        // ground units per device pixel
+uniform vec2 uHalfSize;    // half the target, device pixels
+uniform vec2 uSliceRange;  // the slicing surface's z range over the view
+
+flat out vec2 vA;          // the segment's ends, device pixels from the view centre
+flat out vec2 vB;
+flat out vec2 vZ;          // the z range drawn
+flat out float vHalf;      // half width, device pixels
+flat out vec4 vColour;
+out vec2 vP;               // this point, device pixels from the view centre
+
+void main() {
+  int rule = int(aRule);
+  vec4 sizes = texelFetch(uRules, ivec2(rule, 2), 0);
+  vColour = texelFetch(uRules, ivec2(rule, uCasing), 0);
+  vHalf = 0.5 * (uCasing == 1 ? sizes.y : sizes.x) * uPxPerMm;
+  vZ = vec2(max(aZ.x, sizes.z), min(aZ.y, sizes.w));
+  if (vColour.a <= 0.0 || vHalf <= 0.0 || vZ.x >= vZ.y || vZ.y <= uSliceRange.x || vZ.x > uSliceRange.y) {
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+    return;
+  }
+  vA = (aEnds.xy + uOffset) / uRes;
+  vB = (aEnds.zw + uOffset) / uRes;
+  vec2 ab = vB - vA;
+  float len = length(ab);
+  vec2 t = len > 0.0 ? ab / len : vec2(1.0, 0.0);
+  vec2 n = vec2(-t.y, t.x);
+  float reach = vHalf + 1.0;
+  // Strip order: a-left, a-right, b-left, b-right.
+  int v = gl_VertexID;
+  vec2 end = v < 2 ? vA - t * reach : vB + t * reach;
+  vP = end + n * (v % 2 == 0 ? reach : -reach);
+  gl_Position = vec4(vP / uHalfSize, 0.0, 1.0);
+}
