@@ -1,6 +1,7 @@
 // ssc: the command line of the vario-scale map's preprocessing.
 import { FormatError } from '../format/format-error.js';
 import { InputError } from './io/errors.js';
+import { fsReason, isFsError, OutputError } from './io/output-path.js';
 import { UsageError } from './commands/args.js';
 
 interface Command {
@@ -47,8 +48,13 @@ export async function main(argv: string[]): Promise<number> {
       return 2;
     }
     // A bad input or a file that breaks its format (a corrupt tGAP or cube): the user can act.
-    if (err instanceof InputError || err instanceof FormatError) {
+    if (err instanceof InputError || err instanceof FormatError || err instanceof OutputError) {
       process.stderr.write(`ssc ${name}: ${err.message}\n`);
+      return 1;
+    }
+    // Any other path that cannot be read or written: one line naming it, not a stack trace.
+    if (isFsError(err)) {
+      process.stderr.write(`ssc ${name}: cannot ${err.syscall}${err.path ? ` ${err.path}` : ''}: ${fsReason(err)}\n`);
       return 1;
     }
     throw err;

@@ -1,13 +1,16 @@
 // Input file + style -> tGAP: the steps `ssc generalize` and `ssc build` share.
 import path from 'node:path';
-import { resolveCrs } from './io/crs.js';
-import { InputError } from './io/errors.js';
-import { readInput } from './io/read-input.js';
+import proj4 from 'proj4';
+import { resolveCrs, type CrsInfo } from './io/crs.js';
+import { describeFeature, InputError } from './io/errors.js';
+import { InputProblems, ProblemList } from './io/problems.js';
+import { readInput, type InputFeature, type RawInput } from './io/read-input.js';
 import { defaultStyle, loadStyle, styleToJson, type Style } from './style.js';
 import { generalize, type GeneralizeResult } from './tgap/generalize.js';
 import type { Tgap } from '../format/tgap-model.js';
 import { TGAP_VERSION } from '../format/tgap.js';
 import { buildTopology, type Topology } from './topology/build-topology.js';
+import { findDuplicateFeatures } from './topology/duplicate-features.js';
 import { recommendBaseScale } from './style-scaffold/base-scale.js';
 import { describeColourSources } from './style-scaffold/class-colours.js';
 import { guessClassProperty } from './style-scaffold/class-stats.js';
@@ -24,11 +27,15 @@ export interface PipelineOptions {
   allowHoles?: boolean;
   /** Independent events per step (see GeneralizeOptions.group). */
   group?: number;
+  /** Problems of a refused input named at most (default 50). */
+  maxProblems?: number;
+  /** The later of two exactly equal polygons is dropped (counted), not refused. */
+  dropDuplicates?: boolean;
   log?: (msg: string) => void;
 }
 
 export interface PipelineReport {
-  topology: Pick<Topology, 'vertexCount' | 'nodeCount' | 'faceCount' | 'repairs' | 'holes'> & { edges: number };
+  topology: Pick<Topology, 'vertexCount' | 'nodeCount' | 'faceCount' | 'repairs' | 'holes'> & { edges: number; droppedDuplicates: number };
   generalize: GeneralizeResult['stats'] & { steps: number; facesLeft: number };
   timings: Record<string, number>;
   /** Without a style: what was chosen instead, and how to write a style (lines to print). */
@@ -39,53 +46,59 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
   const log = opts.log ?? (() => {});
   const { timings, lap } = lapTimer();
   const styleGiven = opts.style ? await loadStyle(opts.style) : null;
+  const problems = new ProblemList(path.basename(input), opts.maxProblems);
   const raw = await readInput(input, {
     ...(opts.layer ? { layer: opts.layer } : {}),
     ...(styleGiven?.idProperty ? { idProperty: styleGiven.idProperty } : {}),
+    problems,
   });
-  const crs = resolveCrs(raw, opts.crs);
+  const crs = resolveCrsOf(raw, opts.crs, problems);
   lap('read');
+  const droppedDuplicates = checkDuplicates(raw.features, problems, opts.dropDuplicates ?? false);
   const classProperty = opts.classProperty ?? styleGiven?.classProperty ?? null;
-  const classValue = (i: number): string => {
+  // Each feature's class value; null after a problem was noted.
+  const values = raw.features.map((f): string | null => {
     if (classProperty === null) return 'all';
-    const v = raw.features[i]!.properties[classProperty];
+    const v = f.properties[classProperty];
     if (v === undefined || v === null) {
-      throw new InputError(`has no class property ${JSON.stringify(classProperty)}`, { file: raw.file, feature: raw.features[i]!.ref });
+      problems.add({ kind: 'class', message: v === null ? `has the class property ${JSON.stringify(classProperty)} set to null` : `has no class property ${JSON.stringify(classProperty)}`, feature: f.ref, ...firstPoint(f) });
+      return null;
     }
     return String(v);
-  };
+  });
   let style: Style;
   let noStyle: string[] | undefined;
   if (styleGiven) {
     style = styleGiven;
   } else {
-    const values = new Set<string>();
-    for (let i = 0; i < raw.features.length; i++) values.add(classValue(i));
-    style = defaultStyle([...values], classProperty);
+    const found = [...new Set(values.filter((v) => v !== null))];
+    style = defaultStyle(found, classProperty);
     const hint = classProperty === null ? guessClassProperty(raw.features).property : null;
     noStyle = [
       classProperty === null
         ? `no style: one class, one colour${hint ? ` (the property ${JSON.stringify(hint)} looks like a class: --class-property ${hint})` : ''}`
-        : `no style: class property ${JSON.stringify(classProperty)}, ${style.classes.length} classes coloured by ${describeColourSources([...values])}`,
+        : `no style: class property ${JSON.stringify(classProperty)}, ${style.classes.length} classes coloured by ${describeColourSources(found)}`,
     ];
   }
   const classIndex = new Map(style.classes.map((c, i) => [c.key, i]));
   const classes = new Uint16Array(raw.features.length + 1);
-  for (let i = 0; i < raw.features.length; i++) {
-    const v = classValue(i);
+  raw.features.forEach((f, i) => {
+    const v = values[i];
+    if (v === null || v === undefined) return;
     const ci = classIndex.get(v);
     if (ci === undefined) {
-      const ring = raw.features[i]!.polygons[0]?.[0];
-      throw new InputError(
-        `has class ${JSON.stringify(v)} (property ${JSON.stringify(classProperty)}), which the style ${opts.style ? path.basename(opts.style) + ' ' : ''}does not define`,
-        { file: raw.file, feature: raw.features[i]!.ref, ...(ring && ring.length >= 2 ? { location: [ring[0]!, ring[1]!] as [number, number] } : {}) },
-      );
+      problems.add({
+        kind: 'class',
+        message: `has class ${JSON.stringify(v)} (property ${JSON.stringify(classProperty)}), which the style ${opts.style ? path.basename(opts.style) + ' ' : ''}does not define`,
+        feature: f.ref, ...firstPoint(f),
+      });
+      return;
     }
     classes[i + 1] = ci;
-  }
+  });
   const precision = opts.precision ?? 0.001;
   const allowHoles = opts.allowHoles ?? style.allowHoles;
-  const topo = buildTopology(raw.features, { precision, file: raw.file, inputRepairs: raw.repairs, allowHoles });
+  const topo = buildTopology(raw.features, { precision, file: raw.file, inputRepairs: raw.repairs, allowHoles, problems });
   const attributes = raw.features.map((f) => f.properties);
   // The coordinates now live in the topology; let the input's go.
   raw.features.length = 0;
@@ -132,12 +145,54 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
     options: { precision, allowHoles, group: opts.group ?? 1 },
   };
   const report: PipelineReport = {
-    topology: { vertexCount: topo.vertexCount, nodeCount: topo.nodeCount, faceCount: topo.faceCount - 1, edges: topo.edges.length, repairs: topo.repairs, holes: topo.holes },
+    topology: { vertexCount: topo.vertexCount, nodeCount: topo.nodeCount, faceCount: topo.faceCount - 1, edges: topo.edges.length, repairs: topo.repairs, holes: topo.holes, droppedDuplicates },
     generalize: { ...g.stats, steps, facesLeft: g.facesAlive[g.facesAlive.length - 1]! },
     timings,
     ...(noStyle ? { noStyle } : {}),
   };
   return { tgap: { meta, xs: g.xs, ys: g.ys, faces: g.faces, edges: g.edges, events: g.events }, report };
+}
+
+/** The working CRS; a problem of the whole file stops the run with what reading found before. */
+function resolveCrsOf(raw: RawInput, override: string | undefined, problems: ProblemList): CrsInfo {
+  let crs: CrsInfo;
+  try {
+    crs = resolveCrs(raw, override);
+  } catch (err) {
+    if (!(err instanceof InputError)) throw err;
+    problems.addError(err, 'file');
+    throw new InputProblems(problems, false);
+  }
+  // Problems are named in the input's own coordinates, also when it was projected.
+  if (crs.proj4) {
+    const back = proj4(crs.proj4, 'EPSG:4326');
+    problems.toInput = (x, y) => back.forward<[number, number]>([x, y]);
+  } else {
+    problems.crs = crs.code;
+  }
+  return crs;
+}
+
+/** Notes each exact duplicate polygon, or drops it (in place) and returns how many were dropped. */
+function checkDuplicates(features: InputFeature[], problems: ProblemList, drop: boolean): number {
+  const pairs = findDuplicateFeatures(features);
+  if (drop) {
+    const later = new Set(pairs.map(([, j]) => j));
+    const kept = features.filter((_, i) => !later.has(i));
+    features.length = 0;
+    features.push(...kept);
+    return later.size;
+  }
+  for (const [i, j] of pairs) {
+    problems.add({ kind: 'duplicate', message: `is an exact duplicate of ${describeFeature(features[i]!.ref)} (--drop-duplicates drops the later one)`, feature: features[j]!.ref, ...firstPoint(features[j]!) });
+  }
+  return 0;
+}
+
+/** A feature's first point, to find it on a map. */
+function firstPoint(f: InputFeature): { location?: [number, number] } {
+  const r = f.polygons[0]?.[0];
+  return r && r.length >= 2 ? { location: [r[0]!, r[1]!] } : {};
 }
 
 /** The recommended base scale (style-scaffold/base-scale.ts) from the topology's faces. */

@@ -51,6 +51,9 @@ export const generalizeOptionSpecs = {
   'allow-holes': { type: 'boolean' },
   group: { type: 'string' },
   quiet: { type: 'boolean' },
+  problems: { type: 'string' },
+  'max-problems': { type: 'string' },
+  'drop-duplicates': { type: 'boolean' },
 } as const;
 
 export interface GeneralizeValues {
@@ -63,6 +66,9 @@ export interface GeneralizeValues {
   'allow-holes'?: boolean | undefined;
   group?: string | undefined;
   quiet?: boolean | undefined;
+  problems?: string | undefined;
+  'max-problems'?: string | undefined;
+  'drop-duplicates'?: boolean | undefined;
 }
 
 /** The pipeline's options from the generalize options, with progress on stderr unless --quiet. */
@@ -70,7 +76,10 @@ export function pipelineOptions(values: GeneralizeValues): PipelineOptions {
   const precision = parseNumber(values.precision, '--precision', { min: 0 });
   const baseScale = parseNumber(values['base-scale'], '--base-scale', { min: 1 });
   const group = parseNumber(values.group, '--group', { min: 1, integer: true });
+  const maxProblems = parseNumber(values['max-problems'], '--max-problems', { min: 1, integer: true });
   return {
+    ...(maxProblems !== undefined ? { maxProblems } : {}),
+    ...(values['drop-duplicates'] ? { dropDuplicates: true } : {}),
     ...(values.style ? { style: values.style } : {}),
     ...(values['class-property'] ? { classProperty: values['class-property'] } : {}),
     ...(values.crs ? { crs: values.crs } : {}),

@@ -2,11 +2,13 @@
 import { promises as fs } from 'node:fs';
 import { parseArgs } from 'node:util';
 import { InputError } from '../io/errors.js';
+import { checkOutputPath, fsReason, isFsError } from '../io/output-path.js';
 import { generalizeFile } from '../pipeline.js';
 import { buildCube } from '../ssc/build-cube.js';
 import { readTgap, TGAP_MAGIC } from '../../format/tgap.js';
 import type { Tgap } from '../../format/tgap-model.js';
 import { generalizeOptionSpecs, parseNumber, pipelineOptions, UsageError } from './args.js';
+import { withProblemsFile } from './problems-file.js';
 
 export const usage = `ssc build <input|file.tgap> --out <dir> [options]
   input: polygons in any format ssc generalize reads (GeoJSON, TopoJSON, GeoPackage, Shapefile,
@@ -20,7 +22,7 @@ export const usage = `ssc build <input|file.tgap> --out <dir> [options]
                             gradual (tilted surfaces; --smooth says so explicitly)
   --quiet                   no progress on stderr
 Other ssc generalize options (--class-property, --crs, --layer, --precision, --base-scale,
---allow-holes, --group) apply to polygon input. The directory is replaced only when the build succeeds.`;
+--allow-holes, --group, --problems, --max-problems, --drop-duplicates) apply to polygon input. The directory is replaced only when the build succeeds.`;
 
 async function isTgap(file: string): Promise<boolean> {
   try {
@@ -33,7 +35,7 @@ async function isTgap(file: string): Promise<boolean> {
       await h.close();
     }
   } catch (err) {
-    throw new InputError(`cannot read input: ${(err as Error).message}`, { file });
+    throw new InputError(`cannot read input: ${isFsError(err) ? fsReason(err) : (err as Error).message}`, { file });
   }
 }
 
@@ -57,13 +59,14 @@ export async function run(argv: string[]): Promise<void> {
   const chunkBytes = parseNumber(values['chunk-bytes'], '--chunk-bytes', { min: 1024, integer: true });
   const subIndexBytes = parseNumber(values['sub-index-bytes'], '--sub-index-bytes', { min: 1024, integer: true });
   const options = pipelineOptions(values);
+  await checkOutputPath(values.out, 'directory');
   const t0 = performance.now();
   const input = positionals[0]!;
   let tgap: Tgap;
   let noStyle: string[] = [];
   if (await isTgap(input)) tgap = await readTgap(input);
   else {
-    const g = await generalizeFile(input, options);
+    const g = await withProblemsFile(values.problems, () => generalizeFile(input, options));
     tgap = g.tgap;
     noStyle = g.report.noStyle ?? [];
   }

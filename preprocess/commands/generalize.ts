@@ -1,9 +1,11 @@
 // ssc generalize <input> --out <file.tgap> [--style style.json] ...
 import { parseArgs } from 'node:util';
 import { writeFileAtomic } from '../io/atomic-write.js';
+import { checkOutputPath } from '../io/output-path.js';
 import { generalizeFile } from '../pipeline.js';
 import { encodeTgap } from '../../format/tgap.js';
 import { generalizeOptionSpecs, pipelineOptions, UsageError } from './args.js';
+import { problemsUsage, withProblemsFile } from './problems-file.js';
 
 export const usage = `ssc generalize <input> --out <file.tgap> [options]
   input: GeoJSON (.geojson, .json), TopoJSON (.topojson), GeoPackage (.gpkg), Shapefile (.shp,
@@ -20,14 +22,18 @@ export const usage = `ssc generalize <input> --out <file.tgap> [options]
   --allow-holes             holes in the domain are enclaves, not gaps
   --group <n>               up to n independent merges or splits per step (default 1): fewer,
                             longer steps, as the seed paper suggests for smoother transitions
-  --quiet                   no progress on stderr`;
+  --quiet                   no progress on stderr
+${problemsUsage}
+A refused input names all its problems (up to --max-problems), grouped by kind, and nothing
+but the --problems file is written.`;
 
 export async function run(argv: string[]): Promise<void> {
   const { values, positionals } = parseArgs({ args: argv, allowPositionals: true, options: { out: { type: 'string' }, ...generalizeOptionSpecs } });
   if (positionals.length !== 1) throw new UsageError('give one input file');
   if (!values.out) throw new UsageError('--out <file.tgap> is required');
+  await checkOutputPath(values.out, 'file');
   const t0 = performance.now();
-  const { tgap, report } = await generalizeFile(positionals[0]!, pipelineOptions(values));
+  const { tgap, report } = await withProblemsFile(values.problems, () => generalizeFile(positionals[0]!, pipelineOptions(values)));
   const bytes = encodeTgap(tgap);
   await writeFileAtomic(values.out, bytes);
   const r = report;
@@ -38,6 +44,7 @@ export async function run(argv: string[]): Promise<void> {
       `input: ${tgap.meta.source} (${tgap.meta.crs}${tgap.meta.projectedFrom ? `, projected from ${tgap.meta.projectedFrom}` : ''})`,
       `topology: ${r.topology.faceCount} faces, ${r.topology.edges} edges, ${r.topology.nodeCount} nodes, ${r.topology.vertexCount} vertices`,
       `repairs: ${repairs}`,
+      ...(r.topology.droppedDuplicates ? [`dropped duplicate polygons: ${r.topology.droppedDuplicates}`] : []),
       ...(r.topology.holes.length ? [`holes in the domain (enclaves): ${r.topology.holes.length}`] : []),
       `tGAP: ${r.generalize.steps} steps (${r.generalize.merges} merges, ${r.generalize.splits} splits, ${r.generalize.reemits} faces redrawn), ${r.generalize.facesLeft} face(s) left, ${r.generalize.removedVertices} vertices removed by simplification`,
       `scale: 1:${Math.round(tgap.meta.baseScale)} at step 0`,

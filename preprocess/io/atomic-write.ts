@@ -1,6 +1,7 @@
 // Nothing half-written: every output goes to a temporary sibling first and is renamed into place.
 import { promises as fs } from 'node:fs';
 import path from 'node:path';
+import { fsReason, isFsError, OutputError } from './output-path.js';
 
 function tempSibling(target: string): string {
   const dir = path.dirname(target);
@@ -14,7 +15,7 @@ export async function writeFileAtomic(target: string, data: Uint8Array | string)
     await fs.rename(tmp, target);
   } catch (err) {
     await fs.rm(tmp, { force: true });
-    throw err;
+    throw writeError(target, err);
   }
 }
 
@@ -24,7 +25,11 @@ export async function writeFileAtomic(target: string, data: Uint8Array | string)
  */
 export async function writeDirAtomic(target: string, fill: (dir: string) => Promise<void>): Promise<void> {
   const tmp = tempSibling(target);
-  await fs.mkdir(tmp, { recursive: true });
+  try {
+    await fs.mkdir(tmp, { recursive: true });
+  } catch (err) {
+    throw writeError(target, err);
+  }
   try {
     await fill(tmp);
     const old = `${tmp}.old`;
@@ -39,6 +44,12 @@ export async function writeDirAtomic(target: string, fill: (dir: string) => Prom
     if (hadOld) await fs.rm(old, { recursive: true, force: true });
   } catch (err) {
     await fs.rm(tmp, { recursive: true, force: true });
-    throw err;
+    throw writeError(target, err);
   }
+}
+
+/** A file-system failure named by the target the user gave (not the temporary sibling). */
+function writeError(target: string, err: unknown): unknown {
+  if (!isFsError(err)) return err;
+  return new OutputError(`cannot write ${target}: ${err.code === 'ENOENT' ? `the folder ${path.dirname(path.resolve(target))} does not exist` : fsReason(err)}`);
 }

@@ -1,7 +1,7 @@
 // Reads polygon input (GeoJSON, TopoJSON, GeoPackage, Shapefile, FlatGeobuf, each optionally
 // gzipped) into plain rings of numbers. The binary formats come as GeoJSON features from their
 // readers (input-format.ts), so every format goes through the same checks below. Everything that
-// is not a polygon is refused here, with the feature named.
+// is not a polygon is refused here, with the feature named (all such features at once).
 import { promises as fs } from 'node:fs';
 import { gunzipSync } from 'node:zlib';
 import path from 'node:path';
@@ -9,6 +9,8 @@ import { feature as topoFeature } from 'topojson-client';
 import type { Topology } from 'topojson-specification';
 import { InputError, type FeatureRef } from './errors.js';
 import { detectFormat, readBinaryFormat } from './input-format.js';
+import { fsReason, isFsError } from './output-path.js';
+import { ProblemList } from './problems.js';
 
 export interface InputFeature {
   ref: FeatureRef;
@@ -35,20 +37,33 @@ export interface ReadOptions {
   layer?: string;
   /** Property that names a feature in messages (default: feature.id, then "id"). */
   idProperty?: string;
+  /**
+   * Where the problems of single features go (the feature is then kept without polygons,
+   * and the caller refuses the input later with all it found). Without it they are refused
+   * together at the end of reading.
+   */
+  problems?: ProblemList;
 }
+
+/** Beyond this (in CRS units) no coordinate is on the earth: metres or feet stay under 2e8. */
+export const MAX_COORDINATE = 1e9;
 
 export async function readInput(file: string, opts: ReadOptions = {}): Promise<RawInput> {
   let buf: Buffer;
   try {
     buf = await fs.readFile(file);
   } catch (err) {
-    throw new InputError(`cannot read input: ${(err as Error).message}`, { file });
+    throw new InputError(`cannot read input: ${isFsError(err) ? fsReason(err) : (err as Error).message}`, { file });
   }
-  if (buf.length >= 2 && buf[0] === 0x1f && buf[1] === 0x8b) {
+  const gzipped = buf.length >= 2 && buf[0] === 0x1f && buf[1] === 0x8b;
+  if (!gzipped && /\.gz$/i.test(file)) {
+    throw new InputError('broken gzip: the file is named .gz but does not start with the gzip signature (1f 8b)', { file });
+  }
+  if (gzipped) {
     try {
       buf = gunzipSync(buf);
     } catch (err) {
-      throw new InputError(`not a valid gzip file: ${(err as Error).message}`, { file });
+      throw new InputError(`broken gzip: ${(err as Error).message}`, { file });
     }
   }
   const format = detectFormat(buf, file);
@@ -106,10 +121,18 @@ export function parseDocument(doc: unknown, file: string, opts: ReadOptions = {}
   } else {
     throw new InputError(`unsupported document type ${JSON.stringify(doc.type)} (expected FeatureCollection, Feature or Topology)`, { file });
   }
+  if (geojsonFeatures.length === 0) throw new InputError('the input holds no features', { file });
+  const problems = opts.problems ?? new ProblemList(file);
   geojsonFeatures.forEach((f, index) => {
-    features.push(readFeature(f, index, file, opts.idProperty, repairs));
+    try {
+      features.push(readFeature(f, index, file, opts.idProperty, repairs));
+    } catch (err) {
+      if (!(err instanceof InputError) || !err.feature) throw err;
+      problems.addError(err, err.kind ?? 'geometry');
+      features.push({ ref: err.feature, properties: featureProperties(f), polygons: [] });
+    }
   });
-  if (features.length === 0) throw new InputError('the input holds no features', { file });
+  if (!opts.problems) problems.check();
   return { file, crsMember: doc.crs ?? null, features, repairs };
 }
 
@@ -137,8 +160,12 @@ function topologyFeatures(doc: Record<string, unknown>, file: string, layer: str
   return out;
 }
 
+function featureProperties(f: unknown): Record<string, unknown> {
+  return isObject(f) && isObject(f.properties) ? f.properties : {};
+}
+
 function readFeature(f: unknown, index: number, file: string, idProperty: string | undefined, repairs: InputRepairs): InputFeature {
-  const props = isObject(f) && isObject(f.properties) ? (f.properties) : {};
+  const props = featureProperties(f);
   const ref: FeatureRef = { index, id: featureId(f, props, idProperty) };
   if (!isObject(f) || f.type !== 'Feature') throw new InputError('is not a GeoJSON Feature', { file, feature: ref });
   const g = f.geometry;
@@ -173,7 +200,11 @@ function readRing(ring: unknown, file: string, ref: FeatureRef, repairs: InputRe
       const near = out.length >= 2 ? ([out[out.length - 2]!, out[out.length - 1]!] as [number, number]) : firstPosition(ring);
       // JSON.stringify would print NaN and Infinity as null, naming a value the file does not hold.
       const shown = `[${pos.map((v: unknown) => (typeof v === 'number' ? String(v) : JSON.stringify(v))).join(', ')}]`;
-      throw new InputError(`has a coordinate that is not a finite number: ${shown}`, { file, feature: ref, ...(near ? { location: near } : {}) });
+      throw new InputError(`has a coordinate that is not a finite number: ${shown}`, { file, feature: ref, kind: 'coordinate', ...(near ? { location: near } : {}) });
+    }
+    if (Math.abs(x) > MAX_COORDINATE || Math.abs(y) > MAX_COORDINATE) {
+      const near = out.length >= 2 ? ([out[out.length - 2]!, out[out.length - 1]!] as [number, number]) : firstPosition(ring);
+      throw new InputError(`has a coordinate out of range: [${x}, ${y}] (no CRS reaches beyond ±${MAX_COORDINATE} units)`, { file, feature: ref, kind: 'coordinate', ...(near ? { location: near } : {}) });
     }
     const n = out.length;
     if (n >= 2 && out[n - 2] === x && out[n - 1] === y) {
@@ -201,11 +232,11 @@ function featureId(f: unknown, props: Record<string, unknown>, idProperty: strin
   return typeof v === 'string' || typeof v === 'number' ? v : null;
 }
 
-/** The first [x, y] of finite numbers in nested coordinate arrays, if any. */
+/** The first [x, y] of finite numbers within range in nested coordinate arrays, if any. */
 function firstPosition(coords: unknown): [number, number] | undefined {
   if (!Array.isArray(coords)) return undefined;
   const [x, y] = coords as unknown[];
-  if (typeof x === 'number' && typeof y === 'number' && Number.isFinite(x) && Number.isFinite(y)) return [x, y];
+  if (typeof x === 'number' && typeof y === 'number' && Math.abs(x) <= MAX_COORDINATE && Math.abs(y) <= MAX_COORDINATE) return [x, y];
   for (const c of coords) {
     const p = firstPosition(c);
     if (p) return p;

@@ -96,7 +96,7 @@ class Generalization {
     this.compat = style.compat;
     this.metresPerMm = opts.resolutionMm / 1000;
     this.refreshedTol = opts.baseScale * this.metresPerMm;
-    // Every event makes at most one new face (a re-emit): twice the faces, and some room.
+    // Room for the faces and their first redraws; the table grows when redraws need more.
     this.queue = new ImportanceQueue(st, style.classes.map((c) => c.weight), topo.faceCount * 2 + 16);
     for (let f = 1; f < topo.faceCount; f++) this.queue.update(f);
   }

@@ -5,12 +5,15 @@ import FlatQueue from 'flatqueue';
 import { ALIVE, type PlanarState } from './planar-state.js';
 
 export class ImportanceQueue {
-  private readonly importance: Float64Array;
+  private importance: Float64Array;
   private readonly queue = new FlatQueue<number>();
 
-  /** `capacity`: the most face ids there will be (the table does not grow). */
+  /**
+   * `capacity`: the face ids expected. Redrawn faces take new ids, as many as the redraws,
+   * which no face count bounds: the table doubles when an id outgrows it.
+   */
   constructor(private readonly st: PlanarState, private readonly weight: readonly number[], capacity: number) {
-    this.importance = new Float64Array(capacity);
+    this.importance = new Float64Array(Math.max(1, capacity));
   }
 
   get length(): number {
@@ -19,7 +22,13 @@ export class ImportanceQueue {
 
   /** (Re)computes the importance of face f from its current area and queues it. */
   update(f: number): void {
-    if (f >= this.importance.length) throw new Error('face ids outgrew the importance table');
+    if (f >= this.importance.length) {
+      let n = this.importance.length;
+      while (n <= f) n *= 2;
+      const grown = new Float64Array(n);
+      grown.set(this.importance);
+      this.importance = grown;
+    }
     const imp = (Math.abs(this.st.faceArea2[f]!) / 2) * this.weight[this.st.faces[f]!.classIndex]!;
     this.importance[f] = imp;
     this.queue.push(f, imp);

@@ -5,71 +5,16 @@
 import test, { after, before } from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, readdirSync, writeFileSync } from 'node:fs';
+import { gzipSync } from 'node:zlib';
 import path from 'node:path';
 import { startSscSession, type SscSession } from '../../testing/run-ssc.js';
-import { tempDir } from '../../testing/temp-dir.js';
+import { at, collection, CRS, feature, OX, OY, polygon, rect, ring, STYLE, writeCase, type Case, type Json, type XY } from '../../testing/topology-cases.js';
 import { resolveCrs } from '../io/crs.js';
 import { InputError } from '../io/errors.js';
 import { readInput } from '../io/read-input.js';
 import { readTgap } from '../../format/tgap.js';
 import type { Tgap } from '../../format/tgap-model.js';
 import { buildTopology, type Topology, type TopologyRepairs } from './build-topology.js';
-
-type Json = null | boolean | number | string | Json[] | { [key: string]: Json };
-type XY = [number, number];
-
-// Fixtures are drawn in small local numbers and written shifted by (OX, OY), in a projected
-// CRS: (0, 0) is (1000, 2000) in the file. The two offsets differ so that a swapped x and y
-// would show.
-const OX = 1000, OY = 2000;
-const CRS = 'EPSG:28992';
-const at = (x: number, y: number): XY => [OX + x, OY + y];
-
-/** Counterclockwise rectangle, open (no closing point). */
-const rect = (x0: number, y0: number, x1: number, y1: number): XY[] => [[x0, y0], [x1, y0], [x1, y1], [x0, y1]];
-/** Shifted positions of a local ring, closed unless `open`. */
-const ring = (pts: XY[], open = false): Json[] => {
-  const out: Json[] = pts.map(([x, y]) => at(x, y));
-  return open ? out : [...out, at(pts[0]![0], pts[0]![1])];
-};
-const polygon = (...rings: XY[][]): Json => ({ type: 'Polygon', coordinates: rings.map((r) => ring(r)) });
-const feature = (id: string | null, geometry: Json, cls = 'field'): Json => ({
-  type: 'Feature',
-  properties: id === null ? { cls } : { id, cls },
-  geometry,
-});
-const collection = (features: Json[], crs: string | null = CRS): Json => ({
-  type: 'FeatureCollection',
-  ...(crs ? { crs: { type: 'name', properties: { name: crs } } } : {}),
-  features,
-});
-
-const STYLE = {
-  name: 'topology cases',
-  classProperty: 'cls',
-  baseScale: 1000,
-  classes: {
-    field: { color: '#b3d49a', weight: 1 },
-    water: { color: '#9ec9e8', weight: 2 },
-  },
-};
-
-interface Case {
-  dir: string;
-  input: string;
-  style: string;
-  /** Files in the folder before any run: what must still be all that is there after a refusal. */
-  files: string[];
-}
-
-function writeCase(t: { after: (fn: () => void) => void }, name: string, doc: Json | string, style: object = STYLE): Case {
-  const dir = tempDir(t);
-  const input = path.join(dir, name);
-  writeFileSync(input, typeof doc === 'string' ? doc : JSON.stringify(doc));
-  const styleFile = path.join(dir, 'style.json');
-  writeFileSync(styleFile, JSON.stringify(style));
-  return { dir, input, style: styleFile, files: readdirSync(dir).sort() };
-}
 
 interface Run {
   code: number;
@@ -450,7 +395,7 @@ test('overlapping faces whose sides cross are refused', async (t) => {
   // A (0,0)-(10,10) and B (5,5)-(15,15): the sides cross at (10,5) and (5,10).
   const c = writeCase(t, 'cross.geojson', collection([feature('a', polygon(rect(0, 0, 10, 10))), feature('b', polygon(rect(5, 5, 15, 15)))]));
   const crossing = (x: number, y: number): boolean => isAt(10, 5)(x, y) || isAt(5, 10)(x, y);
-  const msg = await expectRefusal(c, { feature: null, message: /crosses feature #\d \(id "[ab]"\) \(self-intersection or overlap\)/, location: crossing });
+  const msg = await expectRefusal(c, { feature: null, message: /crosses feature #\d \(id "[ab]"\) \(overlap\)/, location: crossing });
   assert.match(msg, /feature #0 \(id "a"\)/);
   assert.match(msg, /feature #1 \(id "b"\)/);
   const err = await topologyError(c.input);
@@ -470,22 +415,29 @@ test('a face inside another face without a hole for it is refused', async (t) =>
 });
 
 test('a duplicated polygon is refused', async (t) => {
-  await t.test('the same square as two features', async (t) => {
+  await t.test('the same square as two features: both named', async (t) => {
     const b = rect(10, 0, 20, 10);
+    // The copy starts at another corner and runs the other way: the same polygon all the same.
     const c = writeCase(t, 'dup-feature.geojson', collection([
       feature('a', polygon(rect(0, 0, 10, 10))),
       feature('b', polygon(b)),
-      feature('copy of b', polygon(b)),
+      feature('copy of b', polygon([[20, 10], [20, 0], [10, 0], [10, 10]])),
     ]));
     const msg = await expectRefusal(c, {
-      feature: null,
-      message: /overlaps feature #\d \(id "[^"]+"\): both lie on the same side of the segment/,
-      location: (x, y) => onBoundary([b], x, y),
+      feature: [2, 'copy of b'],
+      message: /is an exact duplicate of feature #1 \(id "b"\) \(--drop-duplicates drops the later one\)$/,
+      location: isAt(20, 10),
     });
-    // Both copies are named, and not the neighbour.
-    assert.match(msg, /feature #1 \(id "b"\)/);
-    assert.match(msg, /feature #2 \(id "copy of b"\)/);
     assert.doesNotMatch(msg, /feature #0/);
+    // With --drop-duplicates the copy is dropped and counted: a and b are left.
+    const tg = await expectPartition(c, {
+      counts: { faces: 2, edges: 3, nodes: 2, vertices: 6 },
+      areas: [100, 100],
+      shared: { 'a|b': 10, 'a|out': 30, 'b|out': 30 },
+    }, '--drop-duplicates');
+    assert.deepEqual(tg.meta.attributes.map((p) => p.id), ['a', 'b']);
+    const r = await generalize(c, 'again.tgap', '--drop-duplicates');
+    assert.match(r.stdout, /^dropped duplicate polygons: 1$/m);
   });
   await t.test('the same part twice in one MultiPolygon', async (t) => {
     const part = [ring(rect(10, 0, 20, 10))];
@@ -567,7 +519,55 @@ test('a self-intersecting ring (bow-tie) is refused', async (t) => {
   // do not cancel out. Feature #0 is a good square elsewhere.
   const bow: XY[] = [[0, 0], [30, 30], [30, 20], [0, 5]];
   const c = writeCase(t, 'bow.geojson', collection([feature('square', polygon(rect(40, 0, 50, 10))), feature('bow', polygon(bow))]));
-  await expectRefusal(c, { feature: [1, 'bow'], message: /is self-intersecting: its boundary crosses itself$/, location: isAt(10, 10) });
+  await expectRefusal(c, { feature: [1, 'bow'], message: /is self-intersecting: its outer ring crosses itself$/, location: isAt(10, 10) });
+});
+
+test('a bow-tie beside a neighbour is a self-intersection, not an overlap with the neighbour', async (t) => {
+  // B = (10,0) (30,14) (30,-4) (10,10) crosses itself at (10 + 50/7, 5): its small loop along A's
+  // side runs the way A's does, once the larger loop sets the ring's direction.
+  const c = writeCase(t, 'bow-beside.geojson', collection([
+    feature('A', polygon(rect(0, 0, 10, 10))),
+    feature('B', polygon([[10, 0], [30, 14], [30, -4], [10, 10]])),
+  ]));
+  const msg = await expectRefusal(c, { feature: [1, 'B'], message: /is self-intersecting: its outer ring crosses itself$/, location: (x, y) => Math.abs(x - OX - (10 + 50 / 7)) < 1e-3 && y === OY + 5 });
+  assert.doesNotMatch(msg, /overlap|feature #0/);
+});
+
+test('a coordinate far out of range is named as such, not as an overlap', async (t) => {
+  const pts: Json[] = [at(10, 0), [1e300, OY], at(20, 10), at(10, 10), at(10, 0)];
+  const c = writeCase(t, 'far.geojson', collection([
+    feature('ok', polygon(rect(0, 0, 10, 10))),
+    feature('far', { type: 'Polygon', coordinates: [pts] }),
+  ]));
+  const msg = await expectRefusal(c, { feature: [1, 'far'], message: /has a coordinate out of range: \[1e\+300, 2000\]/, location: isAt(10, 0) });
+  assert.doesNotMatch(msg, /overlap/);
+});
+
+test('a class property present but null is named as null', async (t) => {
+  const doc = collection([feature('f0', polygon(rect(0, 0, 10, 10))), feature('f1', polygon(rect(10, 0, 20, 10)))]);
+  (((doc as { features: Json[] }).features[1] as { properties: Record<string, Json> }).properties).cls = null;
+  const c = writeCase(t, 'null-class.geojson', doc);
+  await expectRefusal(c, { feature: [1, 'f1'], message: /has the class property "cls" set to null$/, location: isAt(10, 0) });
+});
+
+test('a .gz file that is not gzip is named a broken gzip, not broken JSON', async (t) => {
+  const good = JSON.stringify(collection([feature('f0', polygon(rect(0, 0, 10, 10)))]));
+  const expectBrokenGzip = async (c: Case, reason: RegExp): Promise<void> => {
+    const r = await generalize(c, 'out.tgap');
+    assert.equal(r.code, 1);
+    assert.equal(r.stderr, `ssc generalize: ${c.input}: broken gzip: ${r.stderr.split('broken gzip: ')[1]}`);
+    assert.match(r.stderr, reason);
+    assert.doesNotMatch(r.stderr, /JSON/);
+    assert.deepEqual(readdirSync(c.dir).sort(), c.files, 'nothing written');
+  };
+  await t.test('plain JSON named .gz', async (t) => {
+    await expectBrokenGzip(writeCase(t, 'plain.geojson.gz', good), /the file is named \.gz but does not start with the gzip signature \(1f 8b\)\n$/);
+  });
+  await t.test('a gzip stream cut short', async (t) => {
+    const c = writeCase(t, 'cut.geojson.gz', '');
+    writeFileSync(c.input, gzipSync(good).subarray(0, 20));
+    await expectBrokenGzip(c, /broken gzip: unexpected end of file\n$/);
+  });
 });
 
 test('coordinates that are not finite numbers are refused', async (t) => {

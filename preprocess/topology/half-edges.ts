@@ -48,7 +48,7 @@ export function buildHalfEdges(rings: Ring[], xs: Float64Array, ys: Float64Array
 
 /**
  * The twin of each half-edge among the rings' own (-1: none, the outside is across), room
- * left for twice as many. Refuses two half-edges the same way (an overlap or a repeated ring)
+ * left for twice as many. Notes two half-edges the same way (an overlap or a repeated ring)
  * and a face on both sides of a segment.
  */
 function pairTwins(
@@ -57,21 +57,31 @@ function pairTwins(
 ): Int32Array {
   const out = outgoing(from, nv, nh0);
   const twin = new Int32Array(nh0 * 2).fill(-1);
+  // Each pair of faces is named once, at the first segment found.
+  const named = new Set<string>();
+  const once = (f: number, g: number): boolean => {
+    const key = f < g ? `${f}|${g}` : `${g}|${f}`;
+    if (named.has(key)) return false;
+    named.add(key);
+    return true;
+  };
   for (let h = 0; h < nh0; h++) {
     const u = from[h]!, v = to[h]!;
     for (let k = out.start[u]!; k < out.start[u + 1]!; k++) {
       const g = out.list[k]!;
       if (g !== h && to[g] === v) {
         const mx = (xs[u]! + xs[v]!) / 2, my = (ys[u]! + ys[v]!) / 2;
-        if (face[g] === face[h]) refusal.fail('has a boundary segment twice in the same direction (a repeated ring or part)', face[h], mx, my);
-        refusal.fail(`overlaps ${refusal.describe(face[g]!)}: both lie on the same side of the segment`, face[h], mx, my);
+        if (g > h || !once(face[g]!, face[h]!)) continue;
+        if (face[g] === face[h]) refusal.note('overlap', 'has a boundary segment twice in the same direction (a repeated ring or part)', face[h], mx, my);
+        else refusal.note('overlap', `overlaps ${refusal.describe(face[g]!)}: both lie on the same side of the segment`, face[h], mx, my);
       }
     }
     for (let k = out.start[v]!; k < out.start[v + 1]!; k++) {
       const g = out.list[k]!;
       if (to[g] === u) {
         if (face[g] === face[h]) {
-          refusal.fail('touches itself along a segment (a ring or hole that is not a simple boundary)', face[h], (xs[u]! + xs[v]!) / 2, (ys[u]! + ys[v]!) / 2);
+          if (g > h && once(face[h]!, face[h]!)) refusal.note('selfIntersection', 'touches itself along a segment (a ring or hole that is not a simple boundary)', face[h], (xs[u]! + xs[v]!) / 2, (ys[u]! + ys[v]!) / 2);
+          continue;
         }
         twin[h] = g;
         break;

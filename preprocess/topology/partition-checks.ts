@@ -1,70 +1,38 @@
 // The checks that the half-edges form a planar partition: no segments crossing, no gap
-// inside the domain, no part of it lying inside another.
-import Flatbush from 'flatbush';
-import { orient, segmentsIntersect } from '../geom/predicates.js';
+// inside the domain, no part of it lying inside another. Each problem is noted and the
+// check goes on.
+import { orient } from '../geom/predicates.js';
 import { ringArea2 } from '../geom/ring.js';
 import { nextInFace, type HalfEdges } from './half-edges.js';
 import type { Refusal } from './refusal.js';
+import { crossingPoint, forEachNearPair, segmentsConflict } from './segment-conflict.js';
 
-/** Refuses two segments that cross or touch other than at a shared vertex (self-intersection or overlap). */
+/** Notes two segments that cross or touch other than at a shared vertex (an overlap), each pair of features once. */
 export function checkCrossings(he: HalfEdges, xs: Float64Array, ys: Float64Array, refusal: Refusal): void {
   const { from, to, face, twin, count: nh } = he;
   const segs: number[] = [];
   for (let h = 0; h < nh; h++) if (h < twin[h]!) segs.push(h);
-  if (segs.length === 0) return;
-  const index = new Flatbush(segs.length);
-  for (const h of segs) {
-    const a = from[h]!, b = to[h]!;
-    index.add(Math.min(xs[a]!, xs[b]!), Math.min(ys[a]!, ys[b]!), Math.max(xs[a]!, xs[b]!), Math.max(ys[a]!, ys[b]!));
-  }
-  index.finish();
-  const hits: number[] = [];
-  for (let i = 0; i < segs.length; i++) {
-    const h = segs[i]!;
-    const a = from[h]!, b = to[h]!;
-    hits.length = 0;
-    index.search(Math.min(xs[a]!, xs[b]!), Math.min(ys[a]!, ys[b]!), Math.max(xs[a]!, xs[b]!), Math.max(ys[a]!, ys[b]!), (j) => {
-      if (j > i) hits.push(j);
-      return false;
-    });
-    for (const j of hits) {
-      const g = segs[j]!;
-      const c = from[g]!, d = to[g]!;
-      let bad: boolean;
-      if (a === c || a === d || b === c || b === d) {
-        // Sharing one vertex is fine unless the two run along each other.
-        const shared = a === c || a === d ? a : b;
-        const p = shared === a ? b : a, q = shared === c ? d : c;
-        bad = p === q || (orient(xs[shared]!, ys[shared]!, xs[p]!, ys[p]!, xs[q]!, ys[q]!) === 0 &&
-          (xs[p]! - xs[shared]!) * (xs[q]! - xs[shared]!) + (ys[p]! - ys[shared]!) * (ys[q]! - ys[shared]!) > 0);
-      } else {
-        bad = segmentsIntersect(xs[a]!, ys[a]!, xs[b]!, ys[b]!, xs[c]!, ys[c]!, xs[d]!, ys[d]!);
-      }
-      if (!bad) continue;
-      const [ix, iy] = crossingPoint(xs[a]!, ys[a]!, xs[b]!, ys[b]!, xs[c]!, ys[c]!, xs[d]!, ys[d]!);
-      const f1 = face[h] || face[twin[h]!]!, f2 = face[g] || face[twin[g]!]!;
-      const faces1 = [face[h]!, face[twin[h]!]!].filter((f) => f > 0);
-      const faces2 = [face[g]!, face[twin[g]!]!].filter((f) => f > 0);
-      if (faces1.some((f) => faces2.includes(f)) && faces1.length + faces2.length <= 2) {
-        refusal.fail('is self-intersecting: its boundary crosses itself', f1, ix, iy);
-      }
-      const other = faces2.find((f) => !faces1.includes(f)) ?? f2;
-      refusal.fail(
-        f1 === other
-          ? 'is self-intersecting: its boundary crosses itself'
-          : `crosses ${refusal.describe(other)} (self-intersection or overlap)`,
-        f1, ix, iy,
-      );
-    }
-  }
-}
-
-function crossingPoint(ax: number, ay: number, bx: number, by: number, cx: number, cy: number, dx: number, dy: number): [number, number] {
-  const den = (bx - ax) * (dy - cy) - (by - ay) * (dx - cx);
-  if (den === 0) return [(ax + bx) / 2, (ay + by) / 2];
-  const t = ((cx - ax) * (dy - cy) - (cy - ay) * (dx - cx)) / den;
-  const tc = Math.max(0, Math.min(1, t));
-  return [ax + tc * (bx - ax), ay + tc * (by - ay)];
+  const named = new Set<string>();
+  forEachNearPair(segs.map((h) => from[h]!), segs.map((h) => to[h]!), xs, ys, (i, j) => {
+    const h = segs[i]!, g = segs[j]!;
+    const a = from[h]!, b = to[h]!, c = from[g]!, d = to[g]!;
+    if (!segmentsConflict(a, b, c, d, xs, ys)) return;
+    const faces1 = [face[h]!, face[twin[h]!]!].filter((f) => f > 0);
+    const faces2 = [face[g]!, face[twin[g]!]!].filter((f) => f > 0);
+    const f1 = faces1[0] ?? 0;
+    const other = faces2.find((f) => !faces1.includes(f)) ?? faces2[0] ?? 0;
+    const key = f1 < other ? `${f1}|${other}` : `${other}|${f1}`;
+    if (named.has(key)) return;
+    named.add(key);
+    const [ix, iy] = crossingPoint(a, b, c, d, xs, ys);
+    // A ring crossing itself was named before this check; what is left is between features
+    // (or a part of one feature across another of its parts).
+    refusal.note(
+      f1 === other ? 'selfIntersection' : 'overlap',
+      f1 === other ? 'is self-intersecting: its boundary crosses itself' : `crosses ${refusal.describe(other)} (overlap)`,
+      f1, ix, iy,
+    );
+  });
 }
 
 /**
@@ -106,7 +74,8 @@ export function checkOutside(he: HalfEdges, xs: Float64Array, ys: Float64Array, 
       }
       const inner = face[twin[h]!]!;
       const [x0, y0, x1, y1] = c.bbox;
-      refusal.fail(
+      refusal.note(
+        'gap',
         `borders a gap inside the domain (an area no feature covers, ${(c.area2 / 2).toPrecision(4)} square units, bounding box ${[x0, y0, x1, y1].map((v) => Math.round(v * 1000) / 1000).join(', ')}); if it is outside the domain on purpose (an enclave), allow holes (--allow-holes, or "allowHoles": true in the style)`,
         inner, xs[from[h]!], ys[from[h]!],
       );
@@ -128,7 +97,7 @@ export function checkOutside(he: HalfEdges, xs: Float64Array, ys: Float64Array, 
         w += windingAround(d.hs, from, xs, ys, mx, my);
       }
       if (w !== 0) {
-        refusal.fail('lies inside the area of other features without a hole for it (overlap)', face[twin[h]!], mx, my);
+        refusal.note('overlap', 'lies inside the area of other features without a hole for it (overlap)', face[twin[h]!], mx, my);
       }
     }
   }

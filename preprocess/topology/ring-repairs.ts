@@ -32,10 +32,14 @@ export function orientRings(rings: Ring[], xs: Float64Array, ys: Float64Array, r
   for (const r of rings) {
     const distinct = new Set(r.ids).size;
     if (distinct < 3) {
-      refusal.fail(`has a ${r.outer ? 'ring' : 'hole'} with fewer than 3 distinct points`, r.face, xs[r.ids[0]!], ys[r.ids[0]!]);
+      refusal.note('ring', `has a ${r.outer ? 'ring' : 'hole'} with fewer than 3 distinct points`, r.face, xs[r.ids[0]!], ys[r.ids[0]!]);
+      continue;
     }
     const a2 = ringArea2(r.ids, xs, ys);
-    if (a2 === 0) refusal.fail(`has a ${r.outer ? 'ring' : 'hole'} of zero area`, r.face, xs[r.ids[0]!], ys[r.ids[0]!]);
+    if (a2 === 0) {
+      refusal.note('ring', `has a ${r.outer ? 'ring' : 'hole'} of zero area`, r.face, xs[r.ids[0]!], ys[r.ids[0]!]);
+      continue;
+    }
     if ((a2 > 0) !== r.outer) {
       r.ids.reverse();
       repairs.reorientedRings++;

@@ -1,4 +1,6 @@
 // The planar partition buildTopology makes, its options, and the rings it is made from.
+import type { ProblemList } from '../io/problems.js';
+
 export interface TopoEdge {
   start: number;
   end: number;
@@ -42,6 +44,8 @@ export interface TopologyOptions {
    * taken as outside the domain (an enclave of another territory) and listed in the result.
    */
   allowHoles?: boolean;
+  /** Where problems are gathered (problems found before, while reading, are refused with these). */
+  problems?: ProblemList;
   /** Repairs already counted while reading. */
   inputRepairs?: { closedRings: number; duplicatePoints: number };
 }
