@@ -25,7 +25,7 @@ export async function fetchChunk(leaf: ChunkLeaf, url: string, retry: RetryOptio
   }
   let chunk;
   try {
-    chunk = decodeChunk(bytes, leaf.file);
+    chunk = await decodeChunk(bytes, leaf.file);
   } catch (err) {
     if (err instanceof ChunkFormatError) throw new ChunkCorrupt(err.message);
     throw err;
