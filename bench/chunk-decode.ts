@@ -4,12 +4,17 @@
 // all chunk files raw and gzip (level 6, as the build precompresses them for serving). Each run
 // decodes all chunks over and over for a quarter second; the table gives the median over the
 // runs (and the slowest and fastest run's MB/s), and ms per MB of decoded (GPU-ready) vertices
-// and indices, which stays comparable when the file format changes.
+// and indices, which stays comparable when the file format changes. A second table gives the
+// chunks one 1280x720 view needs, centred, at the base scale, a middle scale and the full
+// extent (bench:render's views): those whose box meets its ground box at its flat z, without
+// the prefetch margin; their bytes raw and gzip.
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { gzipSync } from 'node:zlib';
 import { decodeChunk } from '../format/chunk.js';
+import { queryIndex } from '../format/index-query.js';
+import { zAtScale } from '../format/scale.js';
 import { buildBenchCube } from './bench-cube.js';
 import { benchArgs, datasets } from './datasets.js';
 import { median } from './stats.js';
@@ -19,6 +24,8 @@ const RUN_MS = 250;
 const { runs, filter } = benchArgs(7);
 const sets = datasets(filter, ['bgt_otterlo_1800m', 'nlcd_zion']);
 const dir = mkdtempSync(path.join(tmpdir(), 'ssc-bench-'));
+const WIDTH = 1280, HEIGHT = 720;
+const viewRows: string[][] = [['dataset', 'view', 'scale', 'chunks', 'MB', 'MB gzip']];
 const rows: string[][] = [['dataset', 'chunks', 'MB', 'MB gzip', 'triangles', 'passes/run', 'ms/pass', 'MB/s', 'ms/decoded MB', 'chunks/s', 'MB/s range']];
 try {
   for (const d of sets) {
@@ -29,7 +36,21 @@ try {
       return b.buffer.slice(b.byteOffset, b.byteOffset + b.byteLength);
     });
     const bytes = bodies.reduce((s, b) => s + b.byteLength, 0);
-    const gzipBytes = bodies.reduce((s, b) => s + gzipSync(new Uint8Array(b), { level: 6 }).byteLength, 0);
+    const gzipped = new Map(cube.leaves.map((l, i) => [l.file, gzipSync(new Uint8Array(bodies[i]!), { level: 6 }).byteLength]));
+    const gzipBytes = [...gzipped.values()].reduce((s, n) => s + n, 0);
+    const meta = cube.index.meta;
+    const [x0, y0, x1, y1] = meta.extent;
+    const full = (Math.max((x1 - x0) / WIDTH, (y1 - y0) / HEIGHT) * 1000) / meta.pixelSizeMm;
+    for (const [name, scale] of [['base', meta.baseScale], ['middle', Math.sqrt(meta.baseScale * full)], ['extent', full]] as const) {
+      // Ground units per pixel at this scale (the CRS in metres).
+      const px = (scale * meta.pixelSizeMm) / 1000, cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+      const z = zAtScale(meta, scale);
+      const q = queryIndex(cube.index.root, { ground: [cx - (px * WIDTH) / 2, cy - (px * HEIGHT) / 2, cx + (px * WIDTH) / 2, cy + (px * HEIGHT) / 2], zMin: z, zMax: z }, (r) => cube.subs.get(r));
+      viewRows.push([
+        d.name, name, `1:${Math.round(scale)}`, String(q.leaves.length),
+        (q.leaves.reduce((s, l) => s + l.bytes, 0) / 1e6).toFixed(3), (q.leaves.reduce((s, l) => s + gzipped.get(l.file)!, 0) / 1e6).toFixed(3),
+      ]);
+    }
     // A run decodes every chunk, pass after pass, for at least RUN_MS (a pass alone can take
     // 2 ms, too short to time well); its rate is passes x bytes over its time.
     let triangles = 0, decoded = 0;
@@ -69,3 +90,5 @@ try {
 }
 console.log(`bench:chunks, chunk bytes and decodeChunk over every chunk of the cube, ${runs} runs (median), node ${process.version}`);
 printTable(rows);
+console.log('\nchunks one view needs (1280x720, centred, flat z; no prefetch margin)');
+printTable(viewRows);

@@ -212,7 +212,9 @@ test('bgt_otterlo_400m cube', async (t) => {
     assert.equal(rep.chunks, files.length);
     assert.equal(rep.bytes.total, files.reduce((a, f) => a + readFileSync(path.join(cube, f)).length, 0));
     assert.ok(rep.bytes.cv <= 0.25, `chunk sizes vary too much (CV ${rep.bytes.cv})`);
-    assert.ok(rep.overhead <= 1.05, `chunking costs ${rep.overhead}`);
+    // Compressed chunks (version 2) pay for chunking also in their codecs starting afresh and
+    // sharing points only within a chunk: a few per cent more than the raw version 1 did.
+    assert.ok(rep.overhead <= 1.15, `chunking costs ${rep.overhead}`);
     assert.equal(rep.views.length, 8);
   });
 });
