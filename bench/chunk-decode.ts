@@ -1,12 +1,20 @@
-// npm run bench:chunks [-- <dataset filter>] [runs=N]: decodeChunk (format/chunk.ts, what the
-// map's worker runs on every chunk it receives) over every chunk of a freshly built cube of
-// bgt_otterlo_1800m and nlcd_zion, from bytes already in memory. Each run decodes all chunks
-// over and over for a quarter second; the table gives the median over the runs (and the
-// slowest and fastest run's MB/s).
+// npm run bench:chunks [-- <dataset filter>] [runs=N]: the surface chunks' size and decodeChunk
+// (format/chunk.ts, what the map's worker runs on every chunk it receives) over every chunk of a
+// freshly built cube of bgt_otterlo_1800m and nlcd_zion, from bytes already in memory. Sizes:
+// all chunk files raw and gzip (level 6, as the build precompresses them for serving). Each run
+// decodes all chunks over and over for a quarter second; the table gives the median over the
+// runs (and the slowest and fastest run's MB/s), and ms per MB of decoded (GPU-ready) vertices
+// and indices, which stays comparable when the file format changes. A second table gives the
+// chunks one 1280x720 view needs, centred, at the base scale, a middle scale and the full
+// extent (bench:render's views): those whose box meets its ground box at its flat z, without
+// the prefetch margin; their bytes raw and gzip.
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
+import { gzipSync } from 'node:zlib';
 import { decodeChunk } from '../format/chunk.js';
+import { queryIndex } from '../format/index-query.js';
+import { zAtScale } from '../format/scale.js';
 import { buildBenchCube } from './bench-cube.js';
 import { benchArgs, datasets } from './datasets.js';
 import { median } from './stats.js';
@@ -16,7 +24,9 @@ const RUN_MS = 250;
 const { runs, filter } = benchArgs(7);
 const sets = datasets(filter, ['bgt_otterlo_1800m', 'nlcd_zion']);
 const dir = mkdtempSync(path.join(tmpdir(), 'ssc-bench-'));
-const rows: string[][] = [['dataset', 'chunks', 'MB', 'triangles', 'passes/run', 'ms/pass', 'MB/s', 'chunks/s', 'MB/s range']];
+const WIDTH = 1280, HEIGHT = 720;
+const viewRows: string[][] = [['dataset', 'view', 'scale', 'chunks', 'MB', 'MB gzip']];
+const rows: string[][] = [['dataset', 'chunks', 'MB', 'MB gzip', 'triangles', 'passes/run', 'ms/pass', 'MB/s', 'ms/decoded MB', 'chunks/s', 'MB/s range']];
 try {
   for (const d of sets) {
     const cube = buildBenchCube(d, path.join(dir, d.name));
@@ -26,9 +36,24 @@ try {
       return b.buffer.slice(b.byteOffset, b.byteOffset + b.byteLength);
     });
     const bytes = bodies.reduce((s, b) => s + b.byteLength, 0);
+    const gzipped = new Map(cube.leaves.map((l, i) => [l.file, gzipSync(new Uint8Array(bodies[i]!), { level: 6 }).byteLength]));
+    const gzipBytes = [...gzipped.values()].reduce((s, n) => s + n, 0);
+    const meta = cube.index.meta;
+    const [x0, y0, x1, y1] = meta.extent;
+    const full = (Math.max((x1 - x0) / WIDTH, (y1 - y0) / HEIGHT) * 1000) / meta.pixelSizeMm;
+    for (const [name, scale] of [['base', meta.baseScale], ['middle', Math.sqrt(meta.baseScale * full)], ['extent', full]] as const) {
+      // Ground units per pixel at this scale (the CRS in metres).
+      const px = (scale * meta.pixelSizeMm) / 1000, cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+      const z = zAtScale(meta, scale);
+      const q = queryIndex(cube.index.root, { ground: [cx - (px * WIDTH) / 2, cy - (px * HEIGHT) / 2, cx + (px * WIDTH) / 2, cy + (px * HEIGHT) / 2], zMin: z, zMax: z }, (r) => cube.subs.get(r));
+      viewRows.push([
+        d.name, name, `1:${Math.round(scale)}`, String(q.leaves.length),
+        (q.leaves.reduce((s, l) => s + l.bytes, 0) / 1e6).toFixed(3), (q.leaves.reduce((s, l) => s + gzipped.get(l.file)!, 0) / 1e6).toFixed(3),
+      ]);
+    }
     // A run decodes every chunk, pass after pass, for at least RUN_MS (a pass alone can take
     // 2 ms, too short to time well); its rate is passes x bytes over its time.
-    let triangles = 0;
+    let triangles = 0, decoded = 0;
     const msPerPass: number[] = [];
     const passes: number[] = [];
     for (let run = -1; run < runs; run++) {
@@ -37,7 +62,12 @@ try {
       let n = 0, t = 0;
       do {
         t = 0;
-        for (const b of bodies) t += decodeChunk(b).triangleCount;
+        decoded = 0;
+        for (const b of bodies) {
+          const c = await decodeChunk(b);
+          t += c.triangleCount;
+          decoded += c.vertexByteLength + c.indices.byteLength;
+        }
         n++;
       } while (performance.now() - t0 < RUN_MS);
       if (run >= 0) {
@@ -49,8 +79,8 @@ try {
     const mbs = msPerPass.map((m) => bytes / 1e6 / (m / 1000));
     const m = median(msPerPass);
     rows.push([
-      d.name, String(bodies.length), (bytes / 1e6).toFixed(1), String(triangles), String(median(passes)), m.toFixed(2),
-      median(mbs).toFixed(0), Math.round(bodies.length / (m / 1000)).toString(),
+      d.name, String(bodies.length), (bytes / 1e6).toFixed(2), (gzipBytes / 1e6).toFixed(2), String(triangles), String(median(passes)), m.toFixed(2),
+      median(mbs).toFixed(0), (m / (decoded / 1e6)).toFixed(2), Math.round(bodies.length / (m / 1000)).toString(),
       `${Math.min(...mbs).toFixed(0)}..${Math.max(...mbs).toFixed(0)}`,
     ]);
     rmSync(cube.dir, { recursive: true, force: true });
@@ -58,5 +88,7 @@ try {
 } finally {
   rmSync(dir, { recursive: true, force: true });
 }
-console.log(`bench:chunks, decodeChunk over every chunk of the cube, ${runs} runs (median), node ${process.version}`);
+console.log(`bench:chunks, chunk bytes and decodeChunk over every chunk of the cube, ${runs} runs (median), node ${process.version}`);
 printTable(rows);
+console.log('\nchunks one view needs (1280x720, centred, flat z; no prefetch margin)');
+printTable(viewRows);

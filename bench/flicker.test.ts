@@ -68,7 +68,7 @@ test('frames of the wrong size are refused, naming both sizes', () => {
   assert.throws(() => new FlickerCounter(0, 5), /whole pixels \(got 0x5\)/);
 });
 
-test('a hand-made cube whose tilted surface crosses a flat one flickers where the tilt is above it', () => {
+test('a hand-made cube whose tilted surface crosses a flat one flickers where the tilt is above it', async () => {
   // Ground [0,10] x [0,10]. Floor: face 1 (class 0) at z 0. Face 2 (class 1) flat at z 1 over
   // face 1. Face 3 (class 0) tilted over face 2, z = 0.5 + x / 10. Where x > 5 the tilt lies
   // above the flat surface: slices below 1 show face 1 (class 0), from 1 face 2 (class 1),
@@ -84,7 +84,7 @@ test('a hand-made cube whose tilted surface crosses a flat one flickers where th
   for (const [a, b, c] of [[0, 1, 2], [0, 2, 3]] as const) s.addTilted(a, b, c, zx(a), zx(b), zx(c), 3, 2, 'tilt');
   s.zEnd.fill(3);
   const view = fitView([0, 0, 10, 10], 40, 40);
-  const slice = surfacesSlicer(s, xs, ys, (f) => (f === 2 ? 1 : 0), view);
+  const slice = await surfacesSlicer(s, xs, ys, (f) => (f === 2 ? 1 : 0), view);
   const counter = new FlickerCounter(40, 40);
   // 41 slices, z 0, 0.05, ..., 2.
   for (let k = 0; k <= 40; k++) counter.add(slice(k / 20));
@@ -104,7 +104,7 @@ test('a hand-made cube whose tilted surface crosses a flat one flickers where th
   assert.equal(counter.faceReturns, 0, 'faces 1, 2, 3 in turn: none comes back');
 });
 
-test('a hand-made cube where a flat surface gives the loser back inside its merge\'s ramp: the loser returns', () => {
+test('a hand-made cube where a flat surface gives the loser back inside its merge\'s ramp: the loser returns', async () => {
   // Floor: L (face 2) over [0,10] x [0,10]. The merge into W (face 1) tilted, z = 0.5 + x / 10.
   // A flat surface at z 1, upper L, lower W (as a simplification of L's boundary would lie):
   // where x < 5 the ramp is below it, and slices show L, then W (from 0.5 + x / 10), then L
@@ -120,7 +120,7 @@ test('a hand-made cube where a flat surface gives the loser back inside its merg
   s.zEnd.fill(3);
   const view = fitView([0, 0, 10, 10], 40, 40);
   // W and L of one class: no class flicker, only the face comes back.
-  const slice = surfacesSlicer(s, xs, ys, () => 0, view);
+  const slice = await surfacesSlicer(s, xs, ys, () => 0, view);
   const counter = new FlickerCounter(40, 40);
   for (let k = 0; k <= 40; k++) counter.add(slice(k / 20));
   assert.equal(counter.flickering, 0);

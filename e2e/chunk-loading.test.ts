@@ -5,12 +5,16 @@
 // demand; gzip bodies without Content-Encoding are read. The cube is a real one of
 // bgt_otterlo_400m in small chunks (about 60) with sub-index files.
 import assert from 'node:assert/strict';
+import { readFile } from 'node:fs/promises';
 import { request } from 'node:http';
+import path from 'node:path';
 import { after, afterEach, before, describe, test } from 'node:test';
 import type { Browser } from 'playwright-core';
+import { decodeChunk } from '../format/chunk.js';
 import type { ChunkLeaf, ExternalNode, InnerNode } from '../format/cube-index.js';
 import { boxMeets } from '../format/index-query.js';
 import { fitBbox, growBbox, viewBbox, type Bbox } from '../client/src/geometry/view.js';
+import { keepUpwardTriangles } from '../client/src/source/upward-triangles.js';
 import { openMap, type MapPage } from './helpers/browser.js';
 import { compareIds, cpuSlice, type BuiltCube, type CubeContents } from './helpers/cube.js';
 import { checkAndClose, setUpTestBed, tearDownTestBed } from './helpers/test-bed.js';
@@ -27,11 +31,17 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   let browser: Browser;
   let mp: MapPage | null = null;
   let logStart = 0;
+  /** What each chunk takes on the GPU (the memory budget's unit): its decoded vertices and its upward triangles. */
+  const gpuBytes = new Map<string, number>();
 
   before(async () => {
     ({ cube, contents, server, browser } = await setUpTestBed(['--chunk-bytes', '16384', '--sub-index-bytes', '3000']));
     assert.ok(contents.leaves.length >= 30, `${contents.leaves.length} chunks`);
     assert.ok(contents.subIndexFiles.length >= 2, `${contents.subIndexFiles.length} sub-index files`);
+    for (const l of contents.leaves) {
+      const c = await decodeChunk(await readFile(path.join(cube.dir, l.file)), l.file);
+      gpuBytes.set(l.file, c.vertexByteLength + c.indices.BYTES_PER_ELEMENT * 3 * keepUpwardTriangles(c.positions, c.indices));
+    }
   });
 
   afterEach(async () => {
@@ -238,7 +248,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
 
   test('a small GPU memory budget evicts the least recently used chunks and fetches them again', async () => {
     const z = 30;
-    const bytes = (ls: ChunkLeaf[]): number => ls.reduce((s, l) => s + l.bytes, 0);
+    const bytes = (ls: ChunkLeaf[]): number => ls.reduce((s, l) => s + gpuBytes.get(l.file)!, 0);
     // Room for either view with its margin, never for both.
     const budgetFor = (x: Bbox, y: Bbox): number => Math.max(bytes(needed(x, z).all), bytes(needed(y, z).all)) * 1.05;
     const onlyA = (x: Bbox, y: Bbox): ChunkLeaf[] => needed(x, z).visible.filter((l) => !files(needed(y, z).all).has(l.file));

@@ -6,7 +6,8 @@ import test from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, mkdirSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
-import { decodeChunk, encodeChunk, type DecodedChunk } from '../format/chunk.js';
+import { decodeChunk, type DecodedChunk } from '../format/chunk.js';
+import { encodeChunk } from '../format/chunk-encode.js';
 import { parseSurface, surfaceZ } from '../format/slicing-surface.js';
 import { fitView, rasterizeAt, type View } from '../preprocess/map/rasterize.js';
 import { CpuSlicer, sliceChunk } from '../preprocess/ssc/cpu-slicer.js';
@@ -155,10 +156,10 @@ test('bgt_otterlo_400m cube', async (t) => {
     }
   });
 
-  await t.test('writer and reader round-trip bit-exactly', () => {
+  await t.test('writer and reader round-trip bit-exactly', async () => {
     for (const f of readdirSync(cube).filter((n) => n.startsWith('c-') && n.endsWith('.bin'))) {
       const bytes = readFileSync(path.join(cube, f));
-      const c = decodeChunk(new Uint8Array(bytes));
+      const c = await decodeChunk(new Uint8Array(bytes));
       assert.ok(Buffer.from(encodeChunk(c)).equals(bytes), `${f} re-encodes to the same bytes`);
     }
     const tb = readFileSync(tgapFile);
@@ -173,7 +174,7 @@ test('bgt_otterlo_400m cube', async (t) => {
     for (const n of names) assert.ok(readFileSync(path.join(cube, n)).equals(readFileSync(path.join(again, n))), `${n} differs`);
   });
 
-  await t.test('a corrupt or truncated chunk is reported with its file name', () => {
+  await t.test('a corrupt or truncated chunk is reported with its file name', async () => {
     const damaged = path.join(dir, 'damaged');
     mkdirSync(damaged);
     for (const n of readdirSync(cube)) writeFileSync(path.join(damaged, n), readFileSync(path.join(cube, n)));
@@ -189,7 +190,7 @@ test('bgt_otterlo_400m cube', async (t) => {
     assert.notEqual(r.code, 0);
     assert.match(r.stderr, new RegExp(`${chunk.replace('.', '\\.')}.*truncated`));
     assert.ok(!existsSync(path.join(dir, 'x.png')), 'no image written');
-    assert.throws(() => decodeChunk(new Uint8Array(bytes.subarray(0, 100)), chunk), /truncated|bytes/);
+    await assert.rejects(decodeChunk(new Uint8Array(bytes.subarray(0, 100)), chunk), /truncated|bytes/);
   });
 
   await t.test('a failed build leaves the old directory and nothing else', () => {
@@ -211,7 +212,9 @@ test('bgt_otterlo_400m cube', async (t) => {
     assert.equal(rep.chunks, files.length);
     assert.equal(rep.bytes.total, files.reduce((a, f) => a + readFileSync(path.join(cube, f)).length, 0));
     assert.ok(rep.bytes.cv <= 0.25, `chunk sizes vary too much (CV ${rep.bytes.cv})`);
-    assert.ok(rep.overhead <= 1.05, `chunking costs ${rep.overhead}`);
+    // Compressed chunks (version 2) pay for chunking also in their codecs starting afresh and
+    // sharing points only within a chunk: a few per cent more than the raw version 1 did.
+    assert.ok(rep.overhead <= 1.15, `chunking costs ${rep.overhead}`);
     assert.equal(rep.views.length, 8);
   });
 });

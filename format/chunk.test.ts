@@ -1,12 +1,15 @@
-// The chunk file: the encoder writes the byte layout of docs/FORMAT.md (checked field by
-// field at offsets worked out by hand), the decoder reads it back, and a damaged file is
+// The chunk file, version 2: the encoder writes the header and face table of docs/FORMAT.md
+// (checked at offsets worked out by hand), the decoder gives back what went in (positions
+// within half a grid step, everything else exactly), and a damaged, truncated or old file is
 // refused with a message that says what is wrong.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { CHUNK_MAGIC, ChunkFormatError, decodeChunk, encodeChunk, VERTEX_BYTES, VERTEX_COLUMNS, vertexColumnOffset } from './chunk.js';
+import { encodeChunk, type ChunkInput } from './chunk-encode.js';
+import { VERTEX_BYTES, VERTEX_COLUMNS, vertexColumnOffset } from './chunk-layout.js';
+import { CHUNK_MAGIC, ChunkFormatError, decodeChunk, type DecodedChunk } from './chunk.js';
 
 /** Two triangles over four vertices: a unit square at z 3 (floor) and 5 (tilted corner). */
-function square() {
+function square(): ChunkInput & { positions: Float32Array } {
   return {
     originX: 181000.5,
     originY: 457000.25,
@@ -20,90 +23,246 @@ function square() {
   };
 }
 
+/** A deterministic pseudo-random sequence in [0, 1). */
+function random(seed: number): () => number {
+  let s = seed >>> 0;
+  return () => {
+    s = (Math.imul(s, 1664525) + 1013904223) >>> 0;
+    return s / 2 ** 32;
+  };
+}
+
+/**
+ * A chunk like a built one: a grid of n x n points over `size` ground units (jittered off the
+ * grid, so not on any power-of-two step), two triangles a cell, faces by 2 x 2 blocks of cells,
+ * z per vertex in steps of 1/9 (the cube's phases) plus a tilt.
+ */
+function gridChunk(n: number, size: number, seed = 1): ChunkInput & { positions: Float64Array } {
+  const r = random(seed);
+  const V = n * n;
+  const positions = new Float64Array(3 * V);
+  for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
+    const k = j * n + i;
+    positions[3 * k] = ((i + 0.3 * r()) / n) * size;
+    positions[3 * k + 1] = ((j + 0.3 * r()) / n) * size;
+    positions[3 * k + 2] = 40 + Math.floor(r() * 9) / 9 + (i % 3) * 0.0137;
+  }
+  // Vertices are per face here (each cell's corners carry its face), as a piece's would.
+  const upper = new Uint32Array(V), lower = new Uint32Array(V);
+  const face = (i: number, j: number): number => 1 + Math.floor(i / 2) + 1000 * Math.floor(j / 2);
+  for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
+    upper[j * n + i] = face(Math.min(i, n - 2), Math.min(j, n - 2));
+    lower[j * n + i] = (i + j) % 5 === 0 ? 0 : 999999;
+  }
+  const indices: number[] = [];
+  for (let j = 0; j + 1 < n; j++) for (let i = 0; i + 1 < n; i++) {
+    const a = j * n + i;
+    // Only where all four corners name one face (as the build's pieces do).
+    if (new Set([upper[a], upper[a + 1], upper[a + n], upper[a + n + 1]]).size !== 1) continue;
+    if (new Set([lower[a], lower[a + 1], lower[a + n], lower[a + n + 1]]).size !== 1) continue;
+    indices.push(a, a + 1, a + n + 1, a, a + n + 1, a + n);
+  }
+  // Only the vertices of a triangle, as a built chunk has.
+  const keep = [...new Set(indices)].sort((x, y) => x - y);
+  const at = new Map(keep.map((v, i) => [v, i]));
+  const cls = (f: number): number => (f === 0 ? 0xffff : f % 7);
+  const U = keep.map((v) => upper[v]!), D = keep.map((v) => lower[v]!);
+  return {
+    originX: 181234, originY: 456789, box: Float32Array.of(0, 0, 40, size, size, 42),
+    positions: Float64Array.from(keep.flatMap((v) => [positions[3 * v]!, positions[3 * v + 1]!, positions[3 * v + 2]!])),
+    upper: Uint32Array.from(U), lower: Uint32Array.from(D), upperClass: Uint16Array.from(U, cls), lowerClass: Uint16Array.from(D, cls),
+    indices: keep.length <= 0xffff ? Uint16Array.from(indices, (v) => at.get(v)!) : Uint32Array.from(indices, (v) => at.get(v)!),
+  };
+}
+
+/** Triangles as strings, each turned to start at its smallest vertex (the codec may turn a triangle; the winding stays). */
+function triangles(indices: ArrayLike<number>): string[] {
+  const out: string[] = [];
+  for (let t = 0; t < indices.length; t += 3) {
+    const v = [indices[t]!, indices[t + 1]!, indices[t + 2]!];
+    const m = v.indexOf(Math.min(...v));
+    out.push([v[m], v[(m + 1) % 3], v[(m + 2) % 3]].join(','));
+  }
+  return out;
+}
+
+/** Asserts the decoded chunk is the input, positions within `tol` ground units. */
+function assertSame(d: DecodedChunk, c: ChunkInput, tol: number): void {
+  const V = c.upper.length;
+  assert.equal(d.vertexCount, V);
+  assert.equal(d.triangleCount, c.indices.length / 3);
+  assert.equal(d.originX, c.originX);
+  assert.equal(d.originY, c.originY);
+  assert.deepEqual([...d.box], [...c.box]);
+  let worst = 0;
+  for (let k = 0; k < V; k++) {
+    worst = Math.max(worst, Math.abs(d.positions[3 * k]! - c.positions[3 * k]!), Math.abs(d.positions[3 * k + 1]! - c.positions[3 * k + 1]!));
+    assert.equal(d.positions[3 * k + 2], Math.fround(c.positions[3 * k + 2]!), `z of vertex ${k} is its float32`);
+  }
+  assert.ok(worst <= tol, `positions off by up to ${worst}, at most ${tol} allowed`);
+  assert.deepEqual([...d.upper], Array.from(c.upper));
+  assert.deepEqual([...d.lower], Array.from(c.lower));
+  assert.deepEqual([...d.upperClass], Array.from(c.upperClass));
+  assert.deepEqual([...d.lowerClass], Array.from(c.lowerClass));
+  assert.deepEqual(triangles(d.indices), triangles(c.indices));
+}
+
 describe('chunk file', () => {
-  test('the encoder writes the documented layout', () => {
+  test('the encoder writes the documented header and face table', () => {
     const bytes = encodeChunk(square());
     const dv = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
-    // Header: 64 bytes. Vertex section: 4 x 24 = 96 bytes. Indices: 6 x u16 = 12 bytes.
-    assert.equal(bytes.byteLength, 64 + 96 + 12);
     assert.equal(dv.getUint32(0, true), 0x43435353);
-    assert.equal(dv.getUint32(4, true), 1);
+    assert.equal(dv.getUint32(4, true), 2, 'version');
     assert.equal(dv.getUint32(8, true), 4, 'vertices');
     assert.equal(dv.getUint32(12, true), 2, 'triangles');
     assert.equal(dv.getFloat64(16, true), 181000.5);
     assert.equal(dv.getFloat64(24, true), 457000.25);
     assert.equal(dv.getFloat32(32 + 4 * 5, true), 5, 'box z1');
-    assert.equal(dv.getUint32(60, true), 2, 'index size');
-    // Columns, one after the other: positions at 64, upper at 64 + 48, lower at 64 + 64,
-    // upper class at 64 + 80, lower class at 64 + 88.
-    assert.equal(dv.getFloat32(64 + 4 * 8, true), 5, 'z of vertex 2');
-    assert.equal(dv.getUint32(64 + 48 + 4 * 2, true), 8, 'upper of vertex 2');
-    assert.equal(dv.getUint32(64 + 64 + 4 * 2, true), 7, 'lower of vertex 2');
-    assert.equal(dv.getUint16(64 + 80 + 2 * 2, true), 4, 'upper class of vertex 2');
-    assert.equal(dv.getUint16(64 + 88 + 2 * 0, true), 0xffff, 'lower class of vertex 0: none');
-    assert.equal(dv.getUint16(64 + 96 + 2 * 5, true), 3, 'last index');
+    // The box reaches 1: the grid is 2^(1 - 24), so that |x| < 2^1.
+    assert.equal(dv.getInt32(56, true), -23, 'position step exponent');
+    assert.equal(dv.getUint32(60, true), 3, 'faces 7, 0 and 8');
+    assert.equal(dv.getUint32(64, true), 4, 'points: the four corners');
+    const pointStream = dv.getUint32(68, true), vertexStream = dv.getUint32(72, true), indexStream = dv.getUint32(76, true);
+    // Face ids at 80 (3 x u32), classes at 92 (3 x u16, padded to 100), then the streams.
+    assert.deepEqual([0, 1, 2].map((i) => dv.getUint32(80 + 4 * i, true)), [7, 0, 8], 'in order of first mention, upper before lower');
+    assert.deepEqual([0, 1, 2].map((i) => dv.getUint16(92 + 2 * i, true)), [2, 0xffff, 4]);
+    assert.equal(bytes[100], 0xa1, 'the point stream starts at 100 with the vertex codec\'s version-1 header byte');
+    const vertexAt = (100 + pointStream + 3) & ~3;
+    assert.equal(bytes[vertexAt], 0xa1, 'the vertex stream at the next multiple of 4');
+    const indexAt = (vertexAt + vertexStream + 3) & ~3;
+    assert.equal(bytes[indexAt], 0xe1, 'the index stream at the next multiple of 4, with the index codec\'s header byte');
+    assert.equal(bytes.byteLength, (indexAt + indexStream + 3) & ~3);
   });
 
-  test('the vertex columns the renderer binds are the ones written', () => {
+  test('the decoded vertex columns are the ones the renderer binds', async () => {
     assert.equal(VERTEX_BYTES, 24);
     assert.deepEqual(VERTEX_COLUMNS.map((c) => [c.name, vertexColumnOffset(VERTEX_COLUMNS.indexOf(c), 4)]), [
       ['positions', 0], ['upper', 48], ['lower', 64], ['upperClass', 80], ['lowerClass', 88],
     ]);
+    const d = await decodeChunk(encodeChunk(square()));
+    const buf = d.positions.buffer;
+    assert.equal(d.vertexByteOffset, 0);
+    assert.equal(d.vertexByteLength, 96);
+    assert.deepEqual([...new Uint32Array(buf, 48, 4)], [7, 7, 8, 7], 'upper ids at their column offset');
+    assert.deepEqual([...new Uint16Array(buf, 88, 4)], [0xffff, 0xffff, 2, 0xffff], 'lower classes at theirs');
+    assert.equal(d.indices.byteOffset, 96, 'indices after the vertex columns');
   });
 
-  test('decodes what it encodes, also from an unaligned buffer', () => {
+  test('decodes what it encodes, also from an unaligned buffer', async () => {
     const c = square();
     const bytes = encodeChunk(c);
     const shifted = new Uint8Array(bytes.length + 1);
     shifted.set(bytes, 1);
-    for (const input of [bytes, shifted.subarray(1)]) {
-      const d = decodeChunk(input);
-      assert.equal(d.vertexCount, 4);
-      assert.equal(d.triangleCount, 2);
-      assert.equal(d.originX, c.originX);
-      assert.equal(d.originY, c.originY);
-      assert.deepEqual([...d.box], [...c.box]);
-      assert.deepEqual([...d.positions], [...c.positions]);
-      assert.deepEqual([...d.upper], [...c.upper]);
-      assert.deepEqual([...d.lower], [...c.lower]);
-      assert.deepEqual([...d.upperClass], [...c.upperClass]);
-      assert.deepEqual([...d.lowerClass], [...c.lowerClass]);
-      assert.deepEqual([...d.indices], [...c.indices]);
-      assert.equal(d.vertexByteLength, 96);
+    for (const input of [bytes, shifted.subarray(1)]) assertSame(await decodeChunk(input), c, 0);
+  });
+
+  test('positions come back within half a grid step; z exactly as float32', async () => {
+    // 1800 units: the grid is 2^(11 - 24) = 1/8192, so at most 1/16384 off.
+    const c = gridChunk(60, 1800);
+    const d = await decodeChunk(encodeChunk(c));
+    assertSame(d, c, 2 ** -14);
+    for (let k = 0; k < d.vertexCount; k++) {
+      for (const j of [0, 1]) {
+        const x = c.positions[3 * k + j]!, got = d.positions[3 * k + j]!;
+        assert.ok(Number.isInteger(got * 8192), `vertex ${k} on the grid`);
+        // From 1024 on, float32 itself keeps 1/8192: there the grid is exactly float32's rounding.
+        if (x >= 1024) assert.equal(got, Math.fround(x), `vertex ${k}: as float32 would keep ${x}`);
+      }
     }
   });
 
-  test('more than 65535 vertices take 32-bit indices', () => {
+  test('two surfaces over the same corners share their points', async () => {
+    // The square's floor (z 3) and a flat roof over it at z 9, between face 8 above and 7 below.
+    const c = square();
+    const roof: ChunkInput = {
+      ...c,
+      positions: Float32Array.from([...c.positions, 0, 0, 9, 1, 0, 9, 1, 1, 9, 0, 1, 9]),
+      upper: Uint32Array.of(...Array.from(c.upper), 8, 8, 8, 8), lower: Uint32Array.of(...Array.from(c.lower), 7, 7, 7, 7),
+      upperClass: Uint16Array.of(...Array.from(c.upperClass), 4, 4, 4, 4), lowerClass: Uint16Array.of(...Array.from(c.lowerClass), 2, 2, 2, 2),
+      indices: Uint16Array.of(...Array.from(c.indices), 4, 5, 6, 4, 6, 7),
+    };
+    const bytes = encodeChunk(roof);
+    assert.equal(new DataView(bytes.buffer).getUint32(64, true), 4, '8 vertices, 4 points');
+    assertSame(await decodeChunk(bytes), roof, 0);
+  });
+
+  test('a small box gets a finer grid', async () => {
+    // 40 units: 2^(6 - 24).
+    const c = gridChunk(20, 40, 7);
+    assertSame(await decodeChunk(encodeChunk(c)), c, 2 ** -19);
+  });
+
+  test('the same chunk encodes to the same bytes, and a decoded chunk re-encodes to them', async () => {
+    const c = gridChunk(40, 700, 3);
+    const bytes = encodeChunk(c);
+    assert.deepEqual(encodeChunk(gridChunk(40, 700, 3)), bytes);
+    assert.deepEqual(encodeChunk(await decodeChunk(bytes)), bytes);
+  });
+
+  test('more than 65535 vertices take 32-bit indices, more than 65535 faces 32-bit face indices', async () => {
     const V = 65536 + 2;
     const positions = new Float32Array(3 * V);
     for (let i = 0; i < V; i++) positions[3 * i] = i % 100;
-    const c = {
+    // Every vertex in a (degenerate) triangle of its own face: V / 3 triangles and faces.
+    const indices = Uint32Array.from({ length: V }, (_, i) => i);
+    const c: ChunkInput = {
       originX: 0, originY: 0, box: new Float32Array([0, 0, 0, 100, 0, 0]), positions,
-      upper: new Uint32Array(V).fill(1), lower: new Uint32Array(V), upperClass: new Uint16Array(V), lowerClass: new Uint16Array(V),
-      indices: new Uint32Array([0, 1, V - 1]),
+      upper: Uint32Array.from({ length: V }, (_, i) => 1 + Math.floor(i / 3)), lower: new Uint32Array(V), upperClass: new Uint16Array(V),
+      lowerClass: new Uint16Array(V).fill(0xffff), indices,
     };
-    const bytes = encodeChunk(c);
-    assert.equal(new DataView(bytes.buffer).getUint32(60, true), 4);
-    const d = decodeChunk(bytes);
+    const d = await decodeChunk(encodeChunk(c));
     assert.ok(d.indices instanceof Uint32Array);
-    assert.deepEqual([...d.indices], [0, 1, V - 1]);
+    assertSame(d, c, 0);
+    // Faces 1.. each on two vertices: more than 65535 of them.
+    const many: ChunkInput = { ...c, upper: Uint32Array.from({ length: V }, (_, i) => 1 + (i >> 1)) };
+    const bytes = encodeChunk(many);
+    assert.equal(new DataView(bytes.buffer).getUint32(60, true), V / 2 + 1, 'every face and "nothing below"');
+    assertSame(await decodeChunk(bytes), many, 0);
   });
 
-  test('a damaged file is refused and the message says why', () => {
+  test('the encoder refuses a face with two classes, a vertex outside the box and a vertex in no triangle', () => {
+    const c = square();
+    c.upperClass = Uint16Array.of(2, 2, 4, 3);
+    assert.throws(() => encodeChunk(c), /face 7 has class 2 at one vertex and 3 at another/);
+    const far = square();
+    far.positions[3] = 5;
+    assert.throws(() => encodeChunk(far), /vertex 1 lies outside the chunk's box/);
+    const unused = square();
+    unused.indices = Uint16Array.of(0, 1, 2);
+    assert.throws(() => encodeChunk(unused), /vertex 3 is in no triangle/);
+  });
+
+  test('a damaged, truncated or old file is refused and the message says why', async () => {
     const good = encodeChunk(square());
-    const damaged = (edit: (dv: DataView, b: Uint8Array) => Uint8Array | void): Uint8Array => {
+    const damaged = (edit: (dv: DataView, b: Uint8Array) => void): Uint8Array => {
       const b = good.slice();
-      return edit(new DataView(b.buffer), b) ?? b;
+      edit(new DataView(b.buffer), b);
+      return b;
     };
-    const refuses = (b: Uint8Array, pattern: RegExp): void => {
-      assert.throws(() => decodeChunk(b, 'c-x.bin'), (e: unknown) => e instanceof ChunkFormatError && e.message.startsWith('c-x.bin: ') && pattern.test(e.message));
+    const refuses = async (b: Uint8Array, pattern: RegExp): Promise<void> => {
+      await assert.rejects(decodeChunk(b, 'c-x.bin'), (e: unknown) => e instanceof ChunkFormatError && e.message.startsWith('c-x.bin: ') && pattern.test(e.message));
     };
-    refuses(good.subarray(0, 40), /truncated/);
-    refuses(damaged((dv) => dv.setUint32(0, CHUNK_MAGIC + 1, true)), /bad magic/);
-    refuses(damaged((dv) => dv.setUint32(4, 2, true)), /version 2/);
-    refuses(good.subarray(0, good.length - 4), /bytes, 4 vertices and 2 triangles need/);
-    refuses(damaged((dv) => dv.setUint16(64 + 96 + 2, 9, true)), /triangle 0 names vertex 9 of 4/);
-    refuses(damaged((dv) => dv.setFloat32(64 + 4 * 4, NaN, true)), /vertex 1 has a non-finite coordinate/);
-    refuses(damaged((dv) => dv.setUint32(60, 4, true)), /index size 4 does not fit 4 vertices/);
+    await refuses(good.subarray(0, 40), /truncated \(40 bytes, the header alone is 80\)/);
+    await refuses(good.subarray(0, 3), /truncated/);
+    await refuses(damaged((dv) => dv.setUint32(0, CHUNK_MAGIC + 1, true)), /bad magic/);
+    await refuses(damaged((dv) => dv.setUint32(4, 1, true)), /chunk version 1, this reader knows only version 2 \(rebuild the cube with ssc build\)/);
+    await refuses(damaged((dv) => dv.setUint32(4, 3, true)), /chunk version 3/);
+    await refuses(good.subarray(0, good.length - 4), new RegExp(`${good.length - 4} bytes, its header .* needs ${good.length}`));
+    await refuses(damaged((dv) => dv.setInt32(56, -20, true)), /position step 2\^-20 does not fit its box \(2\^-23\)/);
+    await refuses(damaged((dv) => dv.setUint32(8, 2 ** 30, true)), /counts out of bounds \(2 triangles, 1073741824 vertices/);
+    await refuses(damaged((dv) => dv.setUint32(12, 2 ** 30, true)), /1073741824 triangles cannot fit an index stream of \d+ bytes/);
+    await refuses(damaged((dv) => dv.setUint32(64, 5, true)), /counts out of bounds \(2 triangles, 4 vertices, 5 points, 3 faces\)/);
+    await refuses(damaged((_, b) => { b[100] = 0; }), /compressed points, vertices or triangles do not decode/);
+  });
+
+  test('a file of version 1 (24 bytes a vertex) is refused, not misread', async () => {
+    // The start of a version-1 file: magic, version 1, 4 vertices, 2 triangles, then its 64-byte header and columns.
+    const v1 = new Uint8Array(64 + 96 + 12);
+    const dv = new DataView(v1.buffer);
+    dv.setUint32(0, CHUNK_MAGIC, true);
+    dv.setUint32(4, 1, true);
+    dv.setUint32(8, 4, true);
+    dv.setUint32(12, 2, true);
+    await assert.rejects(decodeChunk(v1, 'c-old.bin'), /c-old\.bin: chunk version 1, this reader knows only version 2/);
   });
 });

@@ -1,13 +1,26 @@
-// The chunk file (docs/FORMAT.md, "Chunk file"): surface triangles with per-vertex positions
-// relative to the chunk's origin, the faces above and below, and their classes. Encoder,
-// decoder and the vertex layout the GPU binds as it is. Pure: used by the build (Node), the
-// CPU slicer and the map's worker.
+// The chunk file (docs/FORMAT.md, "Chunk file", version 2): surface triangles of one chunk,
+// compact. Ground points relative to the chunk's origin on a power-of-two grid, each once (the
+// corners of several surfaces share it); a vertex is a point, its z as float32 and the faces
+// above and below as indices into a chunk-local face table (which gives each face's class).
+// Points, vertices and triangles are compressed with meshoptimizer's vertex and index codecs
+// (the glTF EXT_meshopt_compression codecs). The decoder expands a file to the vertex columns
+// the GPU binds as they are (chunk-layout.ts). Pure: used by the CPU slicer and the map's
+// worker; the encoder is in chunk-encode.ts so that the map does not load its WebAssembly.
+import { MeshoptDecoder } from 'meshoptimizer/decoder';
+import { VERTEX_BYTES, vertexColumnOffset, type VertexColumn } from './chunk-layout.js';
 import { FormatError } from './format-error.js';
 
 export const CHUNK_MAGIC = 0x43435353; // "SSCC"
-export const CHUNK_VERSION = 1;
+export const CHUNK_VERSION = 2;
 export const NO_CLASS = 0xffff;
-const HEADER = 64;
+/** Header bytes (docs/FORMAT.md). */
+export const CHUNK_HEADER_BYTES = 80;
+/**
+ * Bits of the position grid: x and y are whole steps of `2^e`, with `e` chosen from the box so
+ * that its largest |x| or |y| is below `2^(e + POSITION_BITS)`. Every grid value is then exact
+ * in float32 (at most 2^24 steps), and the largest ones are the float32 values themselves.
+ */
+export const POSITION_BITS = 24;
 
 export interface ChunkData {
   vertexCount: number;
@@ -32,43 +45,58 @@ export interface DecodedChunk extends ChunkData {
   vertexByteLength: number;
 }
 
-/**
- * The vertex section: one column after the other, each `vertexCount` entries long, in this
- * order. The renderer binds these columns as vertex attributes straight from the file's bytes.
- */
-export const VERTEX_COLUMNS = [
-  { name: 'positions', components: 3, type: 'f32', bytes: 12 },
-  { name: 'upper', components: 1, type: 'u32', bytes: 4 },
-  { name: 'lower', components: 1, type: 'u32', bytes: 4 },
-  { name: 'upperClass', components: 1, type: 'u16', bytes: 2 },
-  { name: 'lowerClass', components: 1, type: 'u16', bytes: 2 },
-] as const;
-
-export type VertexColumn = (typeof VERTEX_COLUMNS)[number];
-
-/** Bytes per vertex over all columns (24). */
-export const VERTEX_BYTES = VERTEX_COLUMNS.reduce((n, c) => n + c.bytes, 0);
-
-/** Byte offset of column `i` from the start of the vertex section. */
-export function vertexColumnOffset(i: number, vertexCount: number): number {
-  let o = 0;
-  for (let k = 0; k < i; k++) o += VERTEX_COLUMNS[k]!.bytes * vertexCount;
-  return o;
-}
-
-const pad4 = (n: number): number => (n + 3) & ~3;
+export const pad4 = (n: number): number => (n + 3) & ~3;
 
 /** Bytes per index: 2 while every vertex fits a u16. */
 export const indexSizeFor = (vertices: number): 2 | 4 => (vertices <= 0xffff ? 2 : 4);
 
-export function chunkByteLength(vertices: number, triangles: number): number {
-  return HEADER + pad4(vertices * VERTEX_BYTES) + pad4(triangles * 3 * indexSizeFor(vertices));
+/** Bytes per face-table index in an encoded vertex: 2 while the table fits a u16. */
+export const faceIndexSizeFor = (faces: number): 2 | 4 => (faces <= 0xffff ? 2 : 4);
+
+/** Bytes of one encoded point: i32 x, i32 y in grid steps. */
+export const POINT_BYTES = 8;
+
+/** Bytes of one encoded vertex: u32 point index, f32 z, upper and lower face-table index. */
+export const encodedVertexBytes = (faceIndexSize: 2 | 4): number => 8 + 2 * faceIndexSize;
+
+/** The grid exponent `e` of a box (x0, y0, _, x1, y1, _): the smallest with every |x|, |y| of it below 2^(e + POSITION_BITS). */
+export function positionExponent(box: ArrayLike<number>): number {
+  const m = Math.max(1, Math.abs(box[0]!), Math.abs(box[1]!), Math.abs(box[3]!), Math.abs(box[4]!));
+  let b = Math.ceil(Math.log2(m));
+  while (2 ** b <= m) b++;
+  while (2 ** (b - 1) > m) b--;
+  return b - POSITION_BITS;
+}
+
+/** Where the sections after the header start (docs/FORMAT.md), from the header's counts. */
+export interface ChunkSections {
+  faceIds: number;
+  faceClasses: number;
+  points: number;
+  vertices: number;
+  indices: number;
+  /** The file's length. */
+  end: number;
+}
+
+export function chunkSections(faces: number, pointStreamBytes: number, vertexStreamBytes: number, indexStreamBytes: number): ChunkSections {
+  const faceIds = CHUNK_HEADER_BYTES;
+  const faceClasses = faceIds + 4 * faces;
+  const points = pad4(faceClasses + 2 * faces);
+  const vertices = pad4(points + pointStreamBytes);
+  const indices = pad4(vertices + vertexStreamBytes);
+  return { faceIds, faceClasses, points, vertices, indices, end: pad4(indices + indexStreamBytes) };
+}
+
+/** Bytes of a decoded chunk: the vertex columns, then the indices. */
+export function decodedByteLength(vertices: number, triangles: number): number {
+  return pad4(vertices * VERTEX_BYTES) + pad4(triangles * 3 * indexSizeFor(vertices));
 }
 
 type Columns = Pick<ChunkData, VertexColumn['name']>;
 
-function columnViews(buf: ArrayBufferLike, base: number, V: number): Columns {
-  const at = (i: number): number => base + HEADER + vertexColumnOffset(i, V);
+function columnViews(buf: ArrayBufferLike, V: number): Columns {
+  const at = (i: number): number => vertexColumnOffset(i, V);
   return {
     positions: new Float32Array(buf, at(0), 3 * V),
     upper: new Uint32Array(buf, at(1), V),
@@ -76,29 +104,6 @@ function columnViews(buf: ArrayBufferLike, base: number, V: number): Columns {
     upperClass: new Uint16Array(buf, at(3), V),
     lowerClass: new Uint16Array(buf, at(4), V),
   };
-}
-
-export function encodeChunk(c: Omit<ChunkData, 'vertexCount' | 'triangleCount'>): Uint8Array {
-  const V = c.upper.length, T = c.indices.length / 3;
-  const indexSize = indexSizeFor(V);
-  const buf = new ArrayBuffer(chunkByteLength(V, T));
-  const dv = new DataView(buf);
-  dv.setUint32(0, CHUNK_MAGIC, true);
-  dv.setUint32(4, CHUNK_VERSION, true);
-  dv.setUint32(8, V, true);
-  dv.setUint32(12, T, true);
-  dv.setFloat64(16, c.originX, true);
-  dv.setFloat64(24, c.originY, true);
-  for (let i = 0; i < 6; i++) dv.setFloat32(32 + 4 * i, c.box[i]!, true);
-  dv.setUint32(56, 0, true);
-  dv.setUint32(60, indexSize, true);
-  // Typed arrays are little-endian on every platform we run on; the DataView header is explicit.
-  const cols = columnViews(buf, 0, V);
-  for (const col of VERTEX_COLUMNS) cols[col.name].set(c[col.name]);
-  const o = HEADER + pad4(V * VERTEX_BYTES);
-  if (indexSize === 2) new Uint16Array(buf, o, 3 * T).set(c.indices);
-  else new Uint32Array(buf, o, 3 * T).set(c.indices);
-  return new Uint8Array(buf);
 }
 
 export class ChunkFormatError extends FormatError {
@@ -109,38 +114,81 @@ export class ChunkFormatError extends FormatError {
 }
 
 /**
- * Reads a chunk, checking everything a corrupt or truncated file could break. The arrays are
- * views into (a copy aligned for them of) the given bytes, ready for the GPU.
+ * Reads a chunk, checking everything a corrupt or truncated file could break, and expands it to
+ * the GPU's layout: the arrays are views into one new buffer (vertex columns from offset 0, then
+ * the indices). Asynchronous only because the codec's WebAssembly is compiled on first use.
  */
-export function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk'): DecodedChunk {
+export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk'): Promise<DecodedChunk> {
   const bytes = input instanceof Uint8Array ? input : new Uint8Array(input);
-  if (bytes.byteLength < HEADER) throw new ChunkFormatError(`${name}: truncated (${bytes.byteLength} bytes, the header alone is ${HEADER})`);
-  // Aligned copy when the bytes do not start on a 4-byte boundary.
+  const fail = (why: string): ChunkFormatError => new ChunkFormatError(`${name}: ${why}`);
+  if (bytes.byteLength < 8) throw fail(`truncated (${bytes.byteLength} bytes, the header alone is ${CHUNK_HEADER_BYTES})`);
+  // Aligned copy when the bytes do not start on a 4-byte boundary (the face table is read in place).
   const b = bytes.byteOffset % 4 === 0 ? bytes : bytes.slice();
   const dv = new DataView(b.buffer, b.byteOffset, b.byteLength);
-  if (dv.getUint32(0, true) !== CHUNK_MAGIC) throw new ChunkFormatError(`${name}: not a chunk file (bad magic)`);
+  if (dv.getUint32(0, true) !== CHUNK_MAGIC) throw fail('not a chunk file (bad magic)');
   const version = dv.getUint32(4, true);
-  if (version !== CHUNK_VERSION) throw new ChunkFormatError(`${name}: chunk version ${version}, this reader knows ${CHUNK_VERSION}`);
+  if (version !== CHUNK_VERSION) throw fail(`chunk version ${version}, this reader knows only version ${CHUNK_VERSION} (rebuild the cube with ssc build)`);
+  if (b.byteLength < CHUNK_HEADER_BYTES) throw fail(`truncated (${b.byteLength} bytes, the header alone is ${CHUNK_HEADER_BYTES})`);
   const V = dv.getUint32(8, true), T = dv.getUint32(12, true);
-  const indexSize = dv.getUint32(60, true);
-  if (indexSize !== indexSizeFor(V)) throw new ChunkFormatError(`${name}: index size ${indexSize} does not fit ${V} vertices`);
-  const expected = chunkByteLength(V, T);
-  if (b.byteLength !== expected) throw new ChunkFormatError(`${name}: ${b.byteLength} bytes, ${V} vertices and ${T} triangles need ${expected}`);
   const box = new Float32Array(6);
   for (let i = 0; i < 6; i++) box[i] = dv.getFloat32(32 + 4 * i, true);
-  const base = b.byteOffset;
-  const { positions, upper, lower, upperClass, lowerClass } = columnViews(b.buffer, base, V);
-  const o = HEADER + pad4(V * VERTEX_BYTES);
-  const indices = indexSize === 2 ? new Uint16Array(b.buffer, base + o, 3 * T) : new Uint32Array(b.buffer, base + o, 3 * T);
-  for (let i = 0; i < indices.length; i++) {
-    if (indices[i]! >= V) throw new ChunkFormatError(`${name}: triangle ${Math.floor(i / 3)} names vertex ${indices[i]} of ${V}`);
+  if (!box.every(Number.isFinite)) throw fail('its box is not finite');
+  const e = dv.getInt32(56, true);
+  if (e !== positionExponent(box)) throw fail(`position step 2^${e} does not fit its box (2^${positionExponent(box)})`);
+  const F = dv.getUint32(60, true), P = dv.getUint32(64, true);
+  const pointStream = dv.getUint32(68, true), vertexStream = dv.getUint32(72, true), indexStream = dv.getUint32(76, true);
+  // Bounds that hold in every chunk (each point used by a vertex, each vertex by a triangle, the
+  // index codec's byte per triangle): a damaged count is refused before anything is allocated.
+  if (T > indexStream) throw fail(`${T} triangles cannot fit an index stream of ${indexStream} bytes`);
+  if (V > 3 * T || P > V || F > 2 * V) throw fail(`counts out of bounds (${T} triangles, ${V} vertices, ${P} points, ${F} faces)`);
+  const sec = chunkSections(F, pointStream, vertexStream, indexStream);
+  if (b.byteLength !== sec.end) throw fail(`${b.byteLength} bytes, its header (${F} faces, ${pointStream} + ${vertexStream} + ${indexStream} bytes of streams) needs ${sec.end}`);
+  const faceIndexSize = faceIndexSizeFor(F), indexSize = indexSizeFor(V);
+  await MeshoptDecoder.ready;
+
+  const stride = encodedVertexBytes(faceIndexSize);
+  const rawPoints = new Uint8Array(P * POINT_BYTES);
+  const raw = new Uint8Array(V * stride);
+  const out = new ArrayBuffer(decodedByteLength(V, T));
+  const indexOffset = pad4(V * VERTEX_BYTES);
+  const indexBytes = new Uint8Array(out, indexOffset, 3 * T * indexSize);
+  try {
+    if (P > 0) MeshoptDecoder.decodeVertexBuffer(rawPoints, P, POINT_BYTES, b.subarray(sec.points, sec.points + pointStream));
+    if (V > 0) MeshoptDecoder.decodeVertexBuffer(raw, V, stride, b.subarray(sec.vertices, sec.vertices + vertexStream));
+    if (T > 0) MeshoptDecoder.decodeIndexBuffer(indexBytes, 3 * T, indexSize, b.subarray(sec.indices, sec.indices + indexStream));
+  } catch (err) {
+    throw fail(`its compressed points, vertices or triangles do not decode (${(err as Error).message})`);
   }
-  for (let i = 0; i < positions.length; i++) {
-    if (!Number.isFinite(positions[i]!)) throw new ChunkFormatError(`${name}: vertex ${Math.floor(i / 3)} has a non-finite coordinate`);
+
+  const faceIds = new Uint32Array(b.buffer, b.byteOffset + sec.faceIds, F);
+  const faceClasses = new Uint16Array(b.buffer, b.byteOffset + sec.faceClasses, F);
+  const { positions, upper, lower, upperClass, lowerClass } = columnViews(out, V);
+  const points = new Int32Array(rawPoints.buffer);
+  const pointOf = new Uint32Array(raw.buffer), floats = new Float32Array(raw.buffer);
+  const locals = faceIndexSize === 2 ? new Uint16Array(raw.buffer) : new Uint32Array(raw.buffer);
+  const w = stride / 4, h = stride / faceIndexSize, l0 = 8 / faceIndexSize;
+  const step = 2 ** e;
+  for (let k = 0; k < V; k++) {
+    const p = pointOf[k * w]!, z = floats[k * w + 1]!;
+    if (p >= P) throw fail(`vertex ${k} names point ${p} of ${P}`);
+    if (!Number.isFinite(z)) throw fail(`vertex ${k} has a non-finite coordinate`);
+    positions[3 * k] = points[2 * p]! * step;
+    positions[3 * k + 1] = points[2 * p + 1]! * step;
+    positions[3 * k + 2] = z;
+    const u = locals[k * h + l0]!, d = locals[k * h + l0 + 1]!;
+    if (u >= F || d >= F) throw fail(`vertex ${k} names face ${Math.max(u, d)} of a table of ${F}`);
+    upper[k] = faceIds[u]!;
+    lower[k] = faceIds[d]!;
+    upperClass[k] = faceClasses[u]!;
+    lowerClass[k] = faceClasses[d]!;
+  }
+  const indices = indexSize === 2 ? new Uint16Array(out, indexOffset, 3 * T) : new Uint32Array(out, indexOffset, 3 * T);
+  for (let i = 0; i < indices.length; i++) {
+    if (indices[i]! >= V) throw fail(`triangle ${Math.floor(i / 3)} names vertex ${indices[i]} of ${V}`);
   }
   return {
     vertexCount: V, triangleCount: T,
     originX: dv.getFloat64(16, true), originY: dv.getFloat64(24, true), box, positions, upper, lower, upperClass, lowerClass, indices,
-    vertexByteOffset: base + HEADER, vertexByteLength: VERTEX_BYTES * V,
+    vertexByteOffset: 0, vertexByteLength: VERTEX_BYTES * V,
   };
 }

@@ -2,7 +2,7 @@
 // index leaves carrying their true SHA-256, a valid index.json, and a fake-fetch answer that
 // serves the files under a base URL.
 import { createHash } from 'node:crypto';
-import { encodeChunk } from '../format/chunk.js';
+import { encodeChunk } from '../format/chunk-encode.js';
 import { encodeIndex, encodeSubIndex, type Box3, type ChunkLeaf, type CubeIndexJson, type IndexNode, type InnerNode } from '../format/cube-index.js';
 import { body, status, type Answer } from './fake-fetch.js';
 

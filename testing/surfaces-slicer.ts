@@ -6,9 +6,9 @@ import { assembleChunk } from '../preprocess/ssc/assemble-chunk.js';
 import { CpuSlicer, sliceChunk } from '../preprocess/ssc/cpu-slicer.js';
 import type { Surfaces } from '../preprocess/ssc/surfaces.js';
 
-export function surfacesSlicer(s: Surfaces, xs: Float64Array, ys: Float64Array, classOf: (face: number) => number, view: View): (z: number) => CpuSlicer {
+export async function surfacesSlicer(s: Surfaces, xs: Float64Array, ys: Float64Array, classOf: (face: number) => number, view: View): Promise<(z: number) => CpuSlicer> {
   const all = Uint32Array.from({ length: s.count }, (_, i) => i);
-  const chunk = decodeChunk(assembleChunk(s, all, xs, ys, classOf).bytes);
+  const chunk = await decodeChunk(assembleChunk(s, all, xs, ys, classOf).bytes);
   return (z) => {
     const sl = new CpuSlicer(view, () => z);
     sliceChunk(sl, chunk);

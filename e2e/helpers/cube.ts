@@ -101,7 +101,7 @@ export async function cubeTriangles(cubeDir: string): Promise<CubeTriangles> {
   const { leaves } = await readCube(cubeDir);
   const out: number[] = [];
   for (const leaf of leaves) {
-    const c = decodeChunk(await readFile(path.join(cubeDir, leaf.file)));
+    const c = await decodeChunk(await readFile(path.join(cubeDir, leaf.file)));
     const p = c.positions;
     for (let k = 0; k < c.indices.length; k++) {
       const v = c.indices[k]!;

@@ -1,6 +1,8 @@
-// One chunk's triangles as the chunk file's columns: vertices shared within a surface piece,
-// positions relative to an origin near the chunk so float32 keeps millimetres.
-import { encodeChunk, NO_CLASS } from '../../format/chunk.js';
+// One chunk's triangles as the chunk file's columns: vertices shared within a surface piece
+// (across pieces a corner differs in z or faces), positions relative to an origin near the
+// chunk (the file keeps them on a grid finer than float32's at the chunk's size).
+import { NO_CLASS } from '../../format/chunk.js';
+import { encodeChunk } from '../../format/chunk-encode.js';
 import type { Box3 } from '../../format/cube-index.js';
 import type { Surfaces } from './surfaces.js';
 
@@ -41,7 +43,8 @@ export function assembleChunk(
   const V = verts.length / 2;
   // A whole-unit origin: exact in float64, and every position is then within the chunk's size of it.
   const ox = Math.floor(x0), oy = Math.floor(y0);
-  const positions = new Float32Array(3 * V);
+  // float64: the encoder puts x, y on its grid from the exact values.
+  const positions = new Float64Array(3 * V);
   const upper = new Uint32Array(V), lower = new Uint32Array(V);
   const upperClass = new Uint16Array(V), lowerClass = new Uint16Array(V);
   for (let k = 0; k < V; k++) {

@@ -9,6 +9,7 @@ import { PIXEL_SIZE_MM } from '../../format/pixel-size.js';
 import { boxMeets } from '../../format/index-query.js';
 import { groundBox, lineAliveAt, lineOfChunk } from '../../format/line-chunk.js';
 import { CubeReader } from './read-cube.js';
+import { unchunkedBytes as oneFileBytes } from './unchunked-bytes.js';
 
 export interface ViewRow {
   scale: number;
@@ -46,22 +47,16 @@ export async function inspectCube(dir: string): Promise<CubeReport> {
   const total = sizes.reduce((a, b) => a + b, 0);
   const mean = total / Math.max(1, sizes.length);
   const sd = Math.sqrt(sizes.reduce((a, b) => a + (b - mean) ** 2, 0) / Math.max(1, sizes.length));
-  // The same surfaces as one file: vertices shared across what chunk borders split apart.
-  const unique = new Set<string>();
   let triangles = 0;
   const decoded = [];
   for (const leaf of leaves) {
     const c = await cube.chunk(leaf);
     decoded.push({ leaf, c });
     triangles += c.triangleCount;
-    for (let v = 0; v < c.vertexCount; v++) {
-      unique.add(`${c.originX + c.positions[3 * v]!},${c.originY + c.positions[3 * v + 1]!},${c.positions[3 * v + 2]!},${c.upper[v]},${c.lower[v]}`);
-    }
   }
-  // One file would need 32-bit indices; count it with the chunks' own index width so that only
-  // what chunking adds (headers, vertices repeated on both sides of a chunk border) is compared.
-  const width = decoded.every(({ c }) => c.indices.BYTES_PER_ELEMENT === 2) ? 2 : 4;
-  const unchunkedBytes = 64 + 24 * unique.size + ((3 * width * triangles + 3) & ~3);
+  // The same surfaces as one file: what chunking adds is headers, face tables, vertices repeated
+  // on both sides of a chunk border and each chunk's codec starting afresh.
+  const unchunkedBytes = oneFileBytes(decoded.map(({ c }) => c));
   let depth = 0;
   const walk = (n: IndexNode, d: number): void => {
     depth = Math.max(depth, d);

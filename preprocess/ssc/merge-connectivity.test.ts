@@ -60,7 +60,7 @@ function pixelParts(ids: Uint32Array, w: number, h: number, f: number): number {
   return parts;
 }
 
-test('sliced as the map sees it, the rising-then-falling strip shows the winner in two parts exactly when an island is found', () => {
+test('sliced as the map sees it, the rising-then-falling strip shows the winner in two parts exactly when an island is found', async () => {
   // The winner W (face 1) is the square [-1,0] x [0,1] west of the strip (vertices 8, 9); the
   // strip is the loser L (face 2). Both on the floor; the merge tilted over L, z 1, 3, 3, 2 along x.
   const xs = Float64Array.of(0, 1, 2, 3, 0, 1, 2, 3, -1, -1), ys = Float64Array.of(0, 0, 0, 0, 1, 1, 1, 1, 0, 1);
@@ -72,7 +72,7 @@ test('sliced as the map sees it, the rising-then-falling strip shows the winner 
   for (let i = 0; i < STRIP.length; i += 3) s.addTilted(STRIP[i]!, STRIP[i + 1]!, STRIP[i + 2]!, z[i]!, z[i + 1]!, z[i + 2]!, 1, 2, 'merge');
   s.zEnd.fill(10);
   const view = fitView([-1, 0, 3, 1], 160, 40);
-  const slice = surfacesSlicer(s, xs, ys, () => 0, view);
+  const slice = await surfacesSlicer(s, xs, ys, () => 0, view);
   for (const zs of [1.5, 2.25, 2.5, 2.75, 3.5]) {
     const islands = detachedParts({ v: STRIP, z }, SHARED, zs);
     assert.equal(pixelParts(slice(zs).ids, 160, 40, 1), 1 + islands, `z ${zs}: ${islands} islands found`);

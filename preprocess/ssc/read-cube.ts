@@ -80,7 +80,7 @@ export class CubeReader {
   }
 
   /** A file of the index read, checked against the index's size and SHA-256, and decoded. */
-  private async checkedFile<T>(leaf: { file: string; bytes: number; sha256: string }, kind: string, decode: (bytes: Uint8Array, name: string) => T): Promise<T> {
+  private async checkedFile<T>(leaf: { file: string; bytes: number; sha256: string }, kind: string, decode: (bytes: Uint8Array, name: string) => T | Promise<T>): Promise<T> {
     const file = path.join(this.dir, leaf.file);
     let bytes: Buffer;
     try {
@@ -92,7 +92,7 @@ export class CubeReader {
     const sha = createHash('sha256').update(bytes).digest('hex');
     if (sha !== leaf.sha256) throw new InputError(`is corrupt: its SHA-256 does not match the index`, { file });
     try {
-      return decode(new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength), leaf.file);
+      return await decode(new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength), leaf.file);
     } catch (err) {
       throw new InputError(`is not a valid ${kind}: ${(err as Error).message}`, { file });
     }

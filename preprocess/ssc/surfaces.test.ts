@@ -32,9 +32,9 @@ const THREE: FixtureFace[] = [
 ];
 
 /** Every surface triangle in one chunk, decoded: slices then see what the map would. */
-function slicer(t: Tgap, s: Surfaces, view: View): (z: number) => Uint32Array {
+async function slicer(t: Tgap, s: Surfaces, view: View): Promise<(z: number) => Uint32Array> {
   const all = Uint32Array.from({ length: s.count }, (_, i) => i);
-  const chunk = decodeChunk(assembleChunk(s, all, t.xs, t.ys, (f) => t.faces[f]!.classIndex).bytes);
+  const chunk = await decodeChunk(assembleChunk(s, all, t.xs, t.ys, (f) => t.faces[f]!.classIndex).bytes);
   return (z) => {
     const sl = new CpuSlicer(view, () => z);
     sliceChunk(sl, chunk);
@@ -48,7 +48,7 @@ function middleRow(ids: Uint32Array, view: View): number[] {
   return Array.from(ids.subarray(j * view.width, (j + 1) * view.width));
 }
 
-test('a smooth merge tilts the loser from the shared boundary (hand-worked z and split)', () => {
+test('a smooth merge tilts the loser from the shared boundary (hand-worked z and split)', async () => {
   const t = fixtureTgap(THREE, ['a']);
   assert.deepEqual(t.events.map((e) => [e.kind, e.step, e.loser, e.into]), [[EventKind.Merge, 1, L, W], [EventKind.Merge, 2, Z, W]]);
   const { surfaces: s, transitions } = buildSurfaces(t, { smooth: true });
@@ -95,7 +95,7 @@ test('a smooth merge tilts the loser from the shared boundary (hand-worked z and
 
   // 100 x 40 pixels of 0.1: column c has its centre at x = 0.05 + 0.1 c.
   const view = fitView(t.meta.extent, 100, 40);
-  const slice = slicer(t, s, view);
+  const slice = await slicer(t, s, view);
   const faceAt = (row: number[], x: number): number => row[Math.round((x - 0.05) / 0.1)]!;
   // A quarter of the way up merge 1's ramp: W has taken L up to x = 4 + 2/4 = 4.5.
   const row1 = middleRow(slice(ramps[L]!.z0 + (ramps[L]!.z1 - ramps[L]!.z0) / 4), view);
@@ -107,7 +107,7 @@ test('a smooth merge tilts the loser from the shared boundary (hand-worked z and
 
 /** z from which face f is shown: the floor, or its re-emit. */
 
-test('a smooth cube is a partition at every z and equals the classic one at the floor and the top', () => {
+test('a smooth cube is a partition at every z and equals the classic one at the floor and the top', async () => {
   // A 4 x 3 grid of rectangles of uneven sizes and two classes.
   const xsCut = [0, 3, 4, 8, 9], ysCut = [0, 2, 5, 6];
   const faces: FixtureFace[] = [];
@@ -118,7 +118,7 @@ test('a smooth cube is a partition at every z and equals the classic one at the 
   const smooth = buildSurfaces(t, { smooth: true });
   assert.ok(smooth.stats.tiltedMerges >= 5, `${smooth.stats.tiltedMerges} merges tilted`);
   const view = fitView(t.meta.extent, 90, 60);
-  const slice = slicer(t, smooth.surfaces, view);
+  const slice = await slicer(t, smooth.surfaces, view);
   const zMax = t.meta.steps;
   for (let k = 0; k < 200; k++) {
     const z = (zMax * k) / 199;
@@ -129,7 +129,7 @@ test('a smooth cube is a partition at every z and equals the classic one at the 
       assert.ok(faceStartZ(t.faces[f]!) <= z && z < faceEndZ(t.faces[f]!, zMax), `z ${z}: pixel ${p} shows face ${f}, not alive`);
     }
   }
-  const classic = slicer(t, buildSurfaces(t).surfaces, view);
+  const classic = await slicer(t, buildSurfaces(t).surfaces, view);
   assert.deepEqual(slice(0), classic(0));
   assert.deepEqual(slice(zMax), classic(zMax));
 });

@@ -3,7 +3,7 @@ import type { Surfaces } from './surfaces.js';
 
 /**
  * Bytes each triangle costs in a chunk: its three u16 indices and its share of its piece's
- * vertices (docs/FORMAT.md: 24 bytes a vertex).
+ * vertices as the GPU holds them (docs/FORMAT.md: 24 bytes a decoded vertex; the file is smaller).
  */
 export function triangleBytes(s: Surfaces): Float64Array {
   const n = s.count;

@@ -1,6 +1,6 @@
 // A chunk on the GPU: its vertex section as one buffer (attributes at offsets into it, exactly
 // as the file lays them out) and its triangle indices, bound in a vertex array object.
-import { VERTEX_COLUMNS, vertexColumnOffset } from '../../../format/chunk.js';
+import { VERTEX_COLUMNS, vertexColumnOffset } from '../../../format/chunk-layout.js';
 import type { Box3 } from '../../../format/cube-index.js';
 import type { ChunkPayload } from '../source/worker-protocol.js';
 

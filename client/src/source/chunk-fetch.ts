@@ -21,7 +21,7 @@ export class ChunkCorrupt extends Error {
  * `decode` (which checks the structure) and compared with the index's SHA-256; `verified` is
  * false where no crypto.subtle could check the hash. Every failure of the file is ChunkCorrupt.
  */
-export async function fetchChunkFile<T>(leaf: { file: string; sha256: string }, url: string, retry: RetryOptions, signal: AbortSignal, decode: (bytes: ArrayBuffer, name: string) => T): Promise<{ data: T; verified: boolean }> {
+export async function fetchChunkFile<T>(leaf: { file: string; sha256: string }, url: string, retry: RetryOptions, signal: AbortSignal, decode: (bytes: ArrayBuffer, name: string) => T | Promise<T>): Promise<{ data: T; verified: boolean }> {
   const raw = await fetchBytes(url, retry, signal);
   let bytes: ArrayBuffer;
   try {
@@ -31,7 +31,7 @@ export async function fetchChunkFile<T>(leaf: { file: string; sha256: string }, 
   }
   let data: T;
   try {
-    data = decode(bytes, leaf.file);
+    data = await decode(bytes, leaf.file);
   } catch (err) {
     if (err instanceof FormatError) throw new ChunkCorrupt(err.message);
     throw err;
