@@ -15,6 +15,9 @@ import type { ChunkLeaf, ExternalNode, InnerNode } from '../format/cube-index.js
 import { boxMeets } from '../format/index-query.js';
 import { fitBbox, growBbox, viewBbox, type Bbox } from '../client/src/geometry/view.js';
 import { keepUpwardTriangles } from '../client/src/source/upward-triangles.js';
+import { lineSegmentPayload } from '../client/src/source/line-chunk-fetch.js';
+import { payloadBytes } from '../client/src/source/worker-protocol.js';
+import { decodeLineChunk } from '../format/line-chunk.js';
 import { openMap, type MapPage } from './helpers/browser.js';
 import { compareIds, cpuSlice, type BuiltCube, type CubeContents } from './helpers/cube.js';
 import { checkAndClose, setUpTestBed, tearDownTestBed } from './helpers/test-bed.js';
@@ -41,6 +44,11 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     for (const l of contents.leaves) {
       const c = await decodeChunk(await readFile(path.join(cube.dir, l.file)), l.file);
       gpuBytes.set(l.file, c.vertexByteLength + c.indices.BYTES_PER_ELEMENT * 3 * keepUpwardTriangles(c.positions, c.indices));
+    }
+    // Line chunks share the budget: their segments as the map holds them.
+    for (const l of contents.lines) {
+      const payload = { ...lineSegmentPayload(decodeLineChunk(await readFile(path.join(cube.dir, l.file)), l.file)), file: l.file, bbox: l.bbox, verified: true };
+      gpuBytes.set(l.file, payloadBytes(payload));
     }
   });
 
@@ -248,9 +256,14 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
 
   test('a small GPU memory budget evicts the least recently used chunks and fetches them again', async () => {
     const z = 30;
+    // With the line chunks the view needs (the map fetches them with the surface chunks).
     const bytes = (ls: ChunkLeaf[]): number => ls.reduce((s, l) => s + gpuBytes.get(l.file)!, 0);
+    const withLines = (b: Bbox): number => {
+      const m = growBbox(viewBbox(fitBbox(b, W, H)), MARGIN);
+      return bytes(needed(b, z).all) + contents.lines.filter((l) => boxMeets(l.bbox, { ground: m, zMin: z, zMax: z })).reduce((s, l) => s + gpuBytes.get(l.file)!, 0);
+    };
     // Room for either view with its margin, never for both.
-    const budgetFor = (x: Bbox, y: Bbox): number => Math.max(bytes(needed(x, z).all), bytes(needed(y, z).all)) * 1.05;
+    const budgetFor = (x: Bbox, y: Bbox): number => Math.max(withLines(x), withLines(y)) * 1.05;
     const onlyA = (x: Bbox, y: Bbox): ChunkLeaf[] => needed(x, z).visible.filter((l) => !files(needed(y, z).all).has(l.file));
     const [a, b] = pickPair((x, y) => onlyA(x, y).length >= 2 && bytes(needed(x, z).all) + bytes(needed(y, z).all) > 1.3 * budgetFor(x, y));
     const nb = needed(b, z);

@@ -65,7 +65,7 @@ const TSCONFIG = {
 };
 
 /** What the tarball may hold: the library, the compiled CLI, styles and docs. */
-const SHIPPED = /^(package\.json|README\.md|bin\/ssc\.js|dist\/lib\/.+|dist\/(preprocess|format|server)\/.+\.js|styles\/[\w-]+\.json|docs\/[\w-]+\.md)$/;
+const SHIPPED = /^(package\.json|README\.md|bin\/ssc\.js|dist\/lib\/.+|dist\/(preprocess|format|server)\/.+\.js|styles\/[\w-]+\.json|docs\/[\w-]+\.md|docs\/img\/[\w-]+\.png)$/;
 
 /** Relative files a built script loads: its imports (static and lazy) and its worker's URL. */
 function referencedFiles(js: string): string[] {

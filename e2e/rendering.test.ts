@@ -56,8 +56,9 @@ for (const classic of [false, true]) describe(`rendering and picking (bgt_otterl
     return inRange ? [classColours[cls]!, hexColour(p.color)] : [classColours[cls]!];
   }
 
+  // The faces' colours, without the cube's lines over them (e2e/lines.test.ts draws those).
   async function open(params: Record<string, string | number>, opts: OpenOptions = {}): Promise<MapPage> {
-    mp = await openMap(browser, server.url, { source: 'cube/', supersampling: 1, ...params }, opts);
+    mp = await openMap(browser, server.url, { source: 'cube/', supersampling: 1, lines: 0, ...params }, opts);
     return mp;
   }
 

@@ -90,8 +90,9 @@ const near = (a: number[], b: number[], tol: number): boolean => a.every((v, i) 
 describe('run-time style and feature state (bgt_otterlo_400m)', () => {
   const bed = useTestBed(['--no-precompress']);
 
+  // The faces' colours and paints, without the cube's lines over them (e2e/lines.test.ts has those).
   async function open(params: Record<string, string | number> = {}): Promise<MapPage> {
-    bed.page = await openMap(bed.browser, bed.server.url, { source: 'cube/', supersampling: 1, z: Z, ...params });
+    bed.page = await openMap(bed.browser, bed.server.url, { source: 'cube/', supersampling: 1, z: Z, lines: 0, ...params });
     assert.equal(await waitIdle(bed.page.page), true);
     return bed.page;
   }

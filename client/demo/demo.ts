@@ -1,8 +1,8 @@
 // The full-page demo `npm start` serves, built only on the library's public API: every control,
 // the URL hash, flights to a few places, and the face under a click.
 // ?source=<index.json or directory> picks another cube (default: chunks/ beside the page);
-// ?reduceMotion=1|0 and ?supersampling=n override those options; ?sw=0 leaves the service
-// worker (offline use) out.
+// ?reduceMotion=1|0, ?supersampling=n and ?lines=0|1 override those options; ?sw=0 leaves the
+// service worker (offline use) out.
 import { FullscreenControl, ScaleBar, SettingsPanel, VarioMap, ZoomControl, type Control, type VarioMapOptions } from '../src/lib/bundle.js';
 import { enableOffline } from './offline.js';
 
@@ -12,6 +12,8 @@ const reduce = params.get('reduceMotion');
 if (reduce !== null) options.reduceMotion = reduce !== '0';
 const ss = params.get('supersampling');
 if (ss !== null) options.supersampling = Number(ss);
+const lines = params.get('lines');
+if (lines !== null) options.lines = lines !== '0';
 const map = new VarioMap(options);
 const settings = new SettingsPanel();
 map.addControl(new ZoomControl(), 'top-right');

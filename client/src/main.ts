@@ -36,6 +36,7 @@ if (budget !== undefined) options.gpuMemoryBudget = budget;
 const ratio = num('ratio');
 if (ratio !== undefined) options.pixelRatio = ratio;
 if (params.get('boundaries') === '1') options.boundaries = { enabled: true };
+if (params.get('lines') === '0') options.lines = false;
 // A style to draw from the start (JSON, as setStyle takes it).
 const style = params.get('style');
 if (style) options.style = JSON.parse(style) as NonNullable<VarioMapOptions['style']>;

@@ -7,7 +7,7 @@ import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { promisify } from 'node:util';
 import { decodeChunk } from '../../format/chunk.js';
-import { parseIndex, parseSubIndex, type ChunkLeaf, type CubeMeta, type InnerNode } from '../../format/cube-index.js';
+import { parseIndex, parseSubIndex, type ChunkLeaf, type CubeMeta, type InnerNode, type LineChunkLeaf } from '../../format/cube-index.js';
 import { queryIndex } from '../../format/index-query.js';
 import { zAtScale } from '../../format/scale.js';
 import { parseSurface, surfaceZ, type Surface } from '../../format/slicing-surface.js';
@@ -78,6 +78,8 @@ export async function cpuSliceWithZ(cubeDir: string, a: SliceArgs): Promise<{ id
 export interface CubeContents {
   meta: CubeMeta;
   leaves: ChunkLeaf[];
+  /** The line chunks (none in a cube without lines). */
+  lines: LineChunkLeaf[];
   subIndexFiles: string[];
   root: InnerNode;
   subs: Map<string, InnerNode>;
@@ -93,7 +95,7 @@ export async function readCube(cubeDir: string): Promise<CubeContents> {
     for (const ref of q.missing) subs.set(ref, parseSubIndex(JSON.parse(await readFile(path.join(cubeDir, ref), 'utf8')), ref));
     q = queryIndex(index.root, all, (r) => subs.get(r));
   }
-  return { meta: index.meta, leaves: q.leaves, subIndexFiles: [...subs.keys()], root: index.root, subs };
+  return { meta: index.meta, leaves: q.leaves, lines: index.lines ?? [], subIndexFiles: [...subs.keys()], root: index.root, subs };
 }
 
 /** Every triangle of a cube, x, y and z of each corner in ground coordinates, found by place. */

@@ -231,8 +231,9 @@ export class Renderer {
   /** The cube's lines over the map just presented; returns the segments submitted. */
   private drawLines(g: Gpu, f: FrameParams, lineChunks: readonly GpuLineChunk[]): number {
     if (!g.lineRules || lineChunks.length === 0) return 0;
-    // A window of 2% of the cube's z either side: refilled every few dozen frames of a zoom.
-    return g.lines.draw(g.targets, f.view, f.pixelRatio, lineChunks, g.lineRules, f.sliceRange, 0.02 * f.zMax);
+    // A window of 0.5% of the cube's z either side (a few dozen steps): refilled every few
+    // frames of a zoom, a pass over the chunk's segments each time.
+    return g.lines.draw(g.targets, f.view, f.pixelRatio, lineChunks, g.lineRules, f.sliceRange, 0.005 * f.zMax);
   }
 
   /** The overlays over the canvas, drawn again only if the view or the layers changed. */
