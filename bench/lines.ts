@@ -4,15 +4,15 @@
 // (the face's geometry at its split), beside the pieces the class's areas form at the base
 // scale (faces sharing an edge). Faces of a linear class with one neighbour are merged whole,
 // not split, and leave no line: counted beside. Then pruning over scale (item 2): the lines
-// left at the base scale, 1:5k, 1:10k and 1:25k with their vertices in full and simplified
+// left at the base scale, 1:5k, 1:10k and 1:25k (as ssc build makes them: the lines the style
+// draws, weighed by their rules and strokes) with their vertices in full and simplified
 // (bench/line-scales.ts), and whether each class's main network stays one piece at every
 // state it is shown.
 import { EventKind, resolveFace, type Tgap } from '../format/tgap-model.js';
 import { collapseLines } from '../preprocess/lines/collapse-lines.js';
 import { lineComponents } from '../preprocess/lines/line-components.js';
-import { pruneLines } from '../preprocess/lines/prune-lines.js';
-import { simplifyLines } from '../preprocess/lines/simplify-lines.js';
 import { generalizeFile } from '../preprocess/pipeline.js';
+import { generalizedLines } from '../preprocess/ssc/cube-lines.js';
 import { loadStyle } from '../preprocess/style.js';
 import { datasets } from './datasets.js';
 import { LINE_SCALE_HEADER, lineScaleRows, mainNetworkSplits } from './line-scales.js';
@@ -60,15 +60,13 @@ for (const d of datasets(process.argv[2], ['bgt_otterlo_400m', 'bgt_otterlo_1800
     rows.push([d.name, c.key, String(splits), String(ended(EventKind.Merge)), String(mine.length), km.toFixed(2), String(lineComponents(mine.flatMap((l) => l.paths))), String(areaComponents(tgap, ci))]);
   });
   rows.push([d.name, 'all', String(stats.linearSplits), '', String(stats.lines), (stats.length / 1000).toFixed(2), String(lineComponents(lines.flatMap((l) => l.paths))), '']);
+  // As ssc build makes them: the lines the style draws, by their rules' weights and strokes.
   const t1 = performance.now();
-  const pruned = pruneLines(lines, tgap, style);
+  const { pruned, simplified } = generalizedLines(tgap, style);
   const pruneMs = performance.now() - t1;
-  const t2 = performance.now();
-  const simplified = simplifyLines(pruned.lines, tgap);
-  const simplifyMs = performance.now() - t2;
   scaleRows.push(...lineScaleRows(d.name, tgap, style, simplified.lines, [5000, 10000, 25000]));
   const st = pruned.stats, ss = simplified.stats;
-  pruneNotes.push(`${d.name}: prune ${(pruneMs / 1000).toFixed(2)} s; density held ${pruned.density.toFixed(4)} mm/mm²; pruned ${st.pruned} (at birth ${st.prunedAtBirth}), to the top ${st.toTop}, states over budget ${st.statesOverBudget}; simplify ${(simplifyMs / 1000).toFixed(2)} s: vertices removed ${ss.removed}, put off by a vertex in the triangle ${ss.blocked}, of those kept for good ${ss.given}`);
+  pruneNotes.push(`${d.name}: collapse again, prune and simplify ${(pruneMs / 1000).toFixed(2)} s; density held ${pruned.density.toFixed(4)} mm/mm²; pruned ${st.pruned} (at birth ${st.prunedAtBirth}), to the top ${st.toTop}, states over budget ${st.statesOverBudget}; simplify: vertices removed ${ss.removed}, put off by a vertex in the triangle ${ss.blocked}, of those kept for good ${ss.given}`);
   for (const m of mainNetworkSplits(tgap, style, simplified.lines)) pruneNotes.push(`  ${m.cls}: main network shown at ${m.shownStates} states; checked where a line of it goes: ${m.checked}, in pieces (with areas) at ${m.split}`);
   notes.push(`${d.name}: collapse ${(ms / 1000).toFixed(2)} s; ports ${stats.ports}, taken up by later lines ${stats.anchorsReached} (by a bridge ${stats.anchorsBridged}), outside their face by then ${stats.anchorsOutside}, never taken up ${stats.anchorsLeft}; empty centrelines ${stats.empty}`);
   process.stderr.write('done\n');

@@ -131,6 +131,20 @@ test('density: the base scale\'s line length per map area held over scale, the l
   assert.equal(stats.prunedAtBirth, 1, 'the 200 m line went at the step it was born');
 });
 
+test('pruning takes from the networks over their share of the budget, however important their lines', () => {
+  // Network A: two 100 m lines of importance 1000 and 1001; network B: two 20 m lines of
+  // importance 10 and 11; each network has half the budget. At state 1 the budget is 150 m:
+  // A holds 200 m of its 75, B 40 m of its 75, so A's less important line goes, and B keeps its
+  // lines although they are less important than A's.
+  const lines = handLines([[0, 0, 100, 0], [0, 10, 100, 10], [0, 20, 20, 20], [0, 30, 20, 30]], [0, 0, 0, 0]);
+  const importance = [1000, 1001, 10, 11];
+  const budget = Float64Array.of(240, 150);
+  const shared = pruneOrder(lines, { importance, budget, network: [0, 0, 1, 1], share: [0.5, 0.5] });
+  assert.deepEqual([...shared.prunedStep], [1, 2, 2, 2]);
+  // One budget for all: the least important go first, B's two lines, then A's first.
+  assert.deepEqual([...pruneOrder(lines, { importance, budget }).prunedStep], [1, 2, 1, 1]);
+});
+
 test('pruneLines on a generalized T of roads: prune steps inside the tGAP, bad lines named', () => {
   const style = fixtureStyle([{ key: 'road', linear: true }, { key: 'field', weight: 4 }]);
   const tgap = fixtureTgap(ROAD_T, ['road', 'field'], style);

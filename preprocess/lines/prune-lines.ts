@@ -9,16 +9,18 @@
 //   constant number of faces per map area. (Counting them too left almost no room for lines
 //   early on: on bgt_otterlo_1800m at 1:1,500 the areas still hold 89 km of a 94 km budget,
 //   and two lines in three went the step they were born.)
-// - While over budget, one born line goes at a time, chosen among those whose removal keeps
-//   every connected piece of the network in one piece (not a cut vertex of the join graph,
-//   line-graph.ts, with unborn lines in it as the areas they still are). Each piece offers
-//   one: its lines with a free end first (dangling ends; after one goes, the next of its chain
-//   may dangle), then its others, the least important first (length x class weight), then the
-//   lowest index. Of the pieces' offers the least important goes (then the lowest index): the
-//   order within a network keeps it whole, importance weighs networks and classes against
-//   each other. (Dangling ends first across all pieces would keep a lone pond's bank, a closed
-//   ring, over every river that ends somewhere.) A free end where the face touched the edge
-//   of the data is forgiven once: the road goes on beyond the data.
+// - While over budget, one born line goes at a time, chosen among those of the networks over
+//   their share of the budget (the share of the length each has at the base scale; any, if
+//   those offer none), among those whose removal keeps every connected piece of the network in
+//   one piece (not a cut vertex of the join graph, line-graph.ts, with unborn lines in it as
+//   the areas they still are). Each piece offers one: its lines with a free end first
+//   (dangling ends; after one goes, the next of its chain may dangle), then its others, the
+//   least important first (the length of the line's stroke, strokes.ts, x its rule's weight),
+//   then the lowest index. Of the pieces' offers the least important goes (then the lowest
+//   index): the order within a network keeps it whole, importance weighs networks and classes
+//   against each other. (Dangling ends first across all pieces would keep a lone pond's bank,
+//   a closed ring, over every river that ends somewhere.) A free end of a line whose stroke
+//   reaches the edge of the data is forgiven once: the road goes on beyond the data.
 // - A cut line never goes: pieces shrink but never split, so a class's main network stays
 //   connected while any of it is shown. Every piece has a line that is not a cut (a leaf of
 //   its block tree), but it may be unborn: then the lines shown can stay over budget (counted).
@@ -32,6 +34,7 @@ import { FaceHistory } from './face-history.js';
 import { lineBudget, mapDensity } from './line-budget.js';
 import { cutLines, joinAdjacency, lineGraphComponents } from './line-graph.js';
 import { pointKey, pointUses } from './point-uses.js';
+import { strokes } from './strokes.js';
 
 export interface PrunedLine extends LineObject {
   /** The first state without this line: it is on the map at states step <= s < prunedStep. */
@@ -56,6 +59,9 @@ export interface PruneOrderInput {
   budget: ArrayLike<number>;
   /** 1 where a line's face touched the edge of the data: one free end is not a dead end. */
   atEdge?: ArrayLike<number>;
+  /** The network of each line (default: all one), and each network's share of the budget (default: all of it). */
+  network?: ArrayLike<number>;
+  share?: ArrayLike<number>;
 }
 
 type PruneShape = Pick<LineObject, 'step' | 'length' | 'paths' | 'joins'>;
@@ -74,6 +80,9 @@ export function pruneOrder(lines: readonly PruneShape[], input: PruneOrderInput)
     if (l.step <= top) bornAt[Math.max(0, l.step)]!.push(i);
   });
   let total = 0;
+  const network = input.network ?? new Int32Array(n);
+  const share = input.share ?? [1];
+  const networkLength = new Float64Array(share.length);
   let cut = cutLines(adj, alive);
   let piece = lineGraphComponents(adj, alive);
 
@@ -84,16 +93,27 @@ export function pruneOrder(lines: readonly PruneShape[], input: PruneOrderInput)
   };
 
   for (let s = 0; s <= top; s++) {
-    for (const i of bornAt[s]!) total += lines[i]!.length;
+    for (const i of bornAt[s]!) {
+      total += lines[i]!.length;
+      networkLength[network[i]!]! += lines[i]!.length;
+    }
     while (total > input.budget[s]!) {
-      // Each piece's offer, then the least important offer (lines in index order: ties go low).
-      const offer = new Map<number, { line: number; dangles: boolean }>();
-      for (let i = 0; i < n; i++) {
-        if (!alive[i] || cut[i] || lines[i]!.step > s) continue;
-        const d = dangles(i);
-        const o = offer.get(piece[i]!);
-        if (!o || (d && !o.dangles) || (d === o.dangles && input.importance[i]! < input.importance[o.line]!)) offer.set(piece[i]!, { line: i, dangles: d });
-      }
+      // Each piece's offer, then the least important offer (lines in index order: ties go low),
+      // from the networks over their share if they offer any.
+      const offers = (overShareOnly: boolean): Map<number, { line: number; dangles: boolean }> => {
+        const offer = new Map<number, { line: number; dangles: boolean }>();
+        for (let i = 0; i < n; i++) {
+          if (!alive[i] || cut[i] || lines[i]!.step > s) continue;
+          const g = network[i]!;
+          if (overShareOnly && !(networkLength[g]! > input.budget[s]! * share[g]!)) continue;
+          const d = dangles(i);
+          const o = offer.get(piece[i]!);
+          if (!o || (d && !o.dangles) || (d === o.dangles && input.importance[i]! < input.importance[o.line]!)) offer.set(piece[i]!, { line: i, dangles: d });
+        }
+        return offer;
+      };
+      let offer = offers(true);
+      if (offer.size === 0) offer = offers(false);
       let best = -1;
       for (const { line } of offer.values()) {
         if (best < 0 || input.importance[line]! < input.importance[best]! || (input.importance[line] === input.importance[best] && line < best)) best = line;
@@ -105,6 +125,7 @@ export function pruneOrder(lines: readonly PruneShape[], input: PruneOrderInput)
       alive[best] = 0;
       prunedStep[best] = s;
       total -= lines[best]!.length;
+      networkLength[network[best]!]! -= lines[best]!.length;
       stats.pruned++;
       if (lines[best]!.step === s) stats.prunedAtBirth++;
       cut = cutLines(adj, alive);
@@ -143,6 +164,8 @@ export interface PruneOptions {
   density?: number;
   /** Importance per metre of each line (default: its class's weight); the style's line rules give it. */
   weights?: ArrayLike<number>;
+  /** The group (style line rule) of each line, whose lines chain into strokes (default: its class). */
+  groups?: ArrayLike<number>;
 }
 
 /**
@@ -170,8 +193,52 @@ export function pruneLines(
   const density = opts.density ?? mapDensity(total, area, tgap.meta.baseScale);
   const budget = lineBudget(scaleInfoOf(tgap), steps, area, density);
   const history = new FaceHistory(tgap);
-  const atEdge = lines.map((l) => (history.boundaryAt(l.face, l.step - 1).some((side) => side.other === 0) ? 1 : 0));
-  const importance = lines.map((l, i) => l.length * (opts.weights?.[i] ?? style.classes[l.classIndex]!.weight));
-  const { prunedStep, stats } = pruneOrder(lines, { importance, budget, atEdge });
+  // A line weighs as the stroke it is part of (strokes.ts): a main road cut into short pieces
+  // at its junctions counts as the whole road, not as its pieces.
+  const { stroke, strokeLength } = strokes(lines, opts.groups ?? lines.map((l) => l.classIndex));
+  const importance = lines.map((l, i) => strokeLength[i]! * (opts.weights?.[i] ?? style.classes[l.classIndex]!.weight));
+  // A stroke that reaches the edge of the data goes on beyond it: each of its lines may have a
+  // free end without being a dead end, so a through road is not eaten away from the edge in.
+  const edgeStroke = new Uint8Array(lines.length);
+  lines.forEach((l, i) => {
+    if (history.boundaryAt(l.face, l.step - 1).some((side) => side.other === 0)) edgeStroke[stroke[i]!] = 1;
+  });
+  const atEdge = lines.map((_, i) => edgeStroke[stroke[i]!]!);
+  // Each network (the classes its joins link: each class alone by default) has a share of the
+  // budget, the share of the length it has at the base scale; pruning takes from the networks
+  // over their share. A class of long important strokes (main roads) would otherwise take the
+  // whole budget and leave no water on the map, while a class under its share may still use
+  // what the others leave.
+  const network = new Int32Array(lines.length);
+  const share: number[] = [];
+  networks(lines).forEach((members, g) => {
+    for (const i of members) network[i] = g;
+    share.push(total > 0 ? members.reduce((sum, i) => sum + lines[i]!.length, 0) / total : 1);
+  });
+  const { prunedStep, stats } = pruneOrder(lines, { importance, budget, atEdge, network, share });
   return { lines: lines.map((l, i) => ({ ...l, prunedStep: prunedStep[i]! })), density, budget, stats };
+}
+
+/** The lines of each network, in index order: classes joined where a join links two of them. */
+function networks(lines: readonly LineObject[]): number[][] {
+  const classOf = new Map<number, number>();
+  const find = (c: number): number => {
+    let r = c;
+    while (classOf.get(r) !== undefined && classOf.get(r) !== r) r = classOf.get(r)!;
+    return r;
+  };
+  for (const l of lines) if (!classOf.has(l.classIndex)) classOf.set(l.classIndex, l.classIndex);
+  for (const l of lines) {
+    for (const j of l.joins) {
+      if (j.line < 0) continue;
+      const a = find(l.classIndex), b = find(lines[j.line]!.classIndex);
+      if (a !== b) classOf.set(Math.max(a, b), Math.min(a, b));
+    }
+  }
+  const groups = new Map<number, number[]>();
+  lines.forEach((l, i) => {
+    const r = find(l.classIndex);
+    groups.set(r, [...(groups.get(r) ?? []), i]);
+  });
+  return [...groups.keys()].sort((a, b) => a - b).map((r) => groups.get(r)!);
 }

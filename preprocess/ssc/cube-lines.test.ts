@@ -51,7 +51,8 @@ test('bgt_otterlo_400m: the cube\'s lines read back are the collapsed and pruned
   const ruleOf = collapsed.map((l) => expectedRule(style.lineRules, l.classIndex, klasseOf(l.feature)));
   const drawn = ruleOf.map((r) => r >= 0 && style.lineRules[r]!.width > 0);
   const kept = keepLines(collapsed, drawn);
-  const pruned = pruneLines(kept, tgap, style, { weights: ruleOf.filter((_, i) => drawn[i]).map((r) => style.lineRules[r]!.weight) }).lines;
+  const keptRules = ruleOf.filter((_, i) => drawn[i]);
+  const pruned = pruneLines(kept, tgap, style, { weights: keptRules.map((r) => style.lineRules[r]!.weight), groups: keptRules }).lines;
   // Lines pruned the step they are born are never on the map and not written.
   const shown = pruned.filter((l) => l.step < l.prunedStep);
   assert.ok(shown.length > 50 && shown.length < pruned.length, `${shown.length} of ${pruned.length} lines shown`);
@@ -105,6 +106,8 @@ test('bgt_otterlo_400m: the cube\'s lines read back are the collapsed and pruned
     'wegdeel/rijbaan regionale weg': rule(['rijbaan regionale weg']),
     'wegdeel/rijbaan lokale weg': rule(['rijbaan lokale weg']),
     'wegdeel/voetpad': rule(['voetpad', 'voetpad op trap', 'voetgangersgebied']),
+    'wegdeel/voetpad op trap': rule(['voetpad', 'voetpad op trap', 'voetgangersgebied']),
+    'wegdeel/voetgangersgebied': rule(['voetpad', 'voetpad op trap', 'voetgangersgebied']),
     'wegdeel/inrit': rule(['inrit', 'parkeervlak']),
     'wegdeel/parkeervlak': rule(['inrit', 'parkeervlak']),
     'waterdeel/waterloop': rule(['waterloop'], 'waterdeel'),
