@@ -127,8 +127,9 @@ describe('interaction (bgt_otterlo_400m)', () => {
     const glide = (end.x - atRelease[0]) / px(end.scale);
     // MapLibre's inertia, computed by hand: 480 px in the 128 ms between the press and the last
     // move, times a linearity of 0.3, is 1125 px/s (under the 1400 cap); decelerating at
-    // 2500 * 0.3 px/s^2 it goes on 1125^2 / (2 * 750) = 843.75 px.
-    assert.ok(Math.abs(glide - 843.75) < 1, `glided ${glide.toFixed(2)} px on after the release, expected 843.75`);
+    // 2500 * 0.3 px/s^2 it goes on 1125^2 / (2 * 750) = 843.75 px. The page sees event times
+    // coarsened to 0.1 ms: 0.2 ms in 128 is 0.3% of the distance (it goes as the speed squared).
+    assert.ok(Math.abs(glide - 843.75) < 0.005 * 843.75, `glided ${glide.toFixed(2)} px on after the release, expected 843.75`);
     assert.ok(Math.abs(end.y - atRelease[1]) / px(end.scale) < 1, 'in the direction of the drag');
     await page.waitForTimeout(200);
     const still = await camera(page);

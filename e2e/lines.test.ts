@@ -8,7 +8,6 @@ import type { Page } from 'playwright-core';
 import { lineOfChunk, type LineRecord } from '../format/line-chunk.js';
 import { lineRuleFinder, type LineRule } from '../format/line-style.js';
 import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
-import { scaleAtZ } from '../format/scale.js';
 import { parseSurface, surfaceZ } from '../format/slicing-surface.js';
 import { drawLines, linePaintColour, type LinePaint } from '../preprocess/map/draw-lines.js';
 import { fitView } from '../preprocess/map/rasterize.js';
@@ -123,8 +122,9 @@ describe('lines of the cube (bgt_otterlo_400m)', () => {
    * segment alone gives: of the GPU's pixels at most 1% lie more than a pixel from the CPU's,
    * none more than two.
    */
-  function compare(label: string, img: Rgba, paint: LinePaint, hidden: Bbox[]): void {
+  function compare(label: string, img: Rgba, paint: LinePaint, thin: LinePaint, hidden: Bbox[]): void {
     const cpu = (i: number, j: number): boolean => paint[j * W + i]! !== 0;
+    const nearThin = (i: number, j: number): boolean => thin[j * W + i]! !== 0 && paint[j * W + i]! === 0;
     const gpu = (i: number, j: number): boolean => Math.max(...pixel(img, i, j)) < 128;
     let gpuPixels = 0, cpuPixels = 0;
     const stray: string[] = [], far: string[] = [], missing: string[] = [];
@@ -132,6 +132,9 @@ describe('lines of the cube (bgt_otterlo_400m)', () => {
       if (under(hidden, i, j)) continue;
       if (gpu(i, j)) {
         gpuPixels++;
+        // Where a line narrower than a pixel lies (as it grows or shrinks), pixel centres say
+        // too little: the GPU's blended joins there are not held against them.
+        if (nearThin(i, j)) continue;
         if (!nearby(cpu, i, j)) stray.push(`(${i}, ${j})`);
         if (!nearby(cpu, i, j, 2)) far.push(`(${i}, ${j})`);
       }
@@ -164,7 +167,7 @@ describe('lines of the cube (bgt_otterlo_400m)', () => {
       const hidden = await covered(page);
       const px = (x1 - x0) / W, py = (y1 - y0) / H;
       const zAt = (p: number): number => surfaceZ({ base: z, spec }, x0 + ((p % W) + 0.5) * px, y1 - (Math.floor(p / W) + 0.5) * py, meta.zMax);
-      const paint = drawLines(view, all, meta.style.lines, { zAt, scaleAt: (zz) => scaleAtZ(meta, zz) });
+      const paint = drawLines(view, all, meta.style.lines, { zAt, info: meta });
       // In the style's colours: where the CPU paints a line unlike the map under it, the GPU's
       // pixel is nearer the line's colour than the map without lines is (anti-aliased edges
       // and crossings of lines of different rules blend, so not always equal).
@@ -185,7 +188,8 @@ describe('lines of the cube (bgt_otterlo_400m)', () => {
       // Where they are, in black on white.
       await setLinesVisible(page, true);
       await blackOnWhite(page);
-      compare(label, await screenshot(page), drawLines(view, all, widePixels(meta.style.lines), { zAt, scaleAt: (zz) => scaleAtZ(meta, zz) }), hidden);
+      const wide = widePixels(meta.style.lines);
+      compare(label, await screenshot(page), drawLines(view, all, wide, { zAt, info: meta }), drawLines(view, all, wide, { zAt, info: meta }, { minHalfPx: 1.5 }), hidden);
       // Hidden, they leave nothing.
       await setLinesVisible(page, false);
       const blank = await screenshot(page);
@@ -203,7 +207,7 @@ describe('lines of the cube (bgt_otterlo_400m)', () => {
     const z = busiestZ(all, meta.zMax);
     const bbox = meta.extent;
     const view = fitView(meta.extent, W, H, bbox);
-    const paint = drawLines(view, all, meta.style.lines, { zAt: () => z, scaleAt: (zz) => scaleAtZ(meta, zz) });
+    const paint = drawLines(view, all, meta.style.lines, { zAt: () => z, info: meta });
     bed.page = await openMap(bed.browser, bed.server.url, { source: 'cube/', bbox: bbox.join(','), z, supersampling: 1 });
     const page = bed.page.page;
     assert.equal(await waitIdle(page), true);

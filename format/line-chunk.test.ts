@@ -69,12 +69,12 @@ describe('line chunk file', () => {
 
   test('segments with their z ranges: at every z, the segments of the polylines at that z', () => {
     const [road, brook] = lines() as [LineRecord, LineRecord];
-    const seg = (ax: number, ay: number, bx: number, by: number, z0: number, z1: number): object => ({ ax, ay, bx, by, z0, z1 });
+    const seg = (ax: number, ay: number, bx: number, by: number, z0: number, z1: number, path: number, a: number, b: number): object => ({ ax, ay, bx, by, z0, z1, path, a, b });
     assert.deepEqual(lineSegments(road), [
-      seg(181000.5, 457000.25, 181010.5, 457000.25, 10.5, 20.125),
-      seg(181000.5, 457000.25, 181020.5, 457000.25, 20.125, 40.25),
-      seg(181010.5, 457000.25, 181020.5, 457000.25, 10.5, 20.125),
-      seg(181010.5, 457000.25, 181010.5, 457030.75, 10.5, 40.25),
+      seg(181000.5, 457000.25, 181010.5, 457000.25, 10.5, 20.125, 0, 0, 1),
+      seg(181000.5, 457000.25, 181020.5, 457000.25, 20.125, 40.25, 0, 0, 2),
+      seg(181010.5, 457000.25, 181020.5, 457000.25, 10.5, 20.125, 0, 1, 2),
+      seg(181010.5, 457000.25, 181010.5, 457030.75, 10.5, 40.25, 1, 0, 1),
     ]);
     // A line whose vertices leave one after another, checked at many z against linePathsAtZ.
     const zig: LineRecord = {

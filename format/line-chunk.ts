@@ -226,6 +226,10 @@ export interface LineSegment {
   by: number;
   z0: number;
   z1: number;
+  /** Its polyline in the line, and the indices of a and b among that polyline's vertices. */
+  path: number;
+  a: number;
+  b: number;
 }
 
 /**
@@ -244,7 +248,7 @@ export function lineSegments(l: LineRecord): LineSegment[] {
       let between = l.zStart;
       for (let b = a + 1; b < n && between < la; b++) {
         const z1 = Math.min(la, leave[b]!, l.zEnd);
-        if (between < z1) out.push({ ax: p[2 * a]!, ay: p[2 * a + 1]!, bx: p[2 * b]!, by: p[2 * b + 1]!, z0: between, z1 });
+        if (between < z1) out.push({ ax: p[2 * a]!, ay: p[2 * a + 1]!, bx: p[2 * b]!, by: p[2 * b + 1]!, z0: between, z1, path: k, a, b });
         between = Math.max(between, leave[b]!);
       }
     }

@@ -2,7 +2,10 @@
 // Line pass: how much of this pixel the segment's band covers (a box filter of one pixel: full
 // within half a pixel inside the edge, none half a pixel out), where the slicing surface's z at
 // the pixel lies in the segment's z range (the rule of the CPU reference, draw-lines.ts, which
-// keeps a pixel whose centre lies within half the width). Premultiplied over the map.
+// keeps a pixel whose centre lies within half the width). The width is the rule's times the
+// smaller of the line's and the rule's ramp shares at that z (format/line-ramp.ts, rampShare),
+// so lines grow as they appear and shrink as they go; the segment's ends are where their
+// glides have taken them at that z (format/line-glide.ts). Premultiplied over the map.
 precision highp float;
 
 uniform sampler2D uSurface;  // R32F: z of the slicing surface per pixel
@@ -10,20 +13,42 @@ uniform sampler2D uSurface;  // R32F: z of the slicing surface per pixel
 flat in vec2 vA;
 flat in vec2 vB;
 flat in vec2 vZ;
+flat in vec4 vLineRamp;
+flat in vec4 vRuleRamp;
+flat in vec2 vAT;
+flat in vec2 vBT;
+flat in vec4 vGlide;
 flat in float vHalf;
 flat in vec4 vColour;
 in vec2 vP;
 
 out vec4 oColour;
 
+// z0, z0Full, z1Full, z1: 0 at the ends, 1 between the full points, linear in z between.
+float share(vec4 r, float z) {
+  float grow = r.y > r.x ? (z - r.x) / (r.y - r.x) : 1.0;
+  float shrink = r.w > r.z ? (r.w - z) / (r.w - r.z) : 1.0;
+  return clamp(min(grow, shrink), 0.0, 1.0);
+}
+
+// How far along its glide an end is at z (from, to): 0 before, 1 from `to` on (glideShare).
+float glide(float from, float to, float z) {
+  if (!(to > from)) return z >= to ? 1.0 : 0.0;
+  return clamp((z - from) / (to - from), 0.0, 1.0);
+}
+
 void main() {
   float z = texelFetch(uSurface, ivec2(gl_FragCoord.xy), 0).r;
   if (z < vZ.x || z >= vZ.y) discard;
-  vec2 ab = vB - vA;
+  float s = min(share(vLineRamp, z), share(vRuleRamp, z));
+  if (s <= 0.0) discard;
+  vec2 a = mix(vA, vAT, glide(vGlide.x, vGlide.y, z));
+  vec2 b = mix(vB, vBT, glide(vGlide.z, vGlide.w, z));
+  vec2 ab = b - a;
   float l2 = dot(ab, ab);
-  float t = l2 > 0.0 ? clamp(dot(vP - vA, ab) / l2, 0.0, 1.0) : 0.0;
-  float d = length(vP - (vA + t * ab));
-  float cover = clamp(vHalf + 0.5 - d, 0.0, 1.0) * vColour.a;
+  float t = l2 > 0.0 ? clamp(dot(vP - a, ab) / l2, 0.0, 1.0) : 0.0;
+  float d = length(vP - (a + t * ab));
+  float cover = clamp(vHalf * s + 0.5 - d, 0.0, 1.0) * vColour.a;
   if (cover <= 0.0) discard;
   oColour = vec4(vColour.rgb * cover, cover);
 }

@@ -3,15 +3,21 @@
 // half the rule's width plus a pixel (for anti-aliasing) out from the segment and past its ends,
 // so consecutive segments join round. A segment whose z range (intersected with its rule's
 // scale range) misses the slicing surface's z range over the view is moved out of clip space:
-// at a flat slice that is every segment not on the map, so they cost no fragments.
+// at a flat slice that is every segment not on the map, so they cost no fragments. The quad is
+// as wide as the line at full width, and long and wide enough to hold its ends wherever their
+// glides take them; line.frag places the ends and narrows the line by the line's and the rule's
+// ramps at the pixel's z (format/line-glide.ts, format/line-ramp.ts).
 precision highp float;
 precision highp int;
 
 layout(location = 0) in vec4 aEnds;  // a (xy) and b (zw), ground units from the chunk's origin
 layout(location = 1) in vec2 aZ;     // drawn for aZ.x <= z < aZ.y
 layout(location = 2) in uint aRule;  // column of uRules
+layout(location = 3) in vec4 aLineRamp;  // the line's z0, z0Full, z1Full, z1
+layout(location = 4) in vec4 aTargets;   // where a (xy) and b (zw) glide to (format/line-glide.ts)
+layout(location = 5) in vec4 aGlide;     // a glides from z x to y, b from z to w
 
-uniform sampler2D uRules;  // RGBA32F, one column per rule: fill; casing; (fill width, casing width mm, z range)
+uniform sampler2D uRules;  // RGBA32F, one column per rule: fill; casing; (fill width, casing width mm); its ramp
 uniform int uCasing;       // 1: this draw paints the casings, 0: the fills
 uniform float uPxPerMm;    // device pixels per millimetre on screen
 uniform vec2 uOffset;      // chunk origin - view centre, ground units
@@ -22,6 +28,11 @@ uniform vec2 uSliceRange;  // the slicing surface's z range over the view
 flat out vec2 vA;          // the segment's ends, device pixels from the view centre
 flat out vec2 vB;
 flat out vec2 vZ;          // the z range drawn
+flat out vec4 vLineRamp;
+flat out vec4 vRuleRamp;
+flat out vec2 vAT;         // the glides' targets, device pixels from the view centre
+flat out vec2 vBT;
+flat out vec4 vGlide;
 flat out float vHalf;      // half width, device pixels
 flat out vec4 vColour;
 out vec2 vP;               // this point, device pixels from the view centre
@@ -31,21 +42,29 @@ void main() {
   vec4 sizes = texelFetch(uRules, ivec2(rule, 2), 0);
   vColour = texelFetch(uRules, ivec2(rule, uCasing), 0);
   vHalf = 0.5 * (uCasing == 1 ? sizes.y : sizes.x) * uPxPerMm;
-  vZ = vec2(max(aZ.x, sizes.z), min(aZ.y, sizes.w));
+  vRuleRamp = texelFetch(uRules, ivec2(rule, 3), 0);
+  vLineRamp = aLineRamp;
+  vZ = vec2(max(aZ.x, vRuleRamp.x), min(aZ.y, vRuleRamp.w));
   if (vColour.a <= 0.0 || vHalf <= 0.0 || vZ.x >= vZ.y || vZ.y <= uSliceRange.x || vZ.x > uSliceRange.y) {
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
     return;
   }
   vA = (aEnds.xy + uOffset) / uRes;
   vB = (aEnds.zw + uOffset) / uRes;
+  vAT = (aTargets.xy + uOffset) / uRes;
+  vBT = (aTargets.zw + uOffset) / uRes;
+  vGlide = aGlide;
   vec2 ab = vB - vA;
   float len = length(ab);
   vec2 t = len > 0.0 ? ab / len : vec2(1.0, 0.0);
   vec2 n = vec2(-t.y, t.x);
+  // Along t from a and across n: the box of both ends and both targets.
+  vec2 at = vec2(dot(vAT - vA, t), dot(vAT - vA, n)), bt = vec2(dot(vBT - vA, t), dot(vBT - vA, n));
   float reach = vHalf + 1.0;
+  float lo = min(0.0, min(at.x, bt.x)) - reach, hi = max(len, max(at.x, bt.x)) + reach;
+  float left = max(0.0, max(at.y, bt.y)) + reach, right = min(0.0, min(at.y, bt.y)) - reach;
   // Strip order: a-left, a-right, b-left, b-right.
   int v = gl_VertexID;
-  vec2 end = v < 2 ? vA - t * reach : vB + t * reach;
-  vP = end + n * (v % 2 == 0 ? reach : -reach);
+  vP = vA + t * (v < 2 ? lo : hi) + n * (v % 2 == 0 ? left : right);
   gl_Position = vec4(vP / uHalfSize, 0.0, 1.0);
 }

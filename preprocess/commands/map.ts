@@ -5,7 +5,7 @@ import { fitView, rasterizeAt } from '../map/rasterize.js';
 import { pngWithLines } from '../map/png-with-lines.js';
 import { readTgap } from '../../format/tgap.js';
 import { scaleInfoOf } from '../../format/tgap-model.js';
-import { scaleAtZ, zAtScale } from '../../format/scale.js';
+import { zAtScale } from '../../format/scale.js';
 import { UsageError, viewArgs, viewOptionSpecs } from './args.js';
 import { classColours } from './style-colours.js';
 import { drawLines } from '../map/draw-lines.js';
@@ -38,7 +38,7 @@ export async function run(argv: string[]): Promise<void> {
   const style = parseStyle(tgap.meta.style, `${v.input}: its style`);
   const lines = v.lines && style.lineRules.length > 0 ? cubeLines(tgap, style) : [];
   const info = scaleInfoOf(tgap);
-  const linePaint = drawLines(view, lines, style.lineRules, { zAt: () => step, scaleAt: (z) => scaleAtZ(info, z) });
+  const linePaint = drawLines(view, lines, style.lineRules, { zAt: () => step, info });
   const png = pngWithLines(raster.ids, linePaint, style.lineRules, v.width, v.height, (f) => colours[tgap.faces[f]!.classIndex]);
   await writeFileAtomic(v.out, png);
   if (values.ids) await writeFileAtomic(values.ids, new Uint8Array(raster.ids.buffer));

@@ -1,6 +1,6 @@
 // ssc slice <dir> (--step s | --scale n) --size WxH [--bbox] [--surface spec] [--no-lines] --out slice.png [--ids ids.bin]
 import { parseArgs } from 'node:util';
-import { scaleAtZ, zAtScale } from '../../format/scale.js';
+import { zAtScale } from '../../format/scale.js';
 import { parseSurface, type Surface } from '../../format/slicing-surface.js';
 import { writeFileAtomic } from '../io/atomic-write.js';
 import { lineOfChunk, type LineRecord } from '../../format/line-chunk.js';
@@ -45,7 +45,7 @@ export async function run(argv: string[]): Promise<void> {
     const c = await cube.lineChunk(leaf);
     for (let i = 0; i < c.lineCount; i++) lines.push(lineOfChunk(c, i));
   }
-  const linePaint = drawLines(view, lines, meta.style.lines, { zAt: (p) => slicer.zs[p]!, scaleAt: (z) => scaleAtZ(meta, z) });
+  const linePaint = drawLines(view, lines, meta.style.lines, { zAt: (p) => slicer.zs[p]!, info: meta });
   await writeFileAtomic(v.out, pngByClass(slicer, linePaint, meta.style.lines, meta.style.classes.map((c) => c.color)));
   if (values.ids) await writeFileAtomic(values.ids, new Uint8Array(slicer.ids.buffer));
   process.stdout.write(`z ${base.toFixed(3)} (${surface.spec.kind}, ${zMin.toFixed(2)}..${zMax.toFixed(2)}): ${chunks} chunks, ${triangles} triangles, ${v.width}x${v.height} px\n`);

@@ -1,8 +1,11 @@
 // Which of the cube's lines is drawn at a pixel: the line pass's rule on the CPU. A segment
 // counts where the pixel centre lies within half its drawn width (the casing's, when wider) and
-// the slice's z there lies in the segment's z range and its rule's. Of several, the one drawn
-// last (on top) wins: fills after casings, chunks in the order drawn, segments in order.
+// the slice's z there lies in the segment's z range and its rule's, the width narrowed by the
+// line's and the rule's ramps at that z (format/line-ramp.ts), its ends where their glides have
+// taken them at that z (format/line-glide.ts). Of several, the one drawn last
+// (on top) wins: fills after casings, chunks in the order drawn, segments in order.
 import { distanceToSegment } from '../overlay/overlay-hit.js';
+import { lineWidthShare } from '../../../format/line-ramp.js';
 import { PIXEL_SIZE_MM } from '../../../format/pixel-size.js';
 import { pixelToGround, type ViewGeometry } from '../geometry/view.js';
 import type { GpuLineChunk } from '../render/gpu-line-chunk.js';
@@ -22,18 +25,16 @@ export function lineAt(chunks: readonly GpuLineChunk[], rules: readonly LineRule
   let bestFill = false;
   for (const c of chunks) {
     const p: [number, number] = [gx - c.originX, gy - c.originY];
-    const s = c.segments;
     for (let k = 0; k < c.segmentCount; k++) {
       const rule = rules[c.segmentRule[k]!];
-      if (!rule) continue;
-      const o = 6 * k;
-      const z0 = Math.max(s[o + 4]!, rule.zMin), z1 = Math.min(s[o + 5]!, rule.zMax);
-      if (!(z0 <= z && z < z1)) continue;
-      const fill = rule.fill[3] > 0 ? rule.widthMm : 0;
-      const casing = rule.casing[3] > 0 ? rule.casingWidthMm : 0;
+      if (!rule || !c.segmentAliveAt(k, z)) continue;
+      const share = lineWidthShare(c.lineRamp(c.segmentLine[k]!), rule.ramp, z);
+      const fill = rule.fill[3] > 0 ? rule.widthMm * share : 0;
+      const casing = rule.casing[3] > 0 ? rule.casingWidthMm * share : 0;
       const half = (Math.max(fill, casing) / 2) * pxPerMm;
       if (half <= 0) continue;
-      const d = distanceToSegment(p, [s[o]!, s[o + 1]!], [s[o + 2]!, s[o + 3]!]) / view.resolution;
+      const [ax, ay, bx, by] = c.segmentAt(k, z);
+      const d = distanceToSegment(p, [ax, ay], [bx, by]) / view.resolution;
       if (d > half) continue;
       // A fill is drawn over every casing; among fills (or among casings), the later on top.
       const isFill = d <= (fill / 2) * pxPerMm;

@@ -82,7 +82,7 @@ export async function featuresAt(ctx: PickContext, x: number, y: number, options
     const classIndex = chunk.lineClass[line]!, feature = chunk.lineFeature[line]!;
     const cls = style.classes[classIndex];
     const [properties] = feature >= 0 ? await source.attributes([feature]) : [null];
-    const [z0, z1] = chunk.lineZRange(line);
+    const { z0, z1 } = chunk.lineRamp(line);
     out.push({
       kind: 'line',
       classIndex,

@@ -1,16 +1,20 @@
 // A line chunk on the GPU: its segments as one instance buffer (each instance a quad around one
-// segment, line.vert) and each segment's style rule, bound in a vertex array object. The
-// segments and their lines stay on the CPU too, for picking.
+// segment, line.vert, with its line's ramp: format/line-ramp.ts) and each segment's style rule,
+// bound in a vertex array object. The segments and their lines stay on the CPU too, for picking.
 //
 // A slice meets only the segments alive at its z, a small part of a chunk's (each segment of
 // each simplified version of each line lives over a short z range). The buffers hold those that
 // meet a z window around the slice's range, chosen again when the slice leaves it: drawing a
 // frame then costs the segments near its z, not the whole chunk's.
 import type { Box3 } from '../../../format/cube-index.js';
+import { glideShare } from '../../../format/line-glide.js';
+import type { LineRamp } from '../../../format/line-ramp.js';
 import { payloadBytes, type LinePayload } from '../source/worker-protocol.js';
 
-/** Floats per segment: ax, ay, bx, by, z0, z1 (LinePayload.segments). */
-export const SEGMENT_FLOATS = 6;
+/** Floats per segment: ax, ay, bx, by, z0, z1, atx, aty, btx, bty, aFrom, aTo, bFrom, bTo (LinePayload.segments). */
+export const SEGMENT_FLOATS = 14;
+/** Floats per instance: a segment's, then its line's ramp (z0, z0Full, z1Full, z1). */
+const INSTANCE_FLOATS = SEGMENT_FLOATS + 4;
 
 export class GpuLineChunk {
   readonly kind = 'lines';
@@ -26,7 +30,7 @@ export class GpuLineChunk {
   readonly segmentRule: Uint16Array;
   readonly lineClass: Uint16Array;
   readonly lineFeature: Int32Array;
-  private readonly lineZ: Float32Array;
+  private readonly lineRamps: Float32Array;
   lastUsed = 0;
   private readonly vao: WebGLVertexArrayObject;
   private readonly buffers: WebGLBuffer[];
@@ -46,19 +50,21 @@ export class GpuLineChunk {
     this.segmentRule = c.segmentRule;
     this.lineClass = c.lineClass;
     this.lineFeature = c.lineFeature;
-    this.lineZ = c.lineZ;
+    this.lineRamps = c.lineRamp;
     const vao = gl.createVertexArray();
     gl.bindVertexArray(vao);
     const seg = gl.createBuffer();
     gl.bindBuffer(gl.ARRAY_BUFFER, seg);
-    gl.bufferData(gl.ARRAY_BUFFER, c.segments.byteLength, gl.DYNAMIC_DRAW);
-    const stride = 4 * SEGMENT_FLOATS;
-    gl.enableVertexAttribArray(0);
-    gl.vertexAttribPointer(0, 4, gl.FLOAT, false, stride, 0);
-    gl.vertexAttribDivisor(0, 1);
-    gl.enableVertexAttribArray(1);
-    gl.vertexAttribPointer(1, 2, gl.FLOAT, false, stride, 16);
-    gl.vertexAttribDivisor(1, 1);
+    const stride = 4 * INSTANCE_FLOATS;
+    gl.bufferData(gl.ARRAY_BUFFER, stride * c.segmentCount, gl.DYNAMIC_DRAW);
+    // Per instance, float attributes at these locations: the ends (a, b), their z range, where
+    // the ends glide to, when they glide, and the line's ramp (line.vert).
+    const floats: [location: number, size: number, offset: number][] = [[0, 4, 0], [1, 2, 16], [4, 4, 24], [5, 4, 40], [3, 4, 4 * SEGMENT_FLOATS]];
+    for (const [location, size, offset] of floats) {
+      gl.enableVertexAttribArray(location);
+      gl.vertexAttribPointer(location, size, gl.FLOAT, false, stride, offset);
+      gl.vertexAttribDivisor(location, 1);
+    }
     const rule = gl.createBuffer();
     gl.bindBuffer(gl.ARRAY_BUFFER, rule);
     gl.bufferData(gl.ARRAY_BUFFER, c.segmentRule.byteLength, gl.DYNAMIC_DRAW);
@@ -71,9 +77,23 @@ export class GpuLineChunk {
     this.buffers = [seg, rule];
   }
 
-  /** Line i is on the map for z0 <= z < z1. */
-  lineZRange(i: number): [number, number] {
-    return [this.lineZ[2 * i]!, this.lineZ[2 * i + 1]!];
+  /** Line i is on the map for z0 <= z < z1, full width between z0Full and z1Full. */
+  lineRamp(i: number): LineRamp {
+    const r = this.lineRamps;
+    return { z0: r[4 * i]!, z0Full: r[4 * i + 1]!, z1Full: r[4 * i + 2]!, z1: r[4 * i + 3]! };
+  }
+
+  /** Segment k's ends at z (relative to the origin), its vertices glided as far as they are then: [ax, ay, bx, by]. */
+  segmentAt(k: number, z: number): [number, number, number, number] {
+    const s = this.segments, o = SEGMENT_FLOATS * k;
+    const ga = glideShare(s[o + 10]!, s[o + 11]!, z), gb = glideShare(s[o + 12]!, s[o + 13]!, z);
+    return [s[o]! + (s[o + 6]! - s[o]!) * ga, s[o + 1]! + (s[o + 7]! - s[o + 1]!) * ga, s[o + 2]! + (s[o + 8]! - s[o + 2]!) * gb, s[o + 3]! + (s[o + 9]! - s[o + 3]!) * gb];
+  }
+
+  /** Whether segment k is drawn at z (by its own range, before its rule's). */
+  segmentAliveAt(k: number, z: number): boolean {
+    const o = SEGMENT_FLOATS * k;
+    return this.segments[o + 4]! <= z && z < this.segments[o + 5]!;
   }
 
   /**
@@ -87,9 +107,12 @@ export class GpuLineChunk {
     const s = this.segments, F = SEGMENT_FLOATS;
     const keep: number[] = [];
     for (let k = 0; k < this.segmentCount; k++) if (s[F * k + 4]! <= hi && s[F * k + 5]! > lo) keep.push(k);
-    const segs = new Float32Array(F * keep.length), rules = new Uint16Array(keep.length);
+    const I = INSTANCE_FLOATS, ramps = this.lineRamps;
+    const segs = new Float32Array(I * keep.length), rules = new Uint16Array(keep.length);
     keep.forEach((k, i) => {
-      segs.set(s.subarray(F * k, F * k + F), F * i);
+      segs.set(s.subarray(F * k, F * k + F), I * i);
+      const line = this.segmentLine[k]!;
+      segs.set(ramps.subarray(4 * line, 4 * line + 4), I * i + F);
       rules[i] = this.segmentRule[k]!;
     });
     gl.bindBuffer(gl.ARRAY_BUFFER, this.buffers[0]!);

@@ -150,13 +150,13 @@ export class ChunkScheduler {
     this.setStatus(e, 'requested');
     const leaf = e.leaf;
     const url = this.tree.url(leaf.file);
-    (isLineLeaf(leaf) ? fetchLineChunk(leaf, url, this.opts, controller.signal) : fetchChunk(leaf, url, this.opts, controller.signal))
+    (isLineLeaf(leaf) ? fetchLineChunk(leaf, url, this.tree.index.meta, this.opts, controller.signal) : fetchChunk(leaf, url, this.opts, controller.signal))
       .then(
         (chunk) => {
           if (e.controller !== controller) return; // aborted meanwhile
           e.controller = null;
           this.setStatus(e, 'received');
-          const transfer = chunk.kind === 'lines' ? [chunk.segments.buffer, chunk.segmentLine.buffer, chunk.segmentRule.buffer, chunk.lineClass.buffer, chunk.lineFeature.buffer, chunk.lineZ.buffer] : [chunk.buffer];
+          const transfer = chunk.kind === 'lines' ? [chunk.segments.buffer, chunk.segmentLine.buffer, chunk.segmentRule.buffer, chunk.lineClass.buffer, chunk.lineFeature.buffer, chunk.lineRamp.buffer] : [chunk.buffer];
           this.post({ type: 'chunk', chunk }, transfer as ArrayBuffer[]);
         },
         (err: unknown) => {

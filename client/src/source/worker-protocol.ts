@@ -89,24 +89,34 @@ export interface LinePayload {
   originX: number;
   originY: number;
   segmentCount: number;
-  /** Per segment: ax, ay, bx, by (relative to the origin), z0, z1: drawn for z0 <= z < z1. */
+  /**
+   * Per segment (14 floats): ax, ay, bx, by (relative to the origin), z0, z1: drawn for
+   * z0 <= z < z1; where a and b glide to (atx, aty, btx, bty) and when (aFrom, aTo, bFrom, bTo),
+   * as format/line-glide.ts says.
+   */
   segments: Float32Array;
   /** Per segment: the line it belongs to, and that line's style rule (format/line-style.ts). */
   segmentLine: Uint32Array;
   segmentRule: Uint16Array;
-  /** Per line: its class, its input feature (-1: none) and its z range (zStart, zEnd). */
+  /**
+   * Per line: its class, its input feature (-1: none) and its z range with its ramps (z0,
+   * z0Full, z1Full, z1: format/line-ramp.ts).
+   */
   lineClass: Uint16Array;
   lineFeature: Int32Array;
-  lineZ: Float32Array;
+  lineRamp: Float32Array;
   verified: boolean;
 }
 
 /** Either kind of chunk, as the map receives it. */
 export type Payload = ChunkPayload | LinePayload;
 
+/** Bytes a line segment takes on the GPU (gpu-line-chunk.ts): its 14 floats and its line's ramp (float32), and its rule (u16). */
+export const GPU_SEGMENT_BYTES = 4 * 18 + 2;
+
 /** Bytes a payload takes on the GPU. */
 export function payloadBytes(p: Payload): number {
-  return p.kind === 'lines' ? p.segments.byteLength + p.segmentRule.byteLength : p.vertexByteLength + p.indexSize * 3 * p.triangleCount;
+  return p.kind === 'lines' ? p.segmentCount * GPU_SEGMENT_BYTES : p.vertexByteLength + p.indexSize * 3 * p.triangleCount;
 }
 
 /** A face's record from its face page, with its input feature's attributes. */
