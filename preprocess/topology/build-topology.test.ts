@@ -252,6 +252,29 @@ test('an island: a face alone in another face\'s hole, no node on its ring', asy
   }
 });
 
+test('an outer ring passing 0.09 mm from vertices of its own hole builds: snapping does not fold it onto the hole', async (t) => {
+  //  (0,29.123) +._
+  //             |  '-._           A's sloped side runs from (30,20) to (0,29.123); two vertices of
+  //             |   /\ '-+ (30,20) its hole (filled by B) lie 0.076 and 0.092 mm below it, within
+  //             |  / B \ |         the precision (1 mm). Put into A's side as T-junctions they
+  //             |  +---+ |         folded A's outer ring onto its hole, and the input was refused
+  //      (0,0)  +--------+ (30,0)  as an overlap of A and B.
+  const outer: XY[] = [[0, 0], [30, 0], [30, 20], [0, 29.123]];
+  const hole: XY[] = [[10, 10], [14.005, 24.864], [16.001, 24.257], [20, 10]]; // clockwise
+  const side = (x: number): number => 29.123 - (9.123 * x) / 30;
+  const gap = (p: XY): number => (side(p[0]) - p[1]) * Math.cos(Math.atan(9.123 / 30));
+  assert.ok(gap(hole[1]!) > 0 && gap(hole[1]!) < 1e-4 && gap(hole[2]!) > 0 && gap(hole[2]!) < 1e-4, 'the hole comes within 0.1 mm of the side');
+  const c = writeCase(t, 'near-hole.geojson', collection([feature('A', polygon(outer, hole)), feature('B', polygon([...hole].reverse()), 'water')]));
+  const area = (r: XY[]): number => Math.abs(r.reduce((s, [x, y], i) => s + x * r[(i + 1) % r.length]![1] - r[(i + 1) % r.length]![0] * y, 0)) / 2;
+  const perimeter = (r: XY[]): number => r.reduce((s, [x, y], i) => s + Math.hypot(r[(i + 1) % r.length]![0] - x, r[(i + 1) % r.length]![1] - y), 0);
+  // Two rings without nodes, as for an island: nothing inserted, nothing merged.
+  await expectPartition(c, {
+    counts: { faces: 2, edges: 2, nodes: 2, vertices: 8 },
+    areas: [area(outer) - area(hole), area(hole)],
+    shared: { 'A|B': round(perimeter(hole)), 'A|out': round(perimeter(outer)) },
+  });
+});
+
 test('a MultiPolygon feature with two parts', async (t) => {
   //  +----+----+----+
   //  | A1 | B  | A2 |      A is one feature of two parts on either side of B.

@@ -47,11 +47,19 @@ export function orientRings(rings: Ring[], xs: Float64Array, ys: Float64Array, r
   }
 }
 
-/** Inserts every vertex that lies on a segment (within the precision) into that segment. */
+/**
+ * Inserts every vertex that lies on a segment (within the precision) into that segment; but a
+ * vertex of the segment's own face (another of its rings, or a part of the same ring that is
+ * not a spike's) only when exactly on it: pulled onto the segment from near by, it would fold
+ * the ring onto its own hole or onto itself (an outer ring passing 0.09 mm from a vertex of its
+ * hole is a valid polygon, not an overlap).
+ */
 function insertTJunctions(rings: Ring[], index: KDBush, alias: Int32Array, xs: Float64Array, ys: Float64Array, tol: number, repairs: TopologyRepairs): Ring[] {
   const tol2 = tol * tol;
   const out: Ring[] = [];
-  for (const r of rings) {
+  const own = new OwnVertices(rings, xs.length);
+  for (let ri = 0; ri < rings.length; ri++) {
+    const r = rings[ri]!;
     const ids = r.ids;
     const n = ids.length;
     let result: number[] | null = null;
@@ -76,6 +84,7 @@ function insertTJunctions(rings: Ring[], index: KDBush, alias: Int32Array, xs: F
           if (o !== 0) {
             // o is twice the triangle area: distance to the line is o / |ab|.
             if (tol === 0 || (o * o) / len2 > tol2) continue;
+            if (own.folds(a, b, v)) continue;
           }
           (inserts ??= []).push({ v, t });
         }
@@ -171,4 +180,60 @@ export function cleanRing(ids: Int32Array, repairs: TopologyRepairs): Int32Array
     } else break;
   }
   return changed ? Int32Array.from(out) : ids;
+}
+
+/**
+ * Which rings each vertex is on (built when first asked): tells whether a vertex near a segment
+ * belongs to the face the segment bounds, where moving it onto the segment folds a ring.
+ */
+class OwnVertices {
+  private start: Int32Array | null = null;
+  /** Per vertex, its (ring, position) pairs: ring indices and positions interleaved. */
+  private list: Int32Array | null = null;
+
+  constructor(private readonly rings: readonly Ring[], private readonly nv: number) {}
+
+  /**
+   * True when v is on a ring of a face whose ring has the segment a-b: v on another ring of
+   * that face, or on the same ring other than next to a or b (a spike's tip, which cleanRing
+   * removes after the insertion, is not a fold).
+   */
+  folds(a: number, b: number, v: number): boolean {
+    const { rings } = this;
+    const { start, list } = this.build();
+    for (let i = start[a]!; i < start[a + 1]!; i += 2) {
+      const ri = list[i]!, p = list[i + 1]!;
+      const ids = rings[ri]!.ids;
+      const n = ids.length;
+      const next = ids[(p + 1) % n]!, prev = ids[(p + n - 1) % n]!;
+      if (next !== b && prev !== b) continue;
+      // Ring ri has the segment a-b: its neighbours around it are the spike's possible tips.
+      const [p0, p1] = next === b ? [p, (p + 1) % n] : [(p + n - 1) % n, p];
+      const beside = (q: number): boolean => ids[(p0 + n - 1) % n] === q || ids[(p1 + 1) % n] === q;
+      for (let k = start[v]!; k < start[v + 1]!; k += 2) {
+        const rj = list[k]!;
+        if (rings[rj]!.face !== rings[ri]!.face) continue;
+        if (rj !== ri || !beside(v)) return true;
+      }
+    }
+    return false;
+  }
+
+  private build(): { start: Int32Array; list: Int32Array } {
+    if (this.start && this.list) return { start: this.start, list: this.list };
+    const start = new Int32Array(this.nv + 1);
+    for (const r of this.rings) for (const v of r.ids) start[v + 1]! += 2;
+    for (let v = 0; v < this.nv; v++) start[v + 1]! += start[v]!;
+    const fill = start.slice(0, this.nv);
+    const list = new Int32Array(start[this.nv]!);
+    this.rings.forEach((r, ri) => {
+      r.ids.forEach((v, p) => {
+        list[fill[v]!++] = ri;
+        list[fill[v]!++] = p;
+      });
+    });
+    this.start = start;
+    this.list = list;
+    return { start, list };
+  }
 }
