@@ -22,7 +22,8 @@ export const usage = `ssc build <input|file.tgap> --out <dir> [options]
                             gradual (tilted surfaces; --smooth says so explicitly)
   --quiet                   no progress on stderr
 Other ssc generalize options (--class-property, --crs, --layer, --precision, --base-scale,
---allow-holes, --group, --problems, --max-problems, --drop-duplicates) apply to polygon input. The directory is replaced only when the build succeeds.`;
+--sliver-width, --refuse-slivers, --allow-holes, --group, --problems, --max-problems,
+--drop-duplicates) apply to polygon input. The directory is replaced only when the build succeeds.`;
 
 async function isTgap(file: string): Promise<boolean> {
   try {

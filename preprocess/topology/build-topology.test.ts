@@ -37,7 +37,7 @@ async function generalize(c: Case, out: string, ...extra: string[]): Promise<Run
 }
 
 const NO_REPAIRS: TopologyRepairs = {
-  closedRings: 0, duplicatePoints: 0, reorientedRings: 0, tJunctions: 0, snappedPoints: 0, mergedPoints: 0, spikes: 0,
+  closedRings: 0, duplicatePoints: 0, reorientedRings: 0, tJunctions: 0, snappedPoints: 0, mergedPoints: 0, spikes: 0, slivers: 0,
 };
 
 interface Counts {
@@ -412,6 +412,85 @@ test('zero-width spikes are removed and counted', async (t) => {
 });
 
 // ---------------------------------------------------------------------------------------------
+// Slivers: the style's base scale is 1:1,000, so the sliver width is 0.05 x 0.28 mm x 1,000 = 1.4 cm.
+
+//  (0,10) +--------++-----------------+ (20,10)
+//         |        ||        C        |        S: x 10..10.005, 5 mm wide, between A (10 along it),
+//         |   A    |S      +----------+ 6.004  B (6) and C (4).
+//         |        ||      | S2  (4 mm)  6     S2: x 15..20, y 6..6.004, between B (5 along it)
+//         |        ||  B              |        and C (5 and its 4 mm end at x = 15).
+//  (0,0)  +--------++-----------------+ (20,0)
+function slivers(): Json {
+  return collection([
+    feature('A', polygon(rect(0, 0, 10, 10))),
+    feature('S', polygon([[10, 0], [10.005, 0], [10.005, 6], [10.005, 10], [10, 10]])),
+    feature('B', polygon([[10.005, 0], [20, 0], [20, 6], [15, 6], [10.005, 6]])),
+    feature('S2', polygon([[15, 6], [20, 6], [20, 6.004], [15, 6.004]])),
+    feature('C', polygon([[10.005, 6], [15, 6], [15, 6.004], [20, 6.004], [20, 10], [10.005, 10]])),
+  ]);
+}
+
+test('slivers thinner than the sliver width are dissolved into the neighbour with the longest shared boundary, and counted', async (t) => {
+  const c = writeCase(t, 'slivers.geojson', slivers());
+  // S goes to A, S2 to C: three faces. A now reaches x = 10.005; C has S2's strip.
+  // Vertices: A's four corners, (10,0) and (10,10) now on its outside boundary; (10.005, 0 / 6 /
+  // 10); (20, 0 / 6 / 6.004 / 10); (15,6), where B meets C. (15,6.004) bounded only S2. Nodes:
+  // the four points where three of A, B, C and the outside meet.
+  const tg = await expectPartition(c, {
+    counts: { faces: 3, edges: 6, nodes: 4, vertices: 12 },
+    repairs: { slivers: 2 },
+    areas: [10.005 * 10, 9.995 * 6, 9.995 * 4],
+    shared: { 'A|B': 6, 'A|C': 4, 'B|C': 9.995, 'A|out': round(10.005 * 2 + 10), 'B|out': 15.995, 'C|out': 13.995 },
+  });
+  assert.deepEqual(tg.meta.attributes.map((a) => a.id), ['A', 'B', 'C'], 'the slivers\' features are gone, the others keep their attributes');
+  const r = await generalize(c, 'again.tgap');
+  assert.match(r.stdout, /^repairs: slivers 2$/m, 'the report counts them');
+});
+
+test('--refuse-slivers names every sliver in one run, and nothing is written', async (t) => {
+  const c = writeCase(t, 'slivers.geojson', slivers());
+  const r = await generalize(c, 'out.tgap', '--refuse-slivers');
+  assert.equal(r.code, 1);
+  assert.equal(r.stdout, '');
+  // The thinnest first: S2 is 2 x 0.02 / 10.008 = 0.0039968 wide, S 2 x 0.05 / 20.01 = 0.0049975.
+  assert.deepEqual(r.stderr.trimEnd().split('\n').slice(0, 4), [
+    'ssc generalize: slivers.geojson: 2 problems; the input is refused:',
+    '  sliver (2):',
+    '    feature #3 (id "S2"), at (1015, 2006): has a part 0.00400 wide (2 x area / perimeter), under the sliver width 0.0140 (without --refuse-slivers it is dissolved into feature #4 (id "C"))',
+    '    feature #1 (id "S"), at (1010, 2000): has a part 0.00500 wide (2 x area / perimeter), under the sliver width 0.0140 (without --refuse-slivers it is dissolved into feature #0 (id "A"))',
+  ]);
+  assert.deepEqual(readdirSync(c.dir).sort(), c.files, 'nothing written');
+  // A sliver width under theirs: no slivers, the input is taken as it is.
+  await expectPartition(c, {
+    counts: { faces: 5, edges: 12, nodes: 8, vertices: 13 },
+    areas: [100, 0.05, 9.995 * 6, 0.02, 9.995 * 4 - 0.02],
+    shared: {
+      'A|S': 10, 'B|S': 6, 'C|S': 4, 'B|C': 4.995, 'B|S2': 5, 'C|S2': 5.004,
+      'A|out': 30, 'S|out': 0.01, 'B|out': 15.995, 'S2|out': 0.004, 'C|out': 13.991,
+    },
+  }, '--sliver-width', '0.003');
+});
+
+test('a sliver narrower than the precision, which the snapping collapses, is left out and counted', async (t) => {
+  // S is 0.4 mm wide between A and B: snapped to the millimetre it has two distinct points.
+  const doc = collection([
+    feature('A', polygon(rect(0, 0, 10, 10))),
+    feature('S', polygon(rect(10, 0, 10.0004, 10))),
+    feature('B', polygon(rect(10.0004, 0, 20, 10))),
+  ]);
+  const c = writeCase(t, 'collapsed.geojson', doc);
+  // 4 points snapped (x = 10.0004 of S and B), 2 repeated in S's ring; B now starts at x = 10.
+  await expectPartition(c, {
+    counts: { faces: 2, edges: 3, nodes: 2, vertices: 6 },
+    repairs: { snappedPoints: 4, duplicatePoints: 2, slivers: 1 },
+    areas: [100, 100],
+    shared: { 'A|B': 10, 'A|out': 30, 'B|out': 30 },
+  });
+  // Without slivers (--sliver-width 0) it is refused as before.
+  await expectRefusal(writeCase(t, 'collapsed.geojson', doc), { feature: [1, 'S'], message: /has a ring with fewer than 3 distinct points/, location: isAt(10, 0) }, '--sliver-width', '0');
+});
+
+// ---------------------------------------------------------------------------------------------
 // Refusals: exit code 1, the feature and the place named, nothing written.
 
 test('overlapping faces whose sides cross are refused', async (t) => {
@@ -693,7 +772,7 @@ test('longitude/latitude without a crs member is projected to its UTM zone', asy
   near(x0 - 500000, 0.9996 * (a / Math.sqrt(w)) * Math.cos(lat) * ((2.85 * Math.PI) / 180), 'easting from the central meridian');
   assert.ok(y0 > 5.7e6 && y0 < 5.8e6, `northing ${y0}`);
   const { snappedPoints, ...rest } = tg.meta.repairs;
-  assert.deepEqual(rest, { closedRings: 0, duplicatePoints: 0, reorientedRings: 0, tJunctions: 0, mergedPoints: 0, spikes: 0 });
+  assert.deepEqual(rest, { closedRings: 0, duplicatePoints: 0, reorientedRings: 0, tJunctions: 0, mergedPoints: 0, spikes: 0, slivers: 0 });
   assert.ok(snappedPoints !== undefined && snappedPoints <= 8, 'at most the 8 ring points were snapped to the millimetre grid');
 });
 

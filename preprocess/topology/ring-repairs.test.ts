@@ -4,7 +4,7 @@ import assert from 'node:assert/strict';
 import { cleanRing, repairRings } from './ring-repairs.js';
 import type { Ring, TopologyRepairs } from './topology-types.js';
 
-const noRepairs = (): TopologyRepairs => ({ closedRings: 0, duplicatePoints: 0, reorientedRings: 0, tJunctions: 0, snappedPoints: 0, mergedPoints: 0, spikes: 0 });
+const noRepairs = (): TopologyRepairs => ({ closedRings: 0, duplicatePoints: 0, reorientedRings: 0, tJunctions: 0, snappedPoints: 0, mergedPoints: 0, spikes: 0, slivers: 0 });
 
 test('cleanRing drops repeated points and zero-width spikes, also across the closing point', () => {
   const cases: { ids: number[]; out: number[]; duplicatePoints: number; spikes: number }[] = [
@@ -35,8 +35,8 @@ const ys = Float64Array.of(0, 0, 2, 2, 0, 2, 1, 1.9996);
 
 test('repairRings merges points closer than the precision and puts T-junctions into the segment they lie on', () => {
   const rings: Ring[] = [
-    { face: 1, outer: true, ids: Int32Array.of(0, 1, 7, 3) },
-    { face: 2, outer: true, ids: Int32Array.of(1, 4, 5, 2, 6) },
+    { face: 1, outer: true, ids: Int32Array.of(0, 1, 7, 3), part: 0, ring: 0 },
+    { face: 2, outer: true, ids: Int32Array.of(1, 4, 5, 2, 6), part: 0, ring: 0 },
   ];
   const r = noRepairs();
   const out = repairRings(rings, xs, ys, 0.001, r);
@@ -49,8 +49,8 @@ test('repairRings merges points closer than the precision and puts T-junctions i
 
 test('with precision 0 nothing is merged, and only points exactly on a segment are T-junctions', () => {
   const rings: Ring[] = [
-    { face: 1, outer: true, ids: Int32Array.of(0, 1, 2, 3) },
-    { face: 2, outer: true, ids: Int32Array.of(1, 4, 5, 7, 2, 6) },
+    { face: 1, outer: true, ids: Int32Array.of(0, 1, 2, 3), part: 0, ring: 0 },
+    { face: 2, outer: true, ids: Int32Array.of(1, 4, 5, 7, 2, 6), part: 0, ring: 0 },
   ];
   const r = noRepairs();
   const out = repairRings(rings, xs, ys, 0, r);

@@ -27,15 +27,22 @@ export function repairRings(rawRings: Ring[], xs: Float64Array, ys: Float64Array
   return rings;
 }
 
-/** Refuses rings of fewer than 3 points or no area; turns outer rings counterclockwise and holes clockwise. */
-export function orientRings(rings: Ring[], xs: Float64Array, ys: Float64Array, repairs: TopologyRepairs, refusal: Refusal): void {
+/**
+ * Turns outer rings counterclockwise and holes clockwise. A ring of fewer than 3 points or no
+ * area is refused, unless `sliver` takes it (a sliver the snapping collapsed); both are
+ * returned, to be left out.
+ */
+export function orientRings(rings: Ring[], xs: Float64Array, ys: Float64Array, repairs: TopologyRepairs, refusal: Refusal, sliver: (r: Ring) => boolean = () => false): Ring[] {
+  const collapsed: Ring[] = [];
   for (const r of rings) {
     const distinct = new Set(r.ids).size;
+    const a2 = distinct < 3 ? 0 : ringArea2(r.ids, xs, ys);
+    if (a2 === 0) collapsed.push(r);
+    if (a2 === 0 && sliver(r)) continue;
     if (distinct < 3) {
       refusal.note('ring', `has a ${r.outer ? 'ring' : 'hole'} with fewer than 3 distinct points`, r.face, xs[r.ids[0]!], ys[r.ids[0]!]);
       continue;
     }
-    const a2 = ringArea2(r.ids, xs, ys);
     if (a2 === 0) {
       refusal.note('ring', `has a ${r.outer ? 'ring' : 'hole'} of zero area`, r.face, xs[r.ids[0]!], ys[r.ids[0]!]);
       continue;
@@ -45,6 +52,7 @@ export function orientRings(rings: Ring[], xs: Float64Array, ys: Float64Array, r
       repairs.reorientedRings++;
     }
   }
+  return collapsed;
 }
 
 /**
@@ -99,7 +107,7 @@ function insertTJunctions(rings: Ring[], index: KDBush, alias: Int32Array, xs: F
         result.push(b);
       }
     }
-    out.push(result ? { face: r.face, outer: r.outer, ids: Int32Array.from(result) } : r);
+    out.push(result ? { ...r, ids: Int32Array.from(result) } : r);
   }
   return out;
 }

@@ -20,7 +20,7 @@ export function snapPoints(features: readonly InputFeature[], precision: number,
   const rings: Ring[] = [];
   features.forEach((f, fi) => {
     const face = fi + 1;
-    for (const poly of f.polygons) {
+    f.polygons.forEach((poly, part) => {
       poly.forEach((r, ri) => {
         const ids: number[] = [];
         for (let i = 0; i < r.length; i += 2) {
@@ -37,9 +37,9 @@ export function snapPoints(features: readonly InputFeature[], precision: number,
           ids.pop();
           repairs.duplicatePoints++;
         }
-        rings.push({ face, outer: ri === 0, ids: Int32Array.from(ids) });
+        rings.push({ face, outer: ri === 0, ids: Int32Array.from(ids), part, ring: ri });
       });
-    }
+    });
   });
   const nv = hash.size;
   return { rings, xs: hash.xs.subarray(0, nv), ys: hash.ys.subarray(0, nv) };
