@@ -52,7 +52,7 @@ export async function run(argv: string[]): Promise<void> {
       `repairs: ${repairs}`,
       ...(r.topology.droppedDuplicates ? [`dropped duplicate polygons: ${r.topology.droppedDuplicates}`] : []),
       ...(r.topology.holes.length ? [`holes in the domain (enclaves): ${r.topology.holes.length}`] : []),
-      `tGAP: ${r.generalize.steps} steps (${r.generalize.merges} merges, ${r.generalize.splits} splits, ${r.generalize.reemits} faces redrawn), ${r.generalize.facesLeft} face(s) left, ${r.generalize.removedVertices} vertices removed by simplification`,
+      `tGAP: ${r.generalize.steps} steps (${r.generalize.merges} merges${r.generalize.intoOutside ? `, ${r.generalize.intoOutside} of them faces without a neighbour leaving the map` : ''}, ${r.generalize.splits} splits, ${r.generalize.reemits} faces redrawn), ${r.generalize.facesLeft} face(s) left, ${r.generalize.removedVertices} vertices removed by simplification`,
       `scale: 1:${Math.round(tgap.meta.baseScale)} at step 0`,
       `wrote ${values.out} (${bytes.length} bytes) in ${((performance.now() - t0) / 1000).toFixed(1)} s`,
     ].join('\n') + '\n',
