@@ -12,9 +12,9 @@ import { TGAP_VERSION } from '../format/tgap.js';
 import { buildTopology, type Topology } from './topology/build-topology.js';
 
 /**
- * The default sliver width, in pixels of the resolution (0.28 mm) at the base scale: 1.4 cm
- * on the ground at 1:1,000. A twentieth of a pixel is never seen at any scale, and is well
- * above the noise of real data (a millimetre or less) and below any real feature's width.
+ * The default sliver width, in resolution pixels (0.28 mm) at the base scale: 1.4 cm on the
+ * ground at 1:1,000. A twentieth of a pixel is never seen at any scale, and is well above the
+ * noise of real data (a millimetre or less) and below any real feature's width.
  */
 export const SLIVER_PX = 0.05;
 import { findDuplicateFeatures } from './topology/duplicate-features.js';
@@ -38,7 +38,7 @@ export interface PipelineOptions {
   maxProblems?: number;
   /** The later of two exactly equal polygons is dropped (counted), not refused. */
   dropDuplicates?: boolean;
-  /** Parts thinner than this (CRS units) are slivers (default: SLIVER_PX pixels at the base scale; 0: none). */
+  /** Parts thinner than this (CRS units) are slivers (default: SLIVER_PX pixel at the base scale; 0: none). */
   sliverWidth?: number;
   /** Slivers are refused, every one named, instead of dissolved into a neighbour. */
   refuseSlivers?: boolean;
@@ -111,7 +111,8 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
   const allowHoles = opts.allowHoles ?? style.allowHoles;
   // The base scale before the topology: it sets the sliver width.
   const baseScale = opts.baseScale ?? (style.baseScale > 0 ? style.baseScale : autoBaseScale(raw.features, style.resolutionMm));
-  const sliverWidth = opts.sliverWidth ?? (SLIVER_PX * style.resolutionMm * baseScale) / 1000;
+  // Rounded to 12 digits: the tGAP's options say 0.014, not 0.014000000000000002.
+  const sliverWidth = opts.sliverWidth ?? Number(((SLIVER_PX * style.resolutionMm * baseScale) / 1000).toPrecision(12));
   const topo = buildTopology(raw.features, {
     precision, file: raw.file, inputRepairs: raw.repairs, allowHoles, problems, sliverWidth, refuseSlivers: opts.refuseSlivers ?? false,
   });
