@@ -6,6 +6,7 @@ import { generalizeFile } from '../pipeline.js';
 import { encodeTgap } from '../../format/tgap.js';
 import { generalizeOptionSpecs, pipelineOptions, UsageError } from './args.js';
 import { problemsUsage, withProblemsFile } from './problems-file.js';
+import { repairsLine } from './repairs-line.js';
 
 export const usage = `ssc generalize <input> --out <file.tgap> [options]
   input: GeoJSON (.geojson, .json), TopoJSON (.topojson), GeoPackage (.gpkg), Shapefile (.shp,
@@ -43,13 +44,12 @@ export async function run(argv: string[]): Promise<void> {
   const bytes = encodeTgap(tgap);
   await writeFileAtomic(values.out, bytes);
   const r = report;
-  const repairs = Object.entries(r.topology.repairs).filter(([, n]) => n > 0).map(([k, n]) => `${k} ${n}`).join(', ') || 'none';
   process.stdout.write(
     [
       ...(r.noStyle ?? []),
       `input: ${tgap.meta.source} (${tgap.meta.crs}${tgap.meta.projectedFrom ? `, projected from ${tgap.meta.projectedFrom}` : ''})`,
       `topology: ${r.topology.faceCount} faces, ${r.topology.edges} edges, ${r.topology.nodeCount} nodes, ${r.topology.vertexCount} vertices`,
-      `repairs: ${repairs}`,
+      repairsLine({ ...r.topology.repairs }),
       ...(r.topology.droppedDuplicates ? [`dropped duplicate polygons: ${r.topology.droppedDuplicates}`] : []),
       ...(r.topology.holes.length ? [`holes in the domain (enclaves): ${r.topology.holes.length}`] : []),
       `tGAP: ${r.generalize.steps} steps (${r.generalize.merges} merges${r.generalize.intoOutside ? `, ${r.generalize.intoOutside} of them faces without a neighbour leaving the map` : ''}, ${r.generalize.splits} splits, ${r.generalize.reemits} faces redrawn), ${r.generalize.facesLeft} face(s) left, ${r.generalize.removedVertices} vertices removed by simplification`,
