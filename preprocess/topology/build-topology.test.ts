@@ -474,7 +474,7 @@ test('--refuse-slivers names every sliver in one run, and nothing is written', a
   }, '--sliver-width', '0.003');
 });
 
-test('a sliver narrower than the precision, which the snapping collapses, is left out and counted', async (t) => {
+test('a sliver narrower than the precision is left out before the snapping, and counted', async (t) => {
   // S is 0.4 mm wide between A and B: snapped to the millimetre it has two distinct points.
   const doc = collection([
     feature('A', polygon(rect(0, 0, 10, 10))),
@@ -482,15 +482,49 @@ test('a sliver narrower than the precision, which the snapping collapses, is lef
     feature('B', polygon(rect(10.0004, 0, 20, 10))),
   ]);
   const c = writeCase(t, 'collapsed.geojson', doc);
-  // 4 points snapped (x = 10.0004 of S and B), 2 repeated in S's ring; B now starts at x = 10.
+  // S is 2 x 0.004 / 20.0008 = 0.0004 wide, under the precision: left out. B's 2 points at
+  // x = 10.0004 are snapped to x = 10, where A's side is.
   await expectPartition(c, {
     counts: { faces: 2, edges: 3, nodes: 2, vertices: 6 },
-    repairs: { snappedPoints: 4, duplicatePoints: 2, slivers: 1 },
+    repairs: { snappedPoints: 2, slivers: 1 },
     areas: [100, 100],
     shared: { 'A|B': 10, 'A|out': 30, 'B|out': 30 },
   });
   // Without slivers (--sliver-width 0) it is refused as before.
   await expectRefusal(writeCase(t, 'collapsed.geojson', doc), { feature: [1, 'S'], message: /has a ring with fewer than 3 distinct points/, location: isAt(10, 0) }, '--sliver-width', '0');
+});
+
+test('a noisy sliver under a millimetre along a sloped boundary is dissolved, and the area kept', async (t) => {
+  // A boundary 30 long at 40 degrees between A (left of it) and B; S runs along it, 0.4 to
+  // 0.8 mm wide, with 26 points a side that wobble by up to 0.2 mm and are spaced unevenly,
+  // as coordinate noise leaves them. Snapped to the millimetre its sides cross each other.
+  const [dx, dy] = [Math.cos(0.7), Math.sin(0.7)], [nx, ny] = [-dy, dx];
+  const along = (i: number, k: number, side: number): XY => {
+    const t = i === 0 || i === 25 ? 1.2 * i : 1.2 * i + 0.3 * Math.sin(i * k);
+    const off = side * (0.0003 + 0.0001 * Math.sin(i * 1.7) + (i === 0 || i === 25 ? 0 : 0.0001 * Math.cos(i * k)));
+    return [10 + dx * t + nx * off, 10 + dy * t + ny * off];
+  };
+  const left = Array.from({ length: 26 }, (_, i) => along(i, 2.3, 1));
+  const right = Array.from({ length: 26 }, (_, i) => along(i, 3.1, -1));
+  const far = (p: XY, s: number): XY => [p[0] + s * 20 * nx, p[1] + s * 20 * ny];
+  const A: XY[] = [...left, far(left[25]!, 1), far(left[0]!, 1)];
+  const B: XY[] = [...[...right].reverse(), far(right[0]!, -1), far(right[25]!, -1)];
+  const S: XY[] = [...left, ...[...right].reverse()];
+  const c = writeCase(t, 'noisy.geojson', collection([feature('A', polygon(A)), feature('S', polygon(S)), feature('B', polygon(B), 'water')]));
+  // Without slivers (--sliver-width 0) the snapping makes S cross itself: refused.
+  const kept = await generalize(c, 'kept.tgap', '--sliver-width', '0');
+  assert.match(kept.stderr, /feature #1 \(id "S"\), at \([\d., ]+\): is self-intersecting/);
+  const r = await generalize(c, 'out.tgap');
+  assert.equal(r.code, 0, r.stderr);
+  const tg = await readTgap(r.out);
+  assert.equal(tg.meta.repairs.slivers, 1);
+  assert.deepEqual(tg.meta.attributes.map((a) => a.id), ['A', 'B']);
+  // A and B now cover what A, S and B covered, up to the snapping: half a millimetre along
+  // the 4 x 20 + 2 x 30 of outside boundary at most.
+  const area = (r: XY[]): number => Math.abs(r.reduce((s, [x, y], i) => s + x * r[(i + 1) % r.length]![1] - r[(i + 1) % r.length]![0] * y, 0)) / 2;
+  const input = area(A) + area(S) + area(B);
+  const output = (tg.faces[1]!.area2 + tg.faces[2]!.area2) / 2;
+  assert.ok(Math.abs(output - input) < 0.0005 * 140, `area ${output}, input ${input}`);
 });
 
 // ---------------------------------------------------------------------------------------------

@@ -10,7 +10,7 @@ import { checkCrossings, checkOutside } from './partition-checks.js';
 import { Refusal } from './refusal.js';
 import { orientRings, repairRings } from './ring-repairs.js';
 import { checkRingSelfCrossings } from './ring-self-crossings.js';
-import { dissolveSlivers, hadArea, noteCollapsed, type SliverOptions } from './slivers.js';
+import { dissolveSlivers, fillSliverGaps, hadArea, noteLeftOut, partBox, partsNarrowerThan, type SliverOptions } from './slivers.js';
 import { snapPoints } from './snap-points.js';
 import type { Ring, Topology, TopologyOptions, TopologyRepairs } from './topology-types.js';
 import { traceEdges } from './trace-edges.js';
@@ -29,11 +29,14 @@ export function buildTopology(features: InputFeature[], opts: TopologyOptions): 
     slivers: 0,
   };
   const refusal = new Refusal(features, opts.problems ?? new ProblemList(opts.file));
+  const slivers: SliverOptions | null = (opts.sliverWidth ?? 0) > 0 ? { width: opts.sliverWidth!, refuse: opts.refuseSlivers ?? false, precision: opts.precision } : null;
+  // Parts narrower than the precision are slivers the snapping cannot keep: left out before it.
+  const narrow = slivers ? partsNarrowerThan(features, opts.precision) : [];
+  const skip = new Set(narrow.map((p) => `${p.face}:${p.part}`));
   // Points: snapped to the grid, one id per distinct point.
-  const { rings: rawRings, xs, ys } = snapPoints(features, opts.precision, repairs);
+  const { rings: rawRings, xs, ys } = snapPoints(features, opts.precision, repairs, (face, part) => skip.has(`${face}:${part}`));
   // Rings: near points merged, T-junctions inserted, outer rings counterclockwise, holes clockwise.
   const repaired = repairRings(rawRings, xs, ys, opts.precision, repairs);
-  const slivers: SliverOptions | null = (opts.sliverWidth ?? 0) > 0 ? { width: opts.sliverWidth!, refuse: opts.refuseSlivers ?? false, precision: opts.precision } : null;
   // Rings the snapping collapsed are slivers (when slivers are dissolved) unless the input had them so.
   const isSliver = (r: Ring): boolean => slivers !== null && hadArea(features, r);
   const degenerate = new Set(orientRings(repaired, xs, ys, repairs, refusal, isSliver));
@@ -47,11 +50,16 @@ export function buildTopology(features: InputFeature[], opts: TopologyOptions): 
   refusal.check();
   checkCrossings(he, xs, ys, refusal);
   refusal.check();
+  // Thin gaps where slivers were left out go to a neighbour.
+  if (slivers) {
+    const boxes = [...narrow.map((p) => partBox(features, p.face, p.part, opts.precision)), ...collapsed.map((r) => partBox(features, r.face, r.part, opts.precision))];
+    he = fillSliverGaps(he, xs, ys, slivers.width, boxes);
+  }
   const holes = checkOutside(he, xs, ys, refusal, opts.allowHoles ?? false);
   refusal.check();
   // Parts thinner than the sliver width go to their neighbours (or are all named).
   if (slivers) {
-    noteCollapsed(collapsed, features, slivers, refusal, repairs);
+    noteLeftOut(narrow, collapsed, features, slivers, refusal, repairs);
     he = dissolveSlivers(he, rings, xs, ys, slivers, refusal, repairs);
     refusal.check();
   }

@@ -3,9 +3,10 @@
 // sliver width is dissolved into the neighbour with the longest shared boundary, and a ring
 // the snapping to the precision collapsed is left out; each is counted, or, when slivers are
 // refused, named with its feature and place, all of them in one run.
-import { ringArea2, ringArea2Flat, ringLength } from '../geom/ring.js';
+import { ringArea2, ringArea2Flat, ringLength, ringPerimeterFlat } from '../geom/ring.js';
 import type { InputFeature } from '../io/read-input.js';
 import { withFaces, type HalfEdges } from './half-edges.js';
+import { outsideCycles } from './partition-checks.js';
 import type { Refusal } from './refusal.js';
 import type { Ring, TopologyRepairs } from './topology-types.js';
 
@@ -17,24 +18,108 @@ export interface SliverOptions {
   precision: number;
 }
 
+/** A part of a feature (polygon `part` of face `face`) and its width, 2 x area / perimeter. */
+export interface ThinPart {
+  face: number;
+  part: number;
+  width: number;
+}
+
+/**
+ * The parts of the features narrower than the precision, from the input's coordinates: the
+ * snapping to the precision cannot keep them (it folds their sides onto each other, and they
+ * cross), so they are left out before it, and their neighbours, within the precision of each
+ * other, meet.
+ */
+export function partsNarrowerThan(features: readonly InputFeature[], precision: number): ThinPart[] {
+  const out: ThinPart[] = [];
+  if (!(precision > 0)) return out;
+  features.forEach((f, fi) => {
+    f.polygons.forEach((rings, part) => {
+      let area2 = 0, perimeter = 0;
+      rings.forEach((ring, i) => {
+        const a2 = Math.abs(ringArea2Flat(ring));
+        area2 += i === 0 ? a2 : -a2;
+        perimeter += ringPerimeterFlat(ring);
+      });
+      // A part of no area is the data's own (a degenerate ring), refused as such.
+      if (area2 > 0 && perimeter > 0 && area2 / perimeter < precision) out.push({ face: fi + 1, part, width: area2 / perimeter });
+    });
+  });
+  return out;
+}
+
+/** The box of a feature's part (its outer ring) in the input, widened by `margin`. */
+export function partBox(features: readonly InputFeature[], face: number, part: number, margin: number): [number, number, number, number] {
+  const ring = features[face - 1]!.polygons[part]![0]!;
+  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+  for (let i = 0; i + 1 < ring.length; i += 2) {
+    x0 = Math.min(x0, ring[i]!); x1 = Math.max(x1, ring[i]!);
+    y0 = Math.min(y0, ring[i + 1]!); y1 = Math.max(y1, ring[i + 1]!);
+  }
+  return [x0 - margin, y0 - margin, x1 + margin, y1 + margin];
+}
+
+/**
+ * Where a sliver left out was not everywhere within the precision of its neighbours' sides,
+ * they do not meet: a thin gap is left. Each gap thinner than the sliver width (2 x area /
+ * perimeter) inside the box of a sliver left out goes to the face with the longest boundary
+ * along it, as a sliver does; other gaps stay, to be refused (or taken as enclaves).
+ */
+export function fillSliverGaps(he: HalfEdges, xs: Float64Array, ys: Float64Array, width: number, boxes: readonly [number, number, number, number][]): HalfEdges {
+  if (boxes.length === 0) return he;
+  let faces: Int32Array | null = null;
+  for (const c of outsideCycles(he, xs, ys)) {
+    if (!(c.area2 > 0)) continue;
+    const [x0, y0, x1, y1] = c.bbox;
+    if (!boxes.some((b) => b[0] <= x0 && b[1] <= y0 && b[2] >= x1 && b[3] >= y1)) continue;
+    const byFace = new Map<number, number>();
+    let perimeter = 0;
+    for (const h of c.hs) {
+      const len = Math.hypot(xs[he.to[h]!]! - xs[he.from[h]!]!, ys[he.to[h]!]! - ys[he.from[h]!]!);
+      perimeter += len;
+      const f = he.face[he.twin[h]!]!;
+      if (f > 0) byFace.set(f, (byFace.get(f) ?? 0) + len);
+    }
+    const best = argMax(byFace);
+    if (best < 0 || !(c.area2 / perimeter < width)) continue;
+    faces ??= Int32Array.from(he.face);
+    for (const h of c.hs) faces[h] = best;
+  }
+  return faces ? withFaces(he, faces, xs, ys) : he;
+}
+
 /** True when ring r had an area in the input: the snapping, not the data, collapsed it (a sliver). */
 export function hadArea(features: readonly InputFeature[], r: Ring): boolean {
   const raw = features[r.face - 1]?.polygons[r.part]?.[r.ring];
   return raw !== undefined && ringArea2Flat(raw) !== 0;
 }
 
-/** Counts (or names) the rings the snapping collapsed, which are left out of the partition. */
-export function noteCollapsed(collapsed: readonly Ring[], features: readonly InputFeature[], opts: SliverOptions, refusal: Refusal, repairs: TopologyRepairs): void {
-  for (const r of collapsed) {
-    if (!opts.refuse) {
-      repairs.slivers++;
-      continue;
-    }
-    const raw = features[r.face - 1]!.polygons[r.part]![r.ring]!;
+/**
+ * Counts (or names) the parts narrower than the precision and the rings the snapping collapsed,
+ * which are left out of the partition.
+ */
+export function noteLeftOut(narrow: readonly ThinPart[], collapsed: readonly Ring[], features: readonly InputFeature[], opts: SliverOptions, refusal: Refusal, repairs: TopologyRepairs): void {
+  if (!opts.refuse) {
+    repairs.slivers += narrow.length + collapsed.length;
+    return;
+  }
+  const firstPoint = (face: number, part: number, ring: number): [number, number] => {
+    const raw = features[face - 1]!.polygons[part]![ring]!;
+    return [raw[0]!, raw[1]!];
+  };
+  for (const p of narrow) {
     refusal.note(
       'sliver',
-      `has a ${r.outer ? 'part' : 'hole'} narrower than the precision ${opts.precision}, which the snapping collapses (without --refuse-slivers it is left out, and its neighbours meet)`,
-      r.face, raw[0], raw[1],
+      `has a part ${p.width.toPrecision(3)} wide (2 x area / perimeter), narrower than the precision ${opts.precision}, which the snapping cannot keep (without --refuse-slivers it is left out, and its neighbours meet)`,
+      p.face, ...firstPoint(p.face, p.part, 0),
+    );
+  }
+  for (const r of collapsed) {
+    refusal.note(
+      'sliver',
+      `has a ${r.outer ? 'part' : 'hole'} that the snapping to the precision ${opts.precision} collapses (without --refuse-slivers it is left out, and its neighbours meet)`,
+      r.face, ...firstPoint(r.face, r.part, r.ring),
     );
   }
 }
