@@ -57,10 +57,12 @@ export function orientRings(rings: Ring[], xs: Float64Array, ys: Float64Array, r
 
 /**
  * Inserts every vertex that lies on a segment (within the precision) into that segment; but a
- * vertex of the segment's own face (another of its rings, or a part of the same ring that is
- * not a spike's) only when exactly on it: pulled onto the segment from near by, it would fold
- * the ring onto its own hole or onto itself (an outer ring passing 0.09 mm from a vertex of its
- * hole is a valid polygon, not an overlap).
+ * vertex of another ring of the segment's own face (its hole, its outer ring, another of its
+ * parts) only when exactly on it: pulled onto the segment from near by, it would fold the ring
+ * onto that ring (an outer ring passing 0.09 mm from a vertex of its hole is a valid polygon,
+ * not an overlap). A vertex of the same ring is inserted: that is how a zero-width spike or a
+ * fold of the ring narrower than the precision closes up (cleanRing), where leaving it would
+ * have the snapping make the ring cross itself.
  */
 function insertTJunctions(rings: Ring[], index: KDBush, alias: Int32Array, xs: Float64Array, ys: Float64Array, tol: number, repairs: TopologyRepairs): Ring[] {
   const tol2 = tol * tol;
@@ -192,7 +194,8 @@ export function cleanRing(ids: Int32Array, repairs: TopologyRepairs): Int32Array
 
 /**
  * Which rings each vertex is on (built when first asked): tells whether a vertex near a segment
- * belongs to the face the segment bounds, where moving it onto the segment folds a ring.
+ * is on another ring of the face the segment bounds, where moving it onto the segment folds
+ * one ring onto the other.
  */
 class OwnVertices {
   private start: Int32Array | null = null;
@@ -201,11 +204,7 @@ class OwnVertices {
 
   constructor(private readonly rings: readonly Ring[], private readonly nv: number) {}
 
-  /**
-   * True when v is on a ring of a face whose ring has the segment a-b: v on another ring of
-   * that face, or on the same ring other than next to a or b (a spike's tip, which cleanRing
-   * removes after the insertion, is not a fold).
-   */
+  /** True when v is on another ring of a face whose ring has the segment a-b. */
   folds(a: number, b: number, v: number): boolean {
     const { rings } = this;
     const { start, list } = this.build();
@@ -213,15 +212,11 @@ class OwnVertices {
       const ri = list[i]!, p = list[i + 1]!;
       const ids = rings[ri]!.ids;
       const n = ids.length;
-      const next = ids[(p + 1) % n]!, prev = ids[(p + n - 1) % n]!;
-      if (next !== b && prev !== b) continue;
-      // Ring ri has the segment a-b: its neighbours around it are the spike's possible tips.
-      const [p0, p1] = next === b ? [p, (p + 1) % n] : [(p + n - 1) % n, p];
-      const beside = (q: number): boolean => ids[(p0 + n - 1) % n] === q || ids[(p1 + 1) % n] === q;
+      if (ids[(p + 1) % n] !== b && ids[(p + n - 1) % n] !== b) continue;
+      // Ring ri has the segment a-b.
       for (let k = start[v]!; k < start[v + 1]!; k += 2) {
         const rj = list[k]!;
-        if (rings[rj]!.face !== rings[ri]!.face) continue;
-        if (rj !== ri || !beside(v)) return true;
+        if (rj !== ri && rings[rj]!.face === rings[ri]!.face) return true;
       }
     }
     return false;
