@@ -23,8 +23,9 @@ export const usage = `ssc generalize <input> --out <file.tgap> [options]
   --sliver-width <units>    parts of a face thinner than this (2 x area / perimeter) are
                             slivers, dissolved into the neighbour with the longest shared
                             boundary and counted (default: 0.05 pixel of 0.28 mm at the base
-                            scale, 1.4 cm at 1:1,000; 0: none, and a ring the snapping
-                            collapses is refused)
+                            scale, 1.4 cm at 1:1,000); those narrower than --precision are left
+                            out before snapping, and their neighbours meet (0: no slivers, and
+                            a ring the snapping collapses is refused)
   --refuse-slivers          refuse the input instead, naming every sliver
   --allow-holes             holes in the domain are enclaves, not gaps
   --group <n>               up to n independent merges or splits per step (default 1): fewer,

@@ -52,8 +52,10 @@ export interface TopologyOptions {
   problems?: ProblemList;
   /**
    * Parts of a face thinner than this (2 x area / perimeter, CRS units) are dissolved into the
-   * neighbour with the longest shared boundary, and rings the snapping collapsed are dropped,
-   * both counted as slivers (0, the default: neither; a collapsed ring is refused).
+   * neighbour with the longest shared boundary; those narrower than the precision, and rings
+   * the snapping collapsed, are left out before the partition is built (thin gaps they leave
+   * go to a neighbour too). All are counted as slivers (slivers.ts). 0, the default: none, and
+   * a collapsed ring is refused.
    */
   sliverWidth?: number;
   /** Slivers are refused (every one named) instead of dissolved. */
