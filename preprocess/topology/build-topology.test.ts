@@ -510,15 +510,21 @@ test('a noisy sliver under a millimetre along a sloped boundary is dissolved, an
   const A: XY[] = [...left, far(left[25]!, 1), far(left[0]!, 1)];
   const B: XY[] = [...[...right].reverse(), far(right[0]!, -1), far(right[25]!, -1)];
   const S: XY[] = [...left, ...[...right].reverse()];
-  const c = writeCase(t, 'noisy.geojson', collection([feature('A', polygon(A)), feature('S', polygon(S)), feature('B', polygon(B), 'water')]));
+  // Apart from them, X | T | Y: T is 5 mm wide, more than the precision, and goes to X (10
+  // along each; the lower feature on a tie) once the partition is built.
+  const c = writeCase(t, 'noisy.geojson', collection([
+    feature('A', polygon(A)), feature('S', polygon(S)), feature('B', polygon(B), 'water'),
+    feature('X', polygon(rect(100, 0, 110, 10))), feature('T', polygon(rect(110, 0, 110.005, 10))), feature('Y', polygon(rect(110.005, 0, 120, 10))),
+  ]));
   // Without slivers (--sliver-width 0) the snapping makes S cross itself: refused.
   const kept = await generalize(c, 'kept.tgap', '--sliver-width', '0');
   assert.match(kept.stderr, /feature #1 \(id "S"\), at \([\d., ]+\): is self-intersecting/);
   const r = await generalize(c, 'out.tgap');
   assert.equal(r.code, 0, r.stderr);
   const tg = await readTgap(r.out);
-  assert.equal(tg.meta.repairs.slivers, 1);
-  assert.deepEqual(tg.meta.attributes.map((a) => a.id), ['A', 'B']);
+  assert.equal(tg.meta.repairs.slivers, 2);
+  assert.deepEqual(tg.meta.attributes.map((a) => a.id), ['A', 'B', 'X', 'Y']);
+  assert.ok(Math.abs(tg.faces[3]!.area2 / 2 - 100.05) < 1e-6 && Math.abs(tg.faces[4]!.area2 / 2 - 9.995 * 10) < 1e-6, 'X took T');
   // A and B now cover what A, S and B covered, up to the snapping: half a millimetre along
   // the 4 x 20 + 2 x 30 of outside boundary at most.
   const area = (r: XY[]): number => Math.abs(r.reduce((s, [x, y], i) => s + x * r[(i + 1) % r.length]![1] - r[(i + 1) % r.length]![0] * y, 0)) / 2;

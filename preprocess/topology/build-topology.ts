@@ -50,25 +50,24 @@ export function buildTopology(features: InputFeature[], opts: TopologyOptions): 
   refusal.check();
   checkCrossings(he, xs, ys, refusal);
   refusal.check();
-  // Thin gaps where slivers were left out go to a neighbour.
+  let gaps: { face: number; area2: number }[] = [];
   if (slivers) {
+    // Parts thinner than the sliver width go to their neighbours (or are all named) ...
+    he = dissolveSlivers(he, rings, xs, ys, slivers, refusal, repairs);
+    // ... and so do thin gaps where slivers were left out.
     const boxes = [...narrow.map((p) => partBox(features, p.face, p.part, opts.precision)), ...collapsed.map((r) => partBox(features, r.face, r.part, opts.precision))];
-    he = fillSliverGaps(he, xs, ys, slivers.width, boxes);
+    ({ he, gaps } = fillSliverGaps(he, xs, ys, slivers.width, boxes));
+    noteLeftOut(narrow, collapsed, features, slivers, refusal, repairs);
   }
   const holes = checkOutside(he, xs, ys, refusal, opts.allowHoles ?? false);
   refusal.check();
-  // Parts thinner than the sliver width go to their neighbours (or are all named).
-  if (slivers) {
-    noteLeftOut(narrow, collapsed, features, slivers, refusal, repairs);
-    he = dissolveSlivers(he, rings, xs, ys, slivers, refusal, repairs);
-    refusal.check();
-  }
   // Faces numbered again without the features slivers took whole.
-  const { faceCount, featureOfFace } = renumberFaces(he, rings, features.length);
+  const { faceCount, featureOfFace, newId } = renumberFaces(he, rings, features.length);
   // Edges between nodes, face areas, and only the points the edges use.
   const { edges, nodeCount } = traceEdges(he, xs.length);
   const faceArea2 = new Float64Array(faceCount);
   for (const r of rings) faceArea2[r.face]! += ringArea2(r.ids, xs, ys);
+  for (const g of gaps) faceArea2[newId[g.face]!]! += g.area2;
   const kept = dropUnusedPoints(edges, xs, ys);
   return { xs: kept.xs, ys: kept.ys, vertexCount: kept.count, edges, faceCount, faceArea2, nodeCount, repairs, holes, featureOfFace };
 }
@@ -77,9 +76,10 @@ export function buildTopology(features: InputFeature[], opts: TopologyOptions): 
  * Numbers the faces that still have a boundary 1, 2, ... in input order (in place in the
  * half-edges and rings); returns their count with the outside and each one's input feature.
  */
-function renumberFaces(he: HalfEdges, rings: Ring[], featureCount: number): { faceCount: number; featureOfFace: Int32Array } {
+function renumberFaces(he: HalfEdges, rings: Ring[], featureCount: number): { faceCount: number; featureOfFace: Int32Array; newId: Int32Array } {
   const present = new Uint8Array(featureCount + 1);
   for (let h = 0; h < he.count; h++) present[he.face[h]!] = 1;
+  // Old face -> new (the outside stays 0).
   const newId = new Int32Array(featureCount + 1);
   const featureOfFace = [-1];
   for (let f = 1; f <= featureCount; f++) {
@@ -91,5 +91,5 @@ function renumberFaces(he: HalfEdges, rings: Ring[], featureCount: number): { fa
     for (let h = 0; h < he.count; h++) he.face[h] = newId[he.face[h]!]!;
     for (const r of rings) r.face = newId[r.face]!;
   }
-  return { faceCount: featureOfFace.length, featureOfFace: Int32Array.from(featureOfFace) };
+  return { faceCount: featureOfFace.length, featureOfFace: Int32Array.from(featureOfFace), newId };
 }

@@ -64,10 +64,14 @@ export function partBox(features: readonly InputFeature[], face: number, part: n
  * Where a sliver left out was not everywhere within the precision of its neighbours' sides,
  * they do not meet: a thin gap is left. Each gap thinner than the sliver width (2 x area /
  * perimeter) inside the box of a sliver left out goes to the face with the longest boundary
- * along it, as a sliver does; other gaps stay, to be refused (or taken as enclaves).
+ * along it, as a sliver does; other gaps stay, to be refused (or taken as enclaves). Returns
+ * the half-edges and the area each gap added to its face.
  */
-export function fillSliverGaps(he: HalfEdges, xs: Float64Array, ys: Float64Array, width: number, boxes: readonly [number, number, number, number][]): HalfEdges {
-  if (boxes.length === 0) return he;
+export function fillSliverGaps(
+  he: HalfEdges, xs: Float64Array, ys: Float64Array, width: number, boxes: readonly [number, number, number, number][],
+): { he: HalfEdges; gaps: { face: number; area2: number }[] } {
+  const gaps: { face: number; area2: number }[] = [];
+  if (boxes.length === 0) return { he, gaps };
   let faces: Int32Array | null = null;
   for (const c of outsideCycles(he, xs, ys)) {
     if (!(c.area2 > 0)) continue;
@@ -85,8 +89,9 @@ export function fillSliverGaps(he: HalfEdges, xs: Float64Array, ys: Float64Array
     if (best < 0 || !(c.area2 / perimeter < width)) continue;
     faces ??= Int32Array.from(he.face);
     for (const h of c.hs) faces[h] = best;
+    gaps.push({ face: best, area2: c.area2 });
   }
-  return faces ? withFaces(he, faces, xs, ys) : he;
+  return { he: faces ? withFaces(he, faces, xs, ys) : he, gaps };
 }
 
 /** True when ring r had an area in the input: the snapping, not the data, collapsed it (a sliver). */
@@ -128,7 +133,7 @@ export function noteLeftOut(narrow: readonly ThinPart[], collapsed: readonly Rin
  * Dissolves the parts thinner than the sliver width into their neighbours: returns the
  * half-edges with the new faces (the boundaries inside a face gone) and sets each ring's face
  * to the one that now holds it. With `refuse`, names every sliver and changes nothing.
- * `rings` are those the half-edges were built from, in the same order.
+ * `he` is as buildHalfEdges made it from `rings` (ring after ring, in the same order).
  */
 export function dissolveSlivers(he: HalfEdges, rings: Ring[], xs: Float64Array, ys: Float64Array, opts: SliverOptions, refusal: Refusal, repairs: TopologyRepairs): HalfEdges {
   const p = new Pieces(he, rings, xs, ys);
