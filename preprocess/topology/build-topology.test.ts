@@ -512,10 +512,20 @@ test('a noisy sliver under a millimetre along a sloped boundary is dissolved, an
   const S: XY[] = [...left, ...[...right].reverse()];
   // Apart from them, X | T | Y: T is 5 mm wide, more than the precision, and goes to X (10
   // along each; the lower feature on a tie) once the partition is built.
-  const c = writeCase(t, 'noisy.geojson', collection([
+  const doc = collection([
     feature('A', polygon(A)), feature('S', polygon(S)), feature('B', polygon(B), 'water'),
     feature('X', polygon(rect(100, 0, 110, 10))), feature('T', polygon(rect(110, 0, 110.005, 10))), feature('Y', polygon(rect(110.005, 0, 120, 10))),
-  ]));
+  ]);
+  // --refuse-slivers names both, each the way it would be dissolved, and writes nothing.
+  const refused = writeCase(t, 'noisy.geojson', doc);
+  const no = await generalize(refused, 'out.tgap', '--refuse-slivers');
+  assert.equal(no.code, 1);
+  const lines = no.stderr.trimEnd().split('\n');
+  assert.deepEqual(lines.slice(0, 2), ['ssc generalize: noisy.geojson: 2 problems; the input is refused:', '  sliver (2):']);
+  assert.match(lines[2]!, /^ {4}feature #4 \(id "T"\), at \(1110, 2000\): has a part 0\.00500 wide .* dissolved into feature #3 \(id "X"\)\)$/);
+  assert.match(lines[3]!, /^ {4}feature #1 \(id "S"\), at \([\d., ]+\): has a part 0\.000[5-7]\d+ wide .*narrower than the precision 0\.001.* left out, and its neighbours meet\)$/);
+  assert.deepEqual(readdirSync(refused.dir).sort(), refused.files, 'nothing written');
+  const c = writeCase(t, 'noisy.geojson', doc);
   // Without slivers (--sliver-width 0) the snapping makes S cross itself: refused.
   const kept = await generalize(c, 'kept.tgap', '--sliver-width', '0');
   assert.match(kept.stderr, /feature #1 \(id "S"\), at \([\d., ]+\): is self-intersecting/);
