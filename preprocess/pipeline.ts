@@ -10,6 +10,11 @@ import { generalize, type GeneralizeResult } from './tgap/generalize.js';
 import type { Tgap } from '../format/tgap-model.js';
 import { TGAP_VERSION } from '../format/tgap.js';
 import { buildTopology, type Topology } from './topology/build-topology.js';
+import { findDuplicateFeatures } from './topology/duplicate-features.js';
+import { recommendBaseScale } from './style-scaffold/base-scale.js';
+import { describeColourSources } from './style-scaffold/class-colours.js';
+import { featureShape, guessClassProperty } from './style-scaffold/class-stats.js';
+import { lapTimer } from './lap-timer.js';
 
 /**
  * The default sliver width, in resolution pixels (0.28 mm) at the base scale: 1.4 cm on the
@@ -17,11 +22,6 @@ import { buildTopology, type Topology } from './topology/build-topology.js';
  * noise of real data (a millimetre or less) and below any real feature's width.
  */
 export const SLIVER_PX = 0.05;
-import { findDuplicateFeatures } from './topology/duplicate-features.js';
-import { recommendBaseScale } from './style-scaffold/base-scale.js';
-import { describeColourSources } from './style-scaffold/class-colours.js';
-import { featureShape, guessClassProperty } from './style-scaffold/class-stats.js';
-import { lapTimer } from './lap-timer.js';
 
 export interface PipelineOptions {
   style?: string;
