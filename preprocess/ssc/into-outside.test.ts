@@ -15,6 +15,8 @@ import { EventKind, faceEndZ, faceStartZ, phaseZ, resolveFace } from '../../form
 import { fixtureTgap, rect, type FixtureFace } from '../../testing/planar-fixtures.js';
 import { surfacesSlicer } from '../../testing/surfaces-slicer.js';
 import { fitView } from '../map/rasterize.js';
+import { mergeConnectivity, violates } from './merge-connectivity.js';
+import { mergeTriangles } from './merge-surface.js';
 import { buildSurfaces } from './surfaces.js';
 
 const W = 1, L = 2, Z = 3, I = 4;
@@ -52,7 +54,17 @@ test('an isolated face merges into the outside when its turn comes, and the last
 for (const smooth of [false, true]) {
   test(`${smooth ? 'smooth' : 'classic'} cube: the isolated face shows until its merge, then the outside; a partition at every z`, async () => {
     const t = fixtureTgap(FACES, ['a']);
-    const { surfaces: s, tgap } = buildSurfaces(t, { smooth });
+    const { surfaces: s, tgap, transitions } = buildSurfaces(t, { smooth });
+    // The outside takes I as a winner takes a loser (upper face 0 over I's area), and in a
+    // smooth cube what it has taken stays attached to it at every z of the transition.
+    const intoOutside = transitions.filter((m) => m.into === 0);
+    assert.deepEqual(intoOutside.map((m) => m.loser), [I]);
+    const taken = mergeTriangles(s, intoOutside, tgap)[0]!;
+    assert.ok(taken.length >= 2 && taken.every((i) => s.upper[i] === 0 && s.lower[i] === I), 'I\'s area turns to the outside');
+    if (smooth) {
+      assert.ok(intoOutside[0]!.tilted, 'the smooth cube tilts it');
+      assert.ok(!mergeConnectivity(tgap, s, intoOutside).some(violates), 'what the outside takes stays attached to it');
+    }
     // 130 x 40 pixels of 0.1 over the data's extent, [0,13] x [0,4].
     const view = fitView(t.meta.extent, 130, 40);
     const slice = await surfacesSlicer(s, s.xs, s.ys, (f) => tgap.faces[f]!.classIndex, view);
