@@ -54,9 +54,10 @@ export function buildTopology(features: InputFeature[], opts: TopologyOptions): 
   if (slivers) {
     // Parts thinner than the sliver width go to their neighbours (or are all named) ...
     he = dissolveSlivers(he, rings, xs, ys, slivers, refusal, repairs);
-    // ... and so do thin gaps where slivers were left out.
+    // ... and so do thin gaps where slivers were left out (those narrower than the precision
+    // are left out whatever the sliver width).
     const boxes = [...narrow.map((p) => partBox(features, p.face, p.part, opts.precision)), ...collapsed.map((r) => partBox(features, r.face, r.part, opts.precision))];
-    ({ he, gaps } = fillSliverGaps(he, xs, ys, slivers.width, boxes));
+    ({ he, gaps } = fillSliverGaps(he, xs, ys, Math.max(slivers.width, opts.precision), boxes));
     noteLeftOut(narrow, collapsed, features, slivers, refusal, repairs);
   }
   const holes = checkOutside(he, xs, ys, refusal, opts.allowHoles ?? false);
