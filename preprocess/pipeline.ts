@@ -13,8 +13,15 @@ import { buildTopology, type Topology } from './topology/build-topology.js';
 import { findDuplicateFeatures } from './topology/duplicate-features.js';
 import { recommendBaseScale } from './style-scaffold/base-scale.js';
 import { describeColourSources } from './style-scaffold/class-colours.js';
-import { guessClassProperty } from './style-scaffold/class-stats.js';
+import { featureShape, guessClassProperty } from './style-scaffold/class-stats.js';
 import { lapTimer } from './lap-timer.js';
+
+/**
+ * The default sliver width, in resolution pixels (0.28 mm) at the base scale: 1.4 cm on the
+ * ground at 1:1,000. A twentieth of a pixel is never seen at any scale, and is well above the
+ * noise of real data (a millimetre or less) and below any real feature's width.
+ */
+export const SLIVER_PX = 0.05;
 
 export interface PipelineOptions {
   style?: string;
@@ -31,6 +38,10 @@ export interface PipelineOptions {
   maxProblems?: number;
   /** The later of two exactly equal polygons is dropped (counted), not refused. */
   dropDuplicates?: boolean;
+  /** Parts thinner than this (CRS units) are slivers (default: SLIVER_PX pixel at the base scale; 0: none). */
+  sliverWidth?: number;
+  /** Slivers are refused, every one named, instead of dissolved into a neighbour. */
+  refuseSlivers?: boolean;
   log?: (msg: string) => void;
 }
 
@@ -98,8 +109,15 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
   });
   const precision = opts.precision ?? 0.001;
   const allowHoles = opts.allowHoles ?? style.allowHoles;
-  const topo = buildTopology(raw.features, { precision, file: raw.file, inputRepairs: raw.repairs, allowHoles, problems });
-  const attributes = raw.features.map((f) => f.properties);
+  // The base scale before the topology: it sets the sliver width.
+  const baseScale = opts.baseScale ?? (style.baseScale > 0 ? style.baseScale : autoBaseScale(raw.features, style.resolutionMm));
+  // Rounded to 12 digits: the tGAP's options say 0.014, not 0.014000000000000002.
+  const sliverWidth = opts.sliverWidth ?? Number(((SLIVER_PX * style.resolutionMm * baseScale) / 1000).toPrecision(12));
+  const topo = buildTopology(raw.features, {
+    precision, file: raw.file, inputRepairs: raw.repairs, allowHoles, problems, sliverWidth, refuseSlivers: opts.refuseSlivers ?? false,
+  });
+  // Faces are the features less those dissolved whole as slivers.
+  const attributes = Array.from(topo.featureOfFace.subarray(1), (i) => raw.features[i]!.properties);
   // The coordinates now live in the topology; let the input's go.
   raw.features.length = 0;
   lap('topology');
@@ -113,12 +131,11 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
     if (y < y0) y0 = y;
     if (y > y1) y1 = y;
   }
-  const baseScale = opts.baseScale ?? (style.baseScale > 0 ? style.baseScale : autoBaseScale(topo, style.resolutionMm));
   noStyle?.push(
     `no style: base scale 1:${baseScale}${opts.baseScale !== undefined ? ' (--base-scale)' : ' (chosen from the data: its mean face is 20 pixels across there)'}`,
     `no style: to write one, run ssc style ${path.basename(input)} --out style.json and see docs/STYLE.md`,
   );
-  const g = generalize(topo, (f) => classes[f]!, style, {
+  const g = generalize(topo, (f) => classes[topo.featureOfFace[f]! + 1]!, style, {
     baseScale,
     resolutionMm: style.resolutionMm,
     ...(opts.group !== undefined ? { group: opts.group } : {}),
@@ -142,7 +159,7 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
     source: path.basename(input),
     style: styleToJson({ ...style, baseScale }),
     attributes,
-    options: { precision, allowHoles, group: opts.group ?? 1 },
+    options: { precision, allowHoles, group: opts.group ?? 1, sliverWidth },
   };
   const report: PipelineReport = {
     topology: { vertexCount: topo.vertexCount, nodeCount: topo.nodeCount, faceCount: topo.faceCount - 1, edges: topo.edges.length, repairs: topo.repairs, holes: topo.holes, droppedDuplicates },
@@ -195,9 +212,9 @@ function firstPoint(f: InputFeature): { location?: [number, number] } {
   return r && r.length >= 2 ? { location: [r[0]!, r[1]!] } : {};
 }
 
-/** The recommended base scale (style-scaffold/base-scale.ts) from the topology's faces. */
-function autoBaseScale(topo: Topology, resolutionMm: number): number {
-  let area2 = 0;
-  for (let f = 1; f < topo.faceCount; f++) area2 += Math.abs(topo.faceArea2[f]!);
-  return recommendBaseScale(area2 / 2, topo.faceCount - 1, resolutionMm);
+/** The recommended base scale (style-scaffold/base-scale.ts, as ssc style gives it) from the input's features. */
+function autoBaseScale(features: readonly InputFeature[], resolutionMm: number): number {
+  let area = 0;
+  for (const f of features) area += featureShape(f).area;
+  return recommendBaseScale(area, features.length, resolutionMm);
 }

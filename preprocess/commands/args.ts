@@ -54,6 +54,8 @@ export const generalizeOptionSpecs = {
   problems: { type: 'string' },
   'max-problems': { type: 'string' },
   'drop-duplicates': { type: 'boolean' },
+  'sliver-width': { type: 'string' },
+  'refuse-slivers': { type: 'boolean' },
 } as const;
 
 export interface GeneralizeValues {
@@ -69,6 +71,8 @@ export interface GeneralizeValues {
   problems?: string | undefined;
   'max-problems'?: string | undefined;
   'drop-duplicates'?: boolean | undefined;
+  'sliver-width'?: string | undefined;
+  'refuse-slivers'?: boolean | undefined;
 }
 
 /** The pipeline's options from the generalize options, with progress on stderr unless --quiet. */
@@ -77,7 +81,10 @@ export function pipelineOptions(values: GeneralizeValues): PipelineOptions {
   const baseScale = parseNumber(values['base-scale'], '--base-scale', { min: 1 });
   const group = parseNumber(values.group, '--group', { min: 1, integer: true });
   const maxProblems = parseNumber(values['max-problems'], '--max-problems', { min: 1, integer: true });
+  const sliverWidth = parseNumber(values['sliver-width'], '--sliver-width', { min: 0 });
   return {
+    ...(sliverWidth !== undefined ? { sliverWidth } : {}),
+    ...(values['refuse-slivers'] ? { refuseSlivers: true } : {}),
     ...(maxProblems !== undefined ? { maxProblems } : {}),
     ...(values['drop-duplicates'] ? { dropDuplicates: true } : {}),
     ...(values.style ? { style: values.style } : {}),

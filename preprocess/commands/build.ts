@@ -9,6 +9,7 @@ import { readTgap, TGAP_MAGIC } from '../../format/tgap.js';
 import type { Tgap } from '../../format/tgap-model.js';
 import { generalizeOptionSpecs, parseNumber, pipelineOptions, UsageError } from './args.js';
 import { withProblemsFile } from './problems-file.js';
+import { repairsLine } from './repairs-line.js';
 
 export const usage = `ssc build <input|file.tgap> --out <dir> [options]
   input: polygons in any format ssc generalize reads (GeoJSON, TopoJSON, GeoPackage, Shapefile,
@@ -22,7 +23,8 @@ export const usage = `ssc build <input|file.tgap> --out <dir> [options]
                             gradual (tilted surfaces; --smooth says so explicitly)
   --quiet                   no progress on stderr
 Other ssc generalize options (--class-property, --crs, --layer, --precision, --base-scale,
---allow-holes, --group, --problems, --max-problems, --drop-duplicates) apply to polygon input. The directory is replaced only when the build succeeds.`;
+--sliver-width, --refuse-slivers, --allow-holes, --group, --problems, --max-problems,
+--drop-duplicates) apply to polygon input. The directory is replaced only when the build succeeds.`;
 
 async function isTgap(file: string): Promise<boolean> {
   try {
@@ -63,12 +65,13 @@ export async function run(argv: string[]): Promise<void> {
   const t0 = performance.now();
   const input = positionals[0]!;
   let tgap: Tgap;
-  let noStyle: string[] = [];
+  // Built from polygons: what was chosen without a style, and the repairs made to the input.
+  let report: string[] = [];
   if (await isTgap(input)) tgap = await readTgap(input);
   else {
     const g = await withProblemsFile(values.problems, () => generalizeFile(input, options));
     tgap = g.tgap;
-    noStyle = g.report.noStyle ?? [];
+    report = [...(g.report.noStyle ?? []), repairsLine({ ...g.report.topology.repairs })];
   }
   const r = await buildCube(tgap, values.out, {
     ...(chunkBytes !== undefined ? { chunkBytes } : {}),
@@ -86,7 +89,7 @@ export async function run(argv: string[]): Promise<void> {
   };
   const lines = r.lineChunkBytes.length > 0 ? `, ${r.lines} lines in ${r.lineChunkBytes.length} line chunks (${range(r.lineChunkBytes)})` : '';
   process.stdout.write(
-    noStyle.map((l) => l + '\n').join('') +
+    report.map((l) => l + '\n').join('') +
     `cube: ${tgap.meta.steps} steps, CRS ${tgap.meta.crs}${r.proj4 ? ' (with its proj4 definition)' : ''}, ${r.triangles} triangles in ${r.chunks} chunks (${range(r.chunkBytes)})${lines}, ${r.indexFiles} index file(s)\n` +
       `wrote ${values.out}: ${r.files} files, ${r.bytesWritten} bytes with the compressed copies, in ${((performance.now() - t0) / 1000).toFixed(1)} s\n`,
   );

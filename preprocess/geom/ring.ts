@@ -55,6 +55,14 @@ export function chainArea2(ids: ArrayLike<number>, xs: Float64Array, ys: Float64
   return s;
 }
 
+/** Length of the closed ring through the vertex ids (without the closing id). */
+export function ringLength(ids: ArrayLike<number>, xs: Float64Array, ys: Float64Array): number {
+  const n = ids.length;
+  if (n < 2) return 0;
+  const a = ids[n - 1]!, b = ids[0]!;
+  return chainLength(ids, xs, ys) + Math.hypot(xs[b]! - xs[a]!, ys[b]! - ys[a]!);
+}
+
 export function chainLength(ids: ArrayLike<number>, xs: Float64Array, ys: Float64Array): number {
   let s = 0;
   for (let i = 0; i + 1 < ids.length; i++) {

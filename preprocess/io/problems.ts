@@ -10,6 +10,7 @@ export const PROBLEM_KINDS = {
   class: 'class',
   duplicate: 'duplicate polygon',
   ring: 'degenerate ring',
+  sliver: 'sliver',
   selfIntersection: 'self-intersection',
   overlap: 'overlap',
   gap: 'gap',

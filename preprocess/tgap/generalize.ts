@@ -55,7 +55,12 @@ export interface GeneralizeStats {
   splitFallbacks: number;
   reemits: number;
   removedVertices: number;
-  /** Faces with no neighbour to merge with (a part of the domain on its own). */
+  /**
+   * Faces with no neighbour (a part of the domain on its own, e.g. an isolated building) that
+   * left the map: merged into the outside when their turn came, as any face's does.
+   */
+  intoOutside: number;
+  /** Faces with no neighbour left alive: the last face, alone, stays to the end. */
   unmergeable: number;
   /** Times every edge behind the current tolerance was simplified. */
   refreshes: number;
@@ -82,7 +87,7 @@ class Generalization {
   private readonly tris = new StepTriangles();
   private readonly events: TgapEvent[] = [];
   private readonly facesAlive: number[];
-  private readonly stats: GeneralizeStats = { merges: 0, splits: 0, splitFallbacks: 0, reemits: 0, removedVertices: 0, unmergeable: 0, refreshes: 0 };
+  private readonly stats: GeneralizeStats = { merges: 0, splits: 0, splitFallbacks: 0, reemits: 0, removedVertices: 0, intoOutside: 0, unmergeable: 0, refreshes: 0 };
 
   constructor(topo: Topology, classOf: (face: number) => number, style: Style, private readonly opts: GeneralizeOptions) {
     const st = new PlanarState(topo, classOf);
@@ -122,10 +127,16 @@ class Generalization {
     while (done < group && queue.length > 0 && deferred.length < 4 * group) {
       const L = queue.pop();
       if (L < 0) continue;
-      const { best, count } = mostCompatibleNeighbour(st, L, this.compat);
+      let { best, count } = mostCompatibleNeighbour(st, L, this.compat);
       if (best < 0) {
-        this.stats.unmergeable++;
-        continue;
+        // No neighbour but the outside: too small for the scale now, the face leaves the map
+        // (merges into the outside, face 0), unless it is the last one.
+        if (st.aliveFaces <= 1) {
+          this.stats.unmergeable++;
+          continue;
+        }
+        best = 0;
+        count = 0;
       }
       const splitting = this.linear[st.faces[L]!.classIndex] === true && count >= 2;
       if (group > 1 && !locks.tryLock(eventNeighbourhood(st, L, best, splitting))) {
@@ -177,9 +188,14 @@ class Generalization {
     if (splitting) this.stats.splitFallbacks++;
     const edges = mergeFace(st, L, best);
     this.events.push({ kind: EventKind.Merge, step: k, loser: L, into: best });
+    this.stats.merges++;
+    if (best === 0) {
+      // Into the outside: every edge of L ended with it; nothing else changed.
+      this.stats.intoOutside++;
+      return [];
+    }
     const touched = this.simplifyAround(edges, [best], tol);
     this.queue.update(best);
-    this.stats.merges++;
     return [best, ...touched];
   }
 

@@ -36,10 +36,12 @@ export function mostCompatibleNeighbour(st: PlanarState, f: number, compat: read
  * Merges face L into W in the current step: their shared edges end, L's area and its other
  * edges go to W, and nodes left between two edges of one boundary are dissolved. Returns the
  * edges whose lines now bound W and may need simplifying: the joined ones, then L's others.
+ * W = 0, the outside, takes a face with no other neighbour: all its edges end, and it leaves
+ * the map.
  */
 export function mergeFace(st: PlanarState, L: number, W: number): number[] {
   // What the cube drew for L now counts as drawn for W (see reemit).
-  st.faceCost[W]! += st.faceVerts[L]!;
+  if (W > 0) st.faceCost[W]! += st.faceVerts[L]!;
   const removed: number[] = [];
   const kept: number[] = [];
   for (const e of st.faceEdges[L]!) {
@@ -55,7 +57,7 @@ export function mergeFace(st: PlanarState, L: number, W: number): number[] {
     nodes.add(st.edges[e]!.end);
     st.endEdge(e);
   }
-  st.faceArea2[W]! += st.faceArea2[L]!;
+  if (W > 0) st.faceArea2[W]! += st.faceArea2[L]!;
   st.endFace(L, W);
   const joined = dissolveNodes(st, [...nodes].sort((p, q) => p - q));
   return [...joined, ...kept];

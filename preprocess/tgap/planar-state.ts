@@ -122,8 +122,9 @@ export class PlanarState {
     face.stepHigh = this.step;
     face.mergedInto = into;
     face.endPhase = phase;
-    if (into >= 0) {
-      this.cur[f] = into;
+    if (into >= 0) this.cur[f] = into;
+    // The outside (0) keeps no edges: a face merged into it has none left.
+    if (into > 0) {
       const mine = this.faceEdges[f]!, theirs = this.faceEdges[into]!;
       // Keep the larger set object: merging small into large keeps this linear overall.
       if (mine.size > theirs.size) {

@@ -37,7 +37,7 @@ async function generalize(c: Case, out: string, ...extra: string[]): Promise<Run
 }
 
 const NO_REPAIRS: TopologyRepairs = {
-  closedRings: 0, duplicatePoints: 0, reorientedRings: 0, tJunctions: 0, snappedPoints: 0, mergedPoints: 0, spikes: 0,
+  closedRings: 0, duplicatePoints: 0, reorientedRings: 0, tJunctions: 0, snappedPoints: 0, mergedPoints: 0, spikes: 0, slivers: 0,
 };
 
 interface Counts {
@@ -252,6 +252,29 @@ test('an island: a face alone in another face\'s hole, no node on its ring', asy
   }
 });
 
+test('an outer ring passing 0.09 mm from vertices of its own hole builds: snapping does not fold it onto the hole', async (t) => {
+  //  (0,29.123) +._
+  //             |  '-._           A's sloped side runs from (30,20) to (0,29.123); two vertices of
+  //             |   /\ '-+ (30,20) its hole (filled by B) lie 0.076 and 0.092 mm below it, within
+  //             |  / B \ |         the precision (1 mm). Put into A's side as T-junctions they
+  //             |  +---+ |         folded A's outer ring onto its hole, and the input was refused
+  //      (0,0)  +--------+ (30,0)  as an overlap of A and B.
+  const outer: XY[] = [[0, 0], [30, 0], [30, 20], [0, 29.123]];
+  const hole: XY[] = [[10, 10], [14.005, 24.864], [16.001, 24.257], [20, 10]]; // clockwise
+  const side = (x: number): number => 29.123 - (9.123 * x) / 30;
+  const gap = (p: XY): number => (side(p[0]) - p[1]) * Math.cos(Math.atan(9.123 / 30));
+  assert.ok(gap(hole[1]!) > 0 && gap(hole[1]!) < 1e-4 && gap(hole[2]!) > 0 && gap(hole[2]!) < 1e-4, 'the hole comes within 0.1 mm of the side');
+  const c = writeCase(t, 'near-hole.geojson', collection([feature('A', polygon(outer, hole)), feature('B', polygon([...hole].reverse()), 'water')]));
+  const area = (r: XY[]): number => Math.abs(r.reduce((s, [x, y], i) => s + x * r[(i + 1) % r.length]![1] - r[(i + 1) % r.length]![0] * y, 0)) / 2;
+  const perimeter = (r: XY[]): number => r.reduce((s, [x, y], i) => s + Math.hypot(r[(i + 1) % r.length]![0] - x, r[(i + 1) % r.length]![1] - y), 0);
+  // Two rings without nodes, as for an island: nothing inserted, nothing merged.
+  await expectPartition(c, {
+    counts: { faces: 2, edges: 2, nodes: 2, vertices: 8 },
+    areas: [area(outer) - area(hole), area(hole)],
+    shared: { 'A|B': round(perimeter(hole)), 'A|out': round(perimeter(outer)) },
+  });
+});
+
 test('a MultiPolygon feature with two parts', async (t) => {
   //  +----+----+----+
   //  | A1 | B  | A2 |      A is one feature of two parts on either side of B.
@@ -289,7 +312,7 @@ test('faces touching at a single point are not neighbours', async (t) => {
       shared: { 'A|C': 10, 'A|D': 10, 'B|C': 10, 'B|D': 10, 'A|out': 20, 'B|out': 20, 'C|out': 20, 'D|out': 20 },
     });
   });
-  await t.test('two squares touching at a corner: never merged', async (t) => {
+  await t.test('two squares touching at a corner: never merged with each other', async (t) => {
     const c = writeCase(t, 'pinch.geojson', collection([feature('A', polygon(rect(0, 0, 10, 10))), feature('B', polygon(rect(10, 10, 20, 20)))]));
     // One node where they touch (4 directions), each square one loop edge from it.
     const tg = await expectPartition(c, {
@@ -297,8 +320,11 @@ test('faces touching at a single point are not neighbours', async (t) => {
       areas: [100, 100],
       shared: { 'A|out': 40, 'B|out': 40 },
     });
-    assert.equal(tg.meta.steps, 0, 'faces that are not neighbours are not merged');
-    assert.deepEqual(tg.meta.facesAlive, [2]);
+    // Each has no neighbour but the outside: the first to come up leaves the map (merges into
+    // the outside); the last one stays.
+    assert.equal(tg.meta.steps, 1);
+    assert.deepEqual(tg.meta.facesAlive, [2, 1]);
+    assert.deepEqual(tg.events.map((e) => e.into), [0], 'faces that are not neighbours are not merged with each other');
   });
 });
 
@@ -386,6 +412,135 @@ test('zero-width spikes are removed and counted', async (t) => {
       extent: [0, 0, 20, 10],
     });
   });
+});
+
+// ---------------------------------------------------------------------------------------------
+// Slivers: the style's base scale is 1:1,000, so the sliver width is 0.05 x 0.28 mm x 1,000 = 1.4 cm.
+
+//  (0,10) +--------++-----------------+ (20,10)
+//         |        ||        C        |        S: x 10..10.005, 5 mm wide, between A (10 along it),
+//         |   A    |S      +----------+ 6.004  B (6) and C (4).
+//         |        ||      | S2  (4 mm)  6     S2: x 15..20, y 6..6.004, between B (5 along it)
+//         |        ||  B              |        and C (5 and its 4 mm end at x = 15).
+//  (0,0)  +--------++-----------------+ (20,0)
+function slivers(): Json {
+  return collection([
+    feature('A', polygon(rect(0, 0, 10, 10))),
+    feature('S', polygon([[10, 0], [10.005, 0], [10.005, 6], [10.005, 10], [10, 10]])),
+    feature('B', polygon([[10.005, 0], [20, 0], [20, 6], [15, 6], [10.005, 6]])),
+    feature('S2', polygon([[15, 6], [20, 6], [20, 6.004], [15, 6.004]])),
+    feature('C', polygon([[10.005, 6], [15, 6], [15, 6.004], [20, 6.004], [20, 10], [10.005, 10]])),
+  ]);
+}
+
+test('slivers thinner than the sliver width are dissolved into the neighbour with the longest shared boundary, and counted', async (t) => {
+  const c = writeCase(t, 'slivers.geojson', slivers());
+  // S goes to A, S2 to C: three faces. A now reaches x = 10.005; C has S2's strip.
+  // Vertices: A's four corners, (10,0) and (10,10) now on its outside boundary; (10.005, 0 / 6 /
+  // 10); (20, 0 / 6 / 6.004 / 10); (15,6), where B meets C. (15,6.004) bounded only S2. Nodes:
+  // the four points where three of A, B, C and the outside meet.
+  const tg = await expectPartition(c, {
+    counts: { faces: 3, edges: 6, nodes: 4, vertices: 12 },
+    repairs: { slivers: 2 },
+    areas: [10.005 * 10, 9.995 * 6, 9.995 * 4],
+    shared: { 'A|B': 6, 'A|C': 4, 'B|C': 9.995, 'A|out': round(10.005 * 2 + 10), 'B|out': 15.995, 'C|out': 13.995 },
+  });
+  assert.deepEqual(tg.meta.attributes.map((a) => a.id), ['A', 'B', 'C'], 'the slivers\' features are gone, the others keep their attributes');
+  const r = await generalize(c, 'again.tgap');
+  assert.match(r.stdout, /^repairs: slivers 2$/m, 'the report counts them');
+});
+
+test('--refuse-slivers names every sliver in one run, and nothing is written', async (t) => {
+  const c = writeCase(t, 'slivers.geojson', slivers());
+  const r = await generalize(c, 'out.tgap', '--refuse-slivers');
+  assert.equal(r.code, 1);
+  assert.equal(r.stdout, '');
+  // The thinnest first: S2 is 2 x 0.02 / 10.008 = 0.0039968 wide, S 2 x 0.05 / 20.01 = 0.0049975.
+  assert.deepEqual(r.stderr.trimEnd().split('\n').slice(0, 4), [
+    'ssc generalize: slivers.geojson: 2 problems; the input is refused:',
+    '  sliver (2):',
+    '    feature #3 (id "S2"), at (1015, 2006): has a part 0.00400 wide (2 x area / perimeter), under the sliver width 0.0140 (without --refuse-slivers it is dissolved into feature #4 (id "C"))',
+    '    feature #1 (id "S"), at (1010, 2000): has a part 0.00500 wide (2 x area / perimeter), under the sliver width 0.0140 (without --refuse-slivers it is dissolved into feature #0 (id "A"))',
+  ]);
+  assert.deepEqual(readdirSync(c.dir).sort(), c.files, 'nothing written');
+  // A sliver width under theirs: no slivers, the input is taken as it is.
+  await expectPartition(c, {
+    counts: { faces: 5, edges: 12, nodes: 8, vertices: 13 },
+    areas: [100, 0.05, 9.995 * 6, 0.02, 9.995 * 4 - 0.02],
+    shared: {
+      'A|S': 10, 'B|S': 6, 'C|S': 4, 'B|C': 4.995, 'B|S2': 5, 'C|S2': 5.004,
+      'A|out': 30, 'S|out': 0.01, 'B|out': 15.995, 'S2|out': 0.004, 'C|out': 13.991,
+    },
+  }, '--sliver-width', '0.003');
+});
+
+test('a sliver narrower than the precision is left out before the snapping, and counted', async (t) => {
+  // S is 0.4 mm wide between A and B: snapped to the millimetre it has two distinct points.
+  const doc = collection([
+    feature('A', polygon(rect(0, 0, 10, 10))),
+    feature('S', polygon(rect(10, 0, 10.0004, 10))),
+    feature('B', polygon(rect(10.0004, 0, 20, 10))),
+  ]);
+  const c = writeCase(t, 'collapsed.geojson', doc);
+  // S is 2 x 0.004 / 20.0008 = 0.0004 wide, under the precision: left out. B's 2 points at
+  // x = 10.0004 are snapped to x = 10, where A's side is.
+  await expectPartition(c, {
+    counts: { faces: 2, edges: 3, nodes: 2, vertices: 6 },
+    repairs: { snappedPoints: 2, slivers: 1 },
+    areas: [100, 100],
+    shared: { 'A|B': 10, 'A|out': 30, 'B|out': 30 },
+  });
+  // Without slivers (--sliver-width 0) it is refused as before.
+  await expectRefusal(writeCase(t, 'collapsed.geojson', doc), { feature: [1, 'S'], message: /has a ring with fewer than 3 distinct points/, location: isAt(10, 0) }, '--sliver-width', '0');
+});
+
+test('a noisy sliver under a millimetre along a sloped boundary is dissolved, and the area kept', async (t) => {
+  // A boundary 30 long at 40 degrees between A (left of it) and B; S runs along it, 0.4 to
+  // 0.8 mm wide, with 26 points a side that wobble by up to 0.2 mm and are spaced unevenly,
+  // as coordinate noise leaves them. Snapped to the millimetre its sides cross each other.
+  const [dx, dy] = [Math.cos(0.7), Math.sin(0.7)], [nx, ny] = [-dy, dx];
+  const along = (i: number, k: number, side: number): XY => {
+    const t = i === 0 || i === 25 ? 1.2 * i : 1.2 * i + 0.3 * Math.sin(i * k);
+    const off = side * (0.0003 + 0.0001 * Math.sin(i * 1.7) + (i === 0 || i === 25 ? 0 : 0.0001 * Math.cos(i * k)));
+    return [10 + dx * t + nx * off, 10 + dy * t + ny * off];
+  };
+  const left = Array.from({ length: 26 }, (_, i) => along(i, 2.3, 1));
+  const right = Array.from({ length: 26 }, (_, i) => along(i, 3.1, -1));
+  const far = (p: XY, s: number): XY => [p[0] + s * 20 * nx, p[1] + s * 20 * ny];
+  const A: XY[] = [...left, far(left[25]!, 1), far(left[0]!, 1)];
+  const B: XY[] = [...[...right].reverse(), far(right[0]!, -1), far(right[25]!, -1)];
+  const S: XY[] = [...left, ...[...right].reverse()];
+  // Apart from them, X | T | Y: T is 5 mm wide, more than the precision, and goes to X (10
+  // along each; the lower feature on a tie) once the partition is built.
+  const doc = collection([
+    feature('A', polygon(A)), feature('S', polygon(S)), feature('B', polygon(B), 'water'),
+    feature('X', polygon(rect(100, 0, 110, 10))), feature('T', polygon(rect(110, 0, 110.005, 10))), feature('Y', polygon(rect(110.005, 0, 120, 10))),
+  ]);
+  // --refuse-slivers names both, each the way it would be dissolved, and writes nothing.
+  const refused = writeCase(t, 'noisy.geojson', doc);
+  const no = await generalize(refused, 'out.tgap', '--refuse-slivers');
+  assert.equal(no.code, 1);
+  const lines = no.stderr.trimEnd().split('\n');
+  assert.deepEqual(lines.slice(0, 2), ['ssc generalize: noisy.geojson: 2 problems; the input is refused:', '  sliver (2):']);
+  assert.match(lines[2]!, /^ {4}feature #4 \(id "T"\), at \(1110, 2000\): has a part 0\.00500 wide .* dissolved into feature #3 \(id "X"\)\)$/);
+  assert.match(lines[3]!, /^ {4}feature #1 \(id "S"\), at \([\d., ]+\): has a part 0\.000[5-7]\d+ wide .*narrower than the precision 0\.001.* left out, and its neighbours meet\)$/);
+  assert.deepEqual(readdirSync(refused.dir).sort(), refused.files, 'nothing written');
+  const c = writeCase(t, 'noisy.geojson', doc);
+  // Without slivers (--sliver-width 0) the snapping makes S cross itself: refused.
+  const kept = await generalize(c, 'kept.tgap', '--sliver-width', '0');
+  assert.match(kept.stderr, /feature #1 \(id "S"\), at \([\d., ]+\): is self-intersecting/);
+  const r = await generalize(c, 'out.tgap');
+  assert.equal(r.code, 0, r.stderr);
+  const tg = await readTgap(r.out);
+  assert.equal(tg.meta.repairs.slivers, 2);
+  assert.deepEqual(tg.meta.attributes.map((a) => a.id), ['A', 'B', 'X', 'Y']);
+  assert.ok(Math.abs(tg.faces[3]!.area2 / 2 - 100.05) < 1e-6 && Math.abs(tg.faces[4]!.area2 / 2 - 9.995 * 10) < 1e-6, 'X took T');
+  // A and B now cover what A, S and B covered, up to the snapping: half a millimetre along
+  // the 4 x 20 + 2 x 30 of outside boundary at most.
+  const area = (r: XY[]): number => Math.abs(r.reduce((s, [x, y], i) => s + x * r[(i + 1) % r.length]![1] - r[(i + 1) % r.length]![0] * y, 0)) / 2;
+  const input = area(A) + area(S) + area(B);
+  const output = (tg.faces[1]!.area2 + tg.faces[2]!.area2) / 2;
+  assert.ok(Math.abs(output - input) < 0.0005 * 140, `area ${output}, input ${input}`);
 });
 
 // ---------------------------------------------------------------------------------------------
@@ -670,7 +825,7 @@ test('longitude/latitude without a crs member is projected to its UTM zone', asy
   near(x0 - 500000, 0.9996 * (a / Math.sqrt(w)) * Math.cos(lat) * ((2.85 * Math.PI) / 180), 'easting from the central meridian');
   assert.ok(y0 > 5.7e6 && y0 < 5.8e6, `northing ${y0}`);
   const { snappedPoints, ...rest } = tg.meta.repairs;
-  assert.deepEqual(rest, { closedRings: 0, duplicatePoints: 0, reorientedRings: 0, tJunctions: 0, mergedPoints: 0, spikes: 0 });
+  assert.deepEqual(rest, { closedRings: 0, duplicatePoints: 0, reorientedRings: 0, tJunctions: 0, mergedPoints: 0, spikes: 0, slivers: 0 });
   assert.ok(snappedPoints !== undefined && snappedPoints <= 8, 'at most the 8 ring points were snapped to the millimetre grid');
 });
 

@@ -21,7 +21,10 @@ export interface HalfEdges {
   out: Outgoing;
 }
 
-/** The half-edges of the rings, each with its twin, and with face 0 where no ring is across. */
+/**
+ * The half-edges of the rings, each with its twin, and with face 0 where no ring is across.
+ * The first ones are the rings' segments, ring after ring in order (slivers.ts relies on it).
+ */
 export function buildHalfEdges(rings: Ring[], xs: Float64Array, ys: Float64Array, refusal: Refusal): HalfEdges {
   const nv = xs.length;
   const { from, to, face, count: nh0 } = ringHalfEdges(rings);
@@ -89,6 +92,28 @@ function pairTwins(
     }
   }
   return twin;
+}
+
+/**
+ * The same half-edges with the faces given (one per half-edge, e.g. after a sliver's side was
+ * handed to its neighbour), without the segments that now have one face on both sides.
+ */
+export function withFaces(he: HalfEdges, faces: Int32Array, xs: Float64Array, ys: Float64Array): HalfEdges {
+  const newId = new Int32Array(he.count).fill(-1);
+  let n = 0;
+  for (let h = 0; h < he.count; h++) if (faces[h] !== faces[he.twin[h]!]) newId[h] = n++;
+  const from = new Int32Array(n), to = new Int32Array(n), face = new Int32Array(n), twin = new Int32Array(n);
+  for (let h = 0; h < he.count; h++) {
+    const k = newId[h]!;
+    if (k < 0) continue;
+    from[k] = he.from[h]!;
+    to[k] = he.to[h]!;
+    face[k] = faces[h]!;
+    twin[k] = newId[he.twin[h]!]!;
+  }
+  const out = outgoing(from, xs.length, n);
+  sortByAngle(out, from, to, xs, ys);
+  return { from, to, face, twin, count: n, out };
 }
 
 /** One half-edge per ring segment, the ring's face on its left. */

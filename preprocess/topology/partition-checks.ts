@@ -41,29 +41,9 @@ export function checkCrossings(he: HalfEdges, xs: Float64Array, ys: Float64Array
  * is an overlap (refused).
  */
 export function checkOutside(he: HalfEdges, xs: Float64Array, ys: Float64Array, refusal: Refusal, allowHoles: boolean): { area: number; x: number; y: number }[] {
-  const { from, to, face, twin, count: nh, out } = he;
+  const { from, to, face, twin } = he;
   const holes: { area: number; x: number; y: number }[] = [];
-  const seen = new Uint8Array(nh);
-  const cycles: { hs: number[]; area2: number; bbox: [number, number, number, number] }[] = [];
-  for (let h0 = 0; h0 < nh; h0++) {
-    if (face[h0] !== 0 || seen[h0]) continue;
-    const hs: number[] = [];
-    let h = h0;
-    let guard = 0;
-    do {
-      seen[h] = 1;
-      hs.push(h);
-      h = nextInFace(h, twin, to, out);
-      if (++guard > nh) throw new Error('outside boundary does not close');
-    } while (h !== h0);
-    const ids = hs.map((g) => from[g]!);
-    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
-    for (const v of ids) {
-      x0 = Math.min(x0, xs[v]!); y0 = Math.min(y0, ys[v]!);
-      x1 = Math.max(x1, xs[v]!); y1 = Math.max(y1, ys[v]!);
-    }
-    cycles.push({ hs, area2: ringArea2(ids, xs, ys), bbox: [x0, y0, x1, y1] });
-  }
+  const cycles = outsideCycles(he, xs, ys);
   for (const c of cycles) {
     if (c.area2 > 0) {
       // The outside on the left going counterclockwise: a hole in the union of all faces.
@@ -117,4 +97,38 @@ function windingAround(hs: number[], from: Int32Array, xs: Float64Array, ys: Flo
     }
   }
   return w;
+}
+
+/** A cycle of the outside's half-edges: a hole in the union of the faces when area2 > 0 (counterclockwise). */
+export interface OutsideCycle {
+  hs: number[];
+  area2: number;
+  bbox: [number, number, number, number];
+}
+
+/** The cycles the outside's half-edges (face 0) form. */
+export function outsideCycles(he: HalfEdges, xs: Float64Array, ys: Float64Array): OutsideCycle[] {
+  const { from, to, face, twin, count: nh, out } = he;
+  const seen = new Uint8Array(nh);
+  const cycles: OutsideCycle[] = [];
+  for (let h0 = 0; h0 < nh; h0++) {
+    if (face[h0] !== 0 || seen[h0]) continue;
+    const hs: number[] = [];
+    let h = h0;
+    let guard = 0;
+    do {
+      seen[h] = 1;
+      hs.push(h);
+      h = nextInFace(h, twin, to, out);
+      if (++guard > nh) throw new Error('outside boundary does not close');
+    } while (h !== h0);
+    const ids = hs.map((g) => from[g]!);
+    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+    for (const v of ids) {
+      x0 = Math.min(x0, xs[v]!); y0 = Math.min(y0, ys[v]!);
+      x1 = Math.max(x1, xs[v]!); y1 = Math.max(y1, ys[v]!);
+    }
+    cycles.push({ hs, area2: ringArea2(ids, xs, ys), bbox: [x0, y0, x1, y1] });
+  }
+  return cycles;
 }

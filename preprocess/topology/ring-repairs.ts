@@ -27,15 +27,22 @@ export function repairRings(rawRings: Ring[], xs: Float64Array, ys: Float64Array
   return rings;
 }
 
-/** Refuses rings of fewer than 3 points or no area; turns outer rings counterclockwise and holes clockwise. */
-export function orientRings(rings: Ring[], xs: Float64Array, ys: Float64Array, repairs: TopologyRepairs, refusal: Refusal): void {
+/**
+ * Turns outer rings counterclockwise and holes clockwise. A ring of fewer than 3 points or no
+ * area is refused, unless `sliver` takes it (a sliver the snapping collapsed); both are
+ * returned, to be left out.
+ */
+export function orientRings(rings: Ring[], xs: Float64Array, ys: Float64Array, repairs: TopologyRepairs, refusal: Refusal, sliver: (r: Ring) => boolean = () => false): Ring[] {
+  const collapsed: Ring[] = [];
   for (const r of rings) {
     const distinct = new Set(r.ids).size;
+    const a2 = distinct < 3 ? 0 : ringArea2(r.ids, xs, ys);
+    if (a2 === 0) collapsed.push(r);
+    if (a2 === 0 && sliver(r)) continue;
     if (distinct < 3) {
       refusal.note('ring', `has a ${r.outer ? 'ring' : 'hole'} with fewer than 3 distinct points`, r.face, xs[r.ids[0]!], ys[r.ids[0]!]);
       continue;
     }
-    const a2 = ringArea2(r.ids, xs, ys);
     if (a2 === 0) {
       refusal.note('ring', `has a ${r.outer ? 'ring' : 'hole'} of zero area`, r.face, xs[r.ids[0]!], ys[r.ids[0]!]);
       continue;
@@ -45,13 +52,24 @@ export function orientRings(rings: Ring[], xs: Float64Array, ys: Float64Array, r
       repairs.reorientedRings++;
     }
   }
+  return collapsed;
 }
 
-/** Inserts every vertex that lies on a segment (within the precision) into that segment. */
+/**
+ * Inserts every vertex that lies on a segment (within the precision) into that segment; but a
+ * vertex of another ring of the segment's own face (its hole, its outer ring, another of its
+ * parts) only when exactly on it: pulled onto the segment from near by, it would fold the ring
+ * onto that ring (an outer ring passing 0.09 mm from a vertex of its hole is a valid polygon,
+ * not an overlap). A vertex of the same ring is inserted: that is how a zero-width spike or a
+ * fold of the ring narrower than the precision closes up (cleanRing), where leaving it would
+ * have the snapping make the ring cross itself.
+ */
 function insertTJunctions(rings: Ring[], index: KDBush, alias: Int32Array, xs: Float64Array, ys: Float64Array, tol: number, repairs: TopologyRepairs): Ring[] {
   const tol2 = tol * tol;
   const out: Ring[] = [];
-  for (const r of rings) {
+  const own = new OwnVertices(rings, xs.length);
+  for (let ri = 0; ri < rings.length; ri++) {
+    const r = rings[ri]!;
     const ids = r.ids;
     const n = ids.length;
     let result: number[] | null = null;
@@ -76,6 +94,7 @@ function insertTJunctions(rings: Ring[], index: KDBush, alias: Int32Array, xs: F
           if (o !== 0) {
             // o is twice the triangle area: distance to the line is o / |ab|.
             if (tol === 0 || (o * o) / len2 > tol2) continue;
+            if (own.folds(a, b, v)) continue;
           }
           (inserts ??= []).push({ v, t });
         }
@@ -90,7 +109,7 @@ function insertTJunctions(rings: Ring[], index: KDBush, alias: Int32Array, xs: F
         result.push(b);
       }
     }
-    out.push(result ? { face: r.face, outer: r.outer, ids: Int32Array.from(result) } : r);
+    out.push(result ? { ...r, ids: Int32Array.from(result) } : r);
   }
   return out;
 }
@@ -171,4 +190,53 @@ export function cleanRing(ids: Int32Array, repairs: TopologyRepairs): Int32Array
     } else break;
   }
   return changed ? Int32Array.from(out) : ids;
+}
+
+/**
+ * Which rings each vertex is on (built when first asked): tells whether a vertex near a segment
+ * is on another ring of the face the segment bounds, where moving it onto the segment folds
+ * one ring onto the other.
+ */
+class OwnVertices {
+  private start: Int32Array | null = null;
+  /** Per vertex, its (ring, position) pairs: ring indices and positions interleaved. */
+  private list: Int32Array | null = null;
+
+  constructor(private readonly rings: readonly Ring[], private readonly nv: number) {}
+
+  /** True when v is on another ring of a face whose ring has the segment a-b. */
+  folds(a: number, b: number, v: number): boolean {
+    const { rings } = this;
+    const { start, list } = this.build();
+    for (let i = start[a]!; i < start[a + 1]!; i += 2) {
+      const ri = list[i]!, p = list[i + 1]!;
+      const ids = rings[ri]!.ids;
+      const n = ids.length;
+      if (ids[(p + 1) % n] !== b && ids[(p + n - 1) % n] !== b) continue;
+      // Ring ri has the segment a-b.
+      for (let k = start[v]!; k < start[v + 1]!; k += 2) {
+        const rj = list[k]!;
+        if (rj !== ri && rings[rj]!.face === rings[ri]!.face) return true;
+      }
+    }
+    return false;
+  }
+
+  private build(): { start: Int32Array; list: Int32Array } {
+    if (this.start && this.list) return { start: this.start, list: this.list };
+    const start = new Int32Array(this.nv + 1);
+    for (const r of this.rings) for (const v of r.ids) start[v + 1]! += 2;
+    for (let v = 0; v < this.nv; v++) start[v + 1]! += start[v]!;
+    const fill = start.slice(0, this.nv);
+    const list = new Int32Array(start[this.nv]!);
+    this.rings.forEach((r, ri) => {
+      r.ids.forEach((v, p) => {
+        list[fill[v]!++] = ri;
+        list[fill[v]!++] = p;
+      });
+    });
+    this.start = start;
+    this.list = list;
+    return { start, list };
+  }
 }

@@ -10,7 +10,7 @@ function problemsOf(points: [number, number][], ids = Int32Array.from(points.key
   const xs = Float64Array.from(points.map((p) => p[0])), ys = Float64Array.from(points.map((p) => p[1]));
   const problems = new ProblemList('t.geojson');
   const refusal = new Refusal([{ ref: { index: 0, id: 'r' }, properties: {}, polygons: [] }], problems);
-  checkRingSelfCrossings([{ face: 1, outer: true, ids }], xs, ys, refusal);
+  checkRingSelfCrossings([{ face: 1, outer: true, ids, part: 0, ring: 0 }], xs, ys, refusal);
   return problems;
 }
 

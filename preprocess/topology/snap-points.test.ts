@@ -13,7 +13,7 @@ test('a grid of a power of ten rounds through the decimal text, so values on the
 });
 
 test('points shared by neighbours get one id; repeated and closing points are dropped and counted', () => {
-  const repairs = { closedRings: 0, duplicatePoints: 0, reorientedRings: 0, tJunctions: 0, snappedPoints: 0, mergedPoints: 0, spikes: 0 };
+  const repairs = { closedRings: 0, duplicatePoints: 0, reorientedRings: 0, tJunctions: 0, snappedPoints: 0, mergedPoints: 0, spikes: 0, slivers: 0 };
   const feature = (index: number, ring: number[]): { ref: { index: number; id: null }; properties: Record<string, unknown>; polygons: Float64Array[][] } =>
     ({ ref: { index, id: null }, properties: {}, polygons: [[Float64Array.from(ring)]] });
   const { rings, xs, ys } = snapPoints([

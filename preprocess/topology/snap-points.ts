@@ -12,7 +12,8 @@ export interface SnappedRings {
   ys: Float64Array;
 }
 
-export function snapPoints(features: readonly InputFeature[], precision: number, repairs: TopologyRepairs): SnappedRings {
+/** `skip(face, part)`: a polygon left out (a sliver narrower than the precision, slivers.ts). */
+export function snapPoints(features: readonly InputFeature[], precision: number, repairs: TopologyRepairs, skip: (face: number, part: number) => boolean = () => false): SnappedRings {
   let total = 0;
   for (const f of features) for (const p of f.polygons) for (const r of p) total += r.length >> 1;
   const hash = new PointHash(total);
@@ -20,7 +21,8 @@ export function snapPoints(features: readonly InputFeature[], precision: number,
   const rings: Ring[] = [];
   features.forEach((f, fi) => {
     const face = fi + 1;
-    for (const poly of f.polygons) {
+    f.polygons.forEach((poly, part) => {
+      if (skip(face, part)) return;
       poly.forEach((r, ri) => {
         const ids: number[] = [];
         for (let i = 0; i < r.length; i += 2) {
@@ -37,9 +39,9 @@ export function snapPoints(features: readonly InputFeature[], precision: number,
           ids.pop();
           repairs.duplicatePoints++;
         }
-        rings.push({ face, outer: ri === 0, ids: Int32Array.from(ids) });
+        rings.push({ face, outer: ri === 0, ids: Int32Array.from(ids), part, ring: ri });
       });
-    }
+    });
   });
   const nv = hash.size;
   return { rings, xs: hash.xs.subarray(0, nv), ys: hash.ys.subarray(0, nv) };
