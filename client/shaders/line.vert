@@ -1,6 +1,6 @@
 #version 300 es
 // Line pass: a quad around one segment of a cube line (one instance per segment), its corners
-// half the rule's width plus a pixel (for anti-aliasing) out from the segment and past its ends,
+// half the rule's width plus half a pixel (for anti-aliasing) out from the segment and past its ends,
 // so consecutive segments join round. A segment whose z range (intersected with its rule's
 // scale range) misses the slicing surface's z range over the view is moved out of clip space:
 // at a flat slice that is every segment not on the map, so they cost no fragments. The quad is
@@ -60,7 +60,8 @@ void main() {
   vec2 n = vec2(-t.y, t.x);
   // Along t from a and across n: the box of both ends and both targets.
   vec2 at = vec2(dot(vAT - vA, t), dot(vAT - vA, n)), bt = vec2(dot(vBT - vA, t), dot(vBT - vA, n));
-  float reach = vHalf + 1.0;
+  // line.frag's box filter covers nothing from half a pixel beyond the edge: the quad stops there.
+  float reach = vHalf + 0.5;
   float lo = min(0.0, min(at.x, bt.x)) - reach, hi = max(len, max(at.x, bt.x)) + reach;
   float left = max(0.0, max(at.y, bt.y)) + reach, right = min(0.0, min(at.y, bt.y)) - reach;
   // Strip order: a-left, a-right, b-left, b-right.
