@@ -15,6 +15,7 @@ import { parseIndex, type ChunkLeaf, type IndexNode } from '../format/cube-index
 import { createStaticServer } from '../server/static-server.js';
 import { launchChromium } from '../e2e/helpers/browser.js';
 import { datasets, median, root } from './datasets.js';
+import { linesInView } from './lines-in-view.js';
 
 const run = promisify(execFile);
 const WIDTH = 1280, HEIGHT = 720, FRAMES = 60, WARMUP = 5;
@@ -55,7 +56,7 @@ async function main(): Promise<void> {
   const filter = process.argv[2];
   const sets = datasets(filter, ['bgt_otterlo_1800m', 'nlcd_zion']);
   const browser = await launchChromium();
-  const rows: string[][] = [['dataset', 'view', 'scale', 'first map ms', 'frame ms median', 'frame ms p95', 'no lines ms', 'triangles/frame', 'at 5 places', 'segments/frame', 'query ms/frame', 'chunks', 'MB', 'line MB', 'long tasks load', 'long tasks frames']];
+  const rows: string[][] = [['dataset', 'view', 'scale', 'first map ms', 'frame ms median', 'frame ms p95', 'no lines ms', 'triangles/frame', 'at 5 places', 'segments/frame', 'line vertices in view', 'query ms/frame', 'chunks', 'MB', 'line MB', 'long tasks load', 'long tasks frames']];
   const ratios: string[] = [];
   try {
     for (const d of sets) {
@@ -155,13 +156,14 @@ async function main(): Promise<void> {
               ));
             }
             triangleMeans.push(placed.reduce((a, b) => a + b, 0) / placed.length);
+            const lineVertices = await linesInView(path.join(dir, 'cube'), index, scale, centre);
             rows.push([
               d.name, name, `1:${Math.round(scale)}`,
               firstMs === null ? 'never' : firstMs.toFixed(0),
               median(frameMs).toFixed(1), p95(frameMs).toFixed(1), median(noLinesMs).toFixed(1),
               Math.round(median(kept.map((s) => s.triangles))).toString(),
               Math.round(triangleMeans[triangleMeans.length - 1]!).toString(),
-              Math.round(median(kept.map((s) => s.segments))).toString(),
+              Math.round(median(kept.map((s) => s.segments))).toString(), String(lineVertices),
               median(kept.map((s) => s.queryMs)).toFixed(2),
               String(files.length), (bytes / 1e6).toFixed(2), lineMb.toFixed(2),
               fmt(longLoad), fmt(longFrames),
