@@ -146,6 +146,24 @@ export interface SurfaceStats extends TriangulateStats {
   chordSplits: number;
 }
 
+/** What made a run of surface triangles (bench/explain-frames.ts attributes a frame's changes to it). */
+export type OriginKind = 'floor' | 'merge' | 'split' | 'simplify' | 'reemit';
+
+/**
+ * Triangles first..end (not including end) of the surfaces came from one event of `step`:
+ * a merge (with the copies at the winner's re-emits), one receiving face's part of a split,
+ * the removals of one edge version, a re-emit, or one face's floor. `face`: the loser (the
+ * lower face of a removal), `into`: the winner (the upper face).
+ */
+export interface SurfaceOrigin {
+  kind: OriginKind;
+  step: number;
+  face: number;
+  into: number;
+  first: number;
+  end: number;
+}
+
 export interface SurfaceOptions {
   /** Smooth merges: the loser's area tilted over its transition (docs/FORMAT.md, "Smooth cube"). */
   smooth?: boolean;
@@ -173,6 +191,10 @@ const LEVEL_ROUNDS = 8;
 interface Ramp {
   zStart: number;
   end: number;
+  /** The earliest z its front could leave the shared boundary (zMerge: none), before any wait above older surfaces. */
+  zFront: number;
+  /** When tilted, the z at which the winner reaches each of the area's vertices. */
+  reached?: (v: number) => number | undefined;
 }
 
 /** A removed vertex's triangle (counterclockwise), passing from `lower` to `upper` at its phase. */
@@ -204,6 +226,12 @@ export interface MergeTransition {
   into: number;
   zStart: number;
   zMerge: number;
+  /**
+   * What bounded zStart: the earliest start allowed (a zoom level back, reachBackZ), and the
+   * earliest z at which the front could leave the shared boundary (the winner beside it).
+   */
+  zFoot: number;
+  zFront: number;
   /** Drawn tilted (with --smooth, room in z and a vertex off the shared boundary). */
   tilted: boolean;
   /**
@@ -242,7 +270,7 @@ export function reachBackZ(info: ScaleInfo, z: number): number {
  * `smooth`, `input` without the re-emits of faces that end soon after (late-reemits.ts), whose
  * faces are the ones to write beside the surfaces.
  */
-export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surfaces: Surfaces; stats: SurfaceStats; transitions: MergeTransition[]; splits: SplitTransition[]; tgap: Tgap } {
+export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surfaces: Surfaces; stats: SurfaceStats; transitions: MergeTransition[]; splits: SplitTransition[]; origins: SurfaceOrigin[]; tgap: Tgap } {
   // The scale of every step: skipping re-emits keeps the tGAP's meta.
   const scaleInfo = scaleInfoOf(input);
   const t = opts.smooth ? skipLateReemits(input, (z) => reachBackZ(scaleInfo, z)).tgap : input;
@@ -275,12 +303,15 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   // the winner's side must be the winner's, the neighbour's transition over, so that what the
   // winner gains stays attached to it).
   const sides = new EdgeSideTimes(edges);
-  /** f's side of its edges changed at z (f merged, split or was replaced; `at` resolves an edge's faces as f had them). */
-  const relabel = (f: number, z: number, at: (face: number) => number): void => {
+  /**
+   * f's side of its edges changed at z (f merged, split or was replaced; `at` resolves an edge's
+   * faces as f had them); `reached`: vertex by vertex, as a merge's front reached them.
+   */
+  const relabel = (f: number, z: number, at: (face: number) => number, reached?: (v: number) => number | undefined): void => {
     for (const e of faceEdges.get(f) ?? []) {
       const edge = edges[e]!;
-      if (at(edge.left) === f) sides.relabel(e, Side.Left, z);
-      if (at(edge.right) === f) sides.relabel(e, Side.Right, z);
+      if (at(edge.left) === f) sides.relabel(e, Side.Left, z, reached);
+      if (at(edge.right) === f) sides.relabel(e, Side.Right, z, reached);
     }
   };
   /** The loser's edges shared with the winner at state s. */
@@ -432,7 +463,10 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         if (group[t]! <= i) out.add(own[3 * t]!, own[3 * t + 1]!, own[3 * t + 2]!, level, members[i + 1]!, members[i]!);
       }
     });
-    return { zStart: z ? zLow - SURFACE_GAP / 2 : zMerge, end };
+    let zFront = Infinity;
+    for (const t of shared.values()) zFront = Math.min(zFront, Math.max(t, zFoot));
+    const ramp = z;
+    return { zStart: z ? zLow - SURFACE_GAP / 2 : zMerge, end, zFront: Math.min(zFront, zMerge), ...(ramp ? { reached: (v: number) => ramp.get(v) } : {}) };
   };
   /**
    * The ramp `z` changed so that no triangle crosses one of the winner's re-emit levels: the
@@ -480,10 +514,19 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   };
   const transitions: MergeTransition[] = [];
   const splits: SplitTransition[] = [];
+  const origins: SurfaceOrigin[] = [];
+  /** The triangles from `first` to the last one added came from this event. */
+  const origin = (kind: OriginKind, step: number, face: number, into: number, first: number): void => {
+    if (out.count > first) origins.push({ kind, step, face, into, first, end: out.count });
+  };
 
   for (const e of born[0]!) if (edges[e]!.stepHigh > 0) attach(e, 0);
   for (let f = 1; f < faces.length; f++) {
-    if (faces[f]!.stepLow === 0 && faces[f]!.stepHigh > 0) stats.floor += emitFace(f, 0, 0, f, 0);
+    if (faces[f]!.stepLow === 0 && faces[f]!.stepHigh > 0) {
+      const first = out.count;
+      stats.floor += emitFace(f, 0, 0, f, 0);
+      origin('floor', 0, 0, f, first);
+    }
   }
   let ev = 0;
   for (let k = 1; k <= steps; k++) {
@@ -497,19 +540,22 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       if (e.kind === EventKind.Merge) {
         const shared = sharedEdges(e.loser, e.into, k - 1);
         const first = out.count;
-        let ramp: Ramp = { zStart: z0, end: first };
+        let ramp: Ramp = { zStart: z0, end: first, zFront: z0 };
+        const zFoot = byFace ? Math.max(SURFACE_GAP, reachBack(z0)) : z0;
         if (byFace) {
           // No further back than one zoom level (the winner's re-emits meanwhile are handled there).
-          ramp = emitSmoothMerge(byFace, e.loser, e.into, k - 1, shared, Math.max(SURFACE_GAP, reachBack(z0)), z0, `m${ev}`);
+          ramp = emitSmoothMerge(byFace, e.loser, e.into, k - 1, shared, zFoot, z0, `m${ev}`);
           lieIn(e.into, first);
           byFace.hand(e.loser, e.into);
         } else {
           stats.merge += emitFace(e.loser, k - 1, z0, e.into, e.loser);
           ramp.end = out.count;
         }
-        transitions.push({ step: k, loser: e.loser, into: e.into, zStart: ramp.zStart, zMerge: z0, tilted: ramp.zStart < z0, first, end: ramp.end });
-        // The winner grows; the loser's neighbours now border the winner.
-        relabel(e.loser, z0, before);
+        transitions.push({ step: k, loser: e.loser, into: e.into, zStart: ramp.zStart, zMerge: z0, zFoot, zFront: ramp.zFront, tilted: ramp.zStart < z0, first, end: ramp.end });
+        origin('merge', k, e.loser, e.into, first);
+        // The winner grows; the loser's neighbours now border the winner, each boundary vertex
+        // from when the front reached it.
+        relabel(e.loser, z0, before, ramp.reached);
         handOn.push([e.loser, e.into]);
       } else if (e.kind === EventKind.Split) {
         const tv = e.tris!, tf = e.triFaces!;
@@ -530,11 +576,14 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
             if (part.zStart < z0) stats.tiltedSplits++;
             zStart = Math.min(zStart, part.zStart);
             lieIn(into, first);
+            origin('split', k, e.loser, into, first);
           }
           splits.push({ step: k, loser: e.loser, zStart, zSplit: z0 });
         } else {
+          const first = out.count;
           for (let i = 0; i < tf.length; i++) out.add(tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!, z0, tf[i]!, e.loser);
           stats.split += tf.length;
+          origin('split', k, e.loser, 0, first);
         }
         byFace?.drop(e.loser);
         relabel(e.loser, z0, before);
@@ -606,11 +655,16 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       }
       lieIn(upper, out.count - 1);
       stats.simplify++;
+      // One origin per edge version and side (its removals are consecutive).
+      const prev = removals[r - 1];
+      if (prev?.edge === edge && prev.upper === upper) origins[origins.length - 1]!.end = out.count;
+      else origin('simplify', k, lower, upper, out.count - 1);
     });
     // Replaced faces: their whole area, as it is at the end of the step, drawn again.
     for (const [f, g] of reemits) {
       const first = out.count;
       stats.reemit += emitFace(g, k, phaseZ(k, REEMIT_PHASE), g, f);
+      origin('reemit', k, f, g, first);
       byFace?.drop(f);
       lieIn(g, first);
     }
@@ -620,5 +674,5 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     const u = out.upper[i]!;
     out.zEnd[i] = u > 0 ? Math.min(zTop, faceEndZ(faces[u]!, steps)) : zTop;
   }
-  return { surfaces: out, stats, transitions, splits, tgap: t };
+  return { surfaces: out, stats, transitions, splits, origins, tgap: t };
 }
