@@ -24,6 +24,7 @@ import { CpuSlicer } from '../preprocess/ssc/cpu-slicer.js';
 import { buildSurfaces, reachBackZ, type MergeTransition, type SplitTransition, type SurfaceOrigin, type Surfaces } from '../preprocess/ssc/surfaces.js';
 import { runSsc } from '../testing/run-ssc.js';
 import { datasets } from './datasets.js';
+import { FlickerCounter } from './flicker.js';
 import { median, percentile } from './stats.js';
 import { printTable } from './table.js';
 import { zoomZs } from './zoom-frames.js';
@@ -86,8 +87,23 @@ function explain(name: string, tgap: Tgap, smooth: boolean): void {
   const changedPx: number[] = [];
   let before: CpuSlicer | undefined;
   const t0 = performance.now();
+  // Flicker (bench/flicker.ts) by the event whose triangle brings a pixel back to a class.
+  const flicker = new FlickerCounter(width, height);
+  const flickerBy = new Map<number, number>();
+  const faceIds = new Uint32Array(width * height);
   zs.forEach((z, f) => {
     const sl = sliceSurfaces(s, byZ, classOf, view, z);
+    for (let p = 0; p < faceIds.length; p++) faceIds[p] = sl.ids[p] === 0 ? 0 : s.upper[sl.ids[p]! - 1]!;
+    const flickered = flicker.flickering;
+    flicker.add({ ids: faceIds, classes: sl.classes });
+    if (flicker.flickering > flickered) {
+      for (let p = 0; p < faceIds.length; p++) {
+        const i = p % width, j = Math.floor(p / width);
+        if (!flicker.flickeredIn(i, j, f)) continue;
+        const o = originOf(origins, sl.ids[p]! - 1);
+        flickerBy.set(o, (flickerBy.get(o) ?? 0) + 1);
+      }
+    }
     if (before) {
       let domain = 0, changed = 0;
       for (let p = 0; p < sl.ids.length; p++) {
@@ -111,6 +127,13 @@ function explain(name: string, tgap: Tgap, smooth: boolean): void {
   console.log(`\n${name} ${cube}: ${s.count} triangles, ${origins.length} events, sliced in ${((performance.now() - t0) / 1000).toFixed(0)} s`);
   console.log(`  per frame: worst ${pct(worst)} (frame ${shares.indexOf(worst) + 1}), p95 ${pct(percentile(shares, 0.95))}, median ${pct(median(shares))}, worst/median ${(worst / median(shares)).toFixed(2)}`);
   const merges = new Map<number, MergeTransition>(built.transitions.map((m) => [m.first, m]));
+  const flickerKinds = new Map<string, number>();
+  for (const [o, n] of flickerBy) flickerKinds.set(origins[o]!.kind, (flickerKinds.get(origins[o]!.kind) ?? 0) + n);
+  console.log(`  flicker: ${flicker.flickering} px (face back: ${flicker.faceReturns}), brought back by ${flickerBy.size} events: ${[...flickerKinds].map(([k, n]) => `${k} ${n}`).join(', ')}`);
+  for (const [o, n] of [...flickerBy].sort((a, b) => b[1] - a[1]).slice(0, 5)) {
+    const origin = origins[o]!;
+    console.log(`    ${origin.kind} of step ${origin.step}, ${origin.face} -> ${origin.into} (classes ${faces[origin.face]?.classIndex ?? '-'} -> ${faces[origin.into]?.classIndex ?? '-'}): ${n} px`);
+  }
   const splits = new Map<number, SplitTransition>(built.splits.map((p) => [p.loser, p]));
   /** The z range an origin's change spans, and the earliest it could have started. */
   const span = (o: SurfaceOrigin): { zStart: number; zEnd: number } => {

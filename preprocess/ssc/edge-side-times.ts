@@ -3,10 +3,7 @@
 // once the winner lies beside it. A new version of an edge (its chain simplified, or joined with
 // another when a merge removed the boundary between them) keeps its parents' faces, so its
 // vertices keep their parents' times; only that side's face changing (a merge, a split, a
-// re-emit) or an edge made afresh starts a new time. A smooth merge hands the loser's side to
-// the winner vertex by vertex, as its front reaches each one: a later merge into the winner
-// across that boundary may leave a vertex as soon as the winner is there, not only once the
-// whole merge is over.
+// re-emit) or an edge made afresh starts a new time.
 import { phaseZ, type TgapEdge } from '../../format/tgap-model.js';
 
 export const enum Side {
@@ -17,8 +14,6 @@ export const enum Side {
 export class EdgeSideTimes {
   /** Per edge and side, the latest change of the face on it since the edge was made (its birth when made afresh). */
   private readonly own: Float64Array;
-  /** Per edge and side relabelled by a front, the z at which it reached each vertex (over `own`). */
-  private readonly reached = new Map<number, Map<number, number>>();
   /** Per edge and side, its parents' vertices' times (parents no longer change). */
   private readonly inherited = new Map<number, Map<number, number>>();
 
@@ -29,35 +24,17 @@ export class EdgeSideTimes {
     });
   }
 
-  /**
-   * The face on edge e's `side` changed at z; with `at`, vertex by vertex, at the z it gives
-   * (a front's arrival; undefined: z).
-   */
-  relabel(e: number, side: Side, z: number, at?: (v: number) => number | undefined): void {
-    const key = 2 * e + side;
-    const before = this.own[key]!;
-    const old = this.reached.get(key);
-    this.own[key] = Math.max(before, z);
-    this.reached.delete(key);
-    if (!at) return;
-    const m = new Map<number, number>();
-    for (const v of this.edges[e]!.verts) {
-      const zv = at(v);
-      if (zv !== undefined && zv < z) m.set(v, Math.max(zv, old?.get(v) ?? before));
-    }
-    if (m.size > 0) this.reached.set(key, m);
+  /** The face on edge e's `side` changed at z. */
+  relabel(e: number, side: Side, z: number): void {
+    this.own[2 * e + side] = Math.max(this.own[2 * e + side]!, z);
   }
 
   /** Per vertex of edge e, since when the face on its `side` has been there. */
   vertexTimes(e: number, side: Side): Map<number, number> {
     const base = this.parentTimes(e, side);
     const own = this.own[2 * e + side]!;
-    const reached = this.reached.get(2 * e + side);
     const out = new Map<number, number>();
-    for (const v of this.edges[e]!.verts) {
-      const t = reached?.get(v) ?? own;
-      out.set(v, Math.max(base.get(v) ?? t, t));
-    }
+    for (const v of this.edges[e]!.verts) out.set(v, Math.max(base.get(v) ?? own, own));
     return out;
   }
 

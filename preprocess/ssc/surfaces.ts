@@ -4,7 +4,7 @@
 // - the floor (z = 0): every input face, nothing below;
 // - a merge: the loser's area (and, when the winner is replaced by a new face, the winner's);
 //   with `smooth`, tilted instead: a front rising from the boundary the loser shares with the
-//   winner, up to a zoom level before the merge, above the older surfaces (smooth-merge.ts);
+//   winner, up to a zoom level and a half before the merge, above the older surfaces (smooth-merge.ts);
 // - a split: the triangles the split gave each receiving face; with `smooth`, tilted per
 //   receiving face as a merge of that part into it;
 // - simplification: each removed vertex's triangle, between the faces on either side; with
@@ -170,10 +170,13 @@ export interface SurfaceOptions {
 }
 
 /**
- * How far a smooth merge may reach back: at most this factor in scale before the merge (one
- * zoom level, the map's default zoom step).
+ * How far a smooth merge may reach back: at most this factor in scale before the merge, a zoom
+ * level and a half (the map's default zoom step is x2). Big faces merging in the same zoom
+ * level were the worst frames of bgt_otterlo_1800m's zoom, most of them already reaching back
+ * as far as they could: measured with bench:smoothness (x2 -> x2.83, x4), Otterlo's worst frame
+ * 0.942% -> 0.902% (x4: 1.024%), nlcd_zion's 0.290% either way.
  */
-export const MAX_TRANSITION_RATIO = 2;
+export const MAX_TRANSITION_RATIO = 2 * Math.SQRT2;
 
 /**
  * How far a tilted surface stays above an older one it overlaps, in steps: a 32nd of a step
@@ -193,8 +196,6 @@ interface Ramp {
   end: number;
   /** The earliest z its front could leave the shared boundary (zMerge: none), before any wait above older surfaces. */
   zFront: number;
-  /** When tilted, the z at which the winner reaches each of the area's vertices. */
-  reached?: (v: number) => number | undefined;
 }
 
 /** A removed vertex's triangle (counterclockwise), passing from `lower` to `upper` at its phase. */
@@ -227,7 +228,7 @@ export interface MergeTransition {
   zStart: number;
   zMerge: number;
   /**
-   * What bounded zStart: the earliest start allowed (a zoom level back, reachBackZ), and the
+   * What bounded zStart: the earliest start allowed (reachBackZ), and the
    * earliest z at which the front could leave the shared boundary (the winner beside it).
    */
   zFoot: number;
@@ -255,8 +256,8 @@ export interface SplitTransition {
 }
 
 /**
- * The earliest z of a transition ending at z: one zoom level before, and within the first two
- * levels half way (in scale) back to the base scale, so that their transitions do not all start
+ * The earliest z of a transition ending at z: MAX_TRANSITION_RATIO before in scale, and within
+ * the first three zoom levels half way (in scale) back to the base scale, so that their transitions do not all start
  * at the floor (where the map starts, every one of them would be moving at once). It grows with
  * z, and z only grows as the tGAP is replayed, so older surfaces below it are never needed again.
  */
@@ -303,15 +304,12 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   // the winner's side must be the winner's, the neighbour's transition over, so that what the
   // winner gains stays attached to it).
   const sides = new EdgeSideTimes(edges);
-  /**
-   * f's side of its edges changed at z (f merged, split or was replaced; `at` resolves an edge's
-   * faces as f had them); `reached`: vertex by vertex, as a merge's front reached them.
-   */
-  const relabel = (f: number, z: number, at: (face: number) => number, reached?: (v: number) => number | undefined): void => {
+  /** f's side of its edges changed at z (f merged, split or was replaced; `at` resolves an edge's faces as f had them). */
+  const relabel = (f: number, z: number, at: (face: number) => number): void => {
     for (const e of faceEdges.get(f) ?? []) {
       const edge = edges[e]!;
-      if (at(edge.left) === f) sides.relabel(e, Side.Left, z, reached);
-      if (at(edge.right) === f) sides.relabel(e, Side.Right, z, reached);
+      if (at(edge.left) === f) sides.relabel(e, Side.Left, z);
+      if (at(edge.right) === f) sides.relabel(e, Side.Right, z);
     }
   };
   /** The loser's edges shared with the winner at state s. */
@@ -465,8 +463,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     });
     let zFront = Infinity;
     for (const t of shared.values()) zFront = Math.min(zFront, Math.max(t, zFoot));
-    const ramp = z;
-    return { zStart: z ? zLow - SURFACE_GAP / 2 : zMerge, end, zFront: Math.min(zFront, zMerge), ...(ramp ? { reached: (v: number) => ramp.get(v) } : {}) };
+    return { zStart: z ? zLow - SURFACE_GAP / 2 : zMerge, end, zFront: Math.min(zFront, zMerge) };
   };
   /**
    * The ramp `z` changed so that no triangle crosses one of the winner's re-emit levels: the
@@ -499,7 +496,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
    * Where a smooth removal's corner starts to recede: the triangle (a, v, b) tilts from its
    * corner v (the receding vertex) up to its chord, at the removal's z or before it when later
    * removals of the step overlap it (removal-heights.ts), so the upper face takes
-   * it from the corner, beside which it lies. No further back than one zoom level, nor before
+   * it from the corner, beside which it lies. No further back than reachBackZ, nor before
    * the upper face was created or lay beside the corner (its side of the parent chain), and
    * above every older surface in the losing face's area.
    */
@@ -543,7 +540,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         let ramp: Ramp = { zStart: z0, end: first, zFront: z0 };
         const zFoot = byFace ? Math.max(SURFACE_GAP, reachBack(z0)) : z0;
         if (byFace) {
-          // No further back than one zoom level (the winner's re-emits meanwhile are handled there).
+          // No further back than reachBackZ (the winner's re-emits meanwhile are handled there).
           ramp = emitSmoothMerge(byFace, e.loser, e.into, k - 1, shared, zFoot, z0, `m${ev}`);
           lieIn(e.into, first);
           byFace.hand(e.loser, e.into);
@@ -553,9 +550,8 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         }
         transitions.push({ step: k, loser: e.loser, into: e.into, zStart: ramp.zStart, zMerge: z0, zFoot, zFront: ramp.zFront, tilted: ramp.zStart < z0, first, end: ramp.end });
         origin('merge', k, e.loser, e.into, first);
-        // The winner grows; the loser's neighbours now border the winner, each boundary vertex
-        // from when the front reached it.
-        relabel(e.loser, z0, before, ramp.reached);
+        // The winner grows; the loser's neighbours now border the winner.
+        relabel(e.loser, z0, before);
         handOn.push([e.loser, e.into]);
       } else if (e.kind === EventKind.Split) {
         const tv = e.tris!, tf = e.triFaces!;
