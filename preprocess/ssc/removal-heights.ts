@@ -1,6 +1,6 @@
 // How many removals of the same step still have to follow each one where it lies. The tGAP
 // puts a step's overlapping removal triangles in successive phases (preprocess/tgap/simplify.ts),
-// all inside that step. A smooth cube lets each one recede over up to a zoom level and a half; but an
+// all inside that step. A smooth cube lets each one recede over up to a zoom level; but an
 // overlapping later one must lie above it, so it could only start when the one before had
 // ended, at its phase, and was squeezed into a fraction of the step. Where a refresh simplifies
 // every edge at once, thousands are: nlcd_zion's worst frame. Knowing that h more must follow

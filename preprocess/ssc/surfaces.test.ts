@@ -52,7 +52,7 @@ test('a smooth merge tilts the loser from the shared boundary (hand-worked z and
   const t = fixtureTgap(THREE, ['a']);
   assert.deepEqual(t.events.map((e) => [e.kind, e.step, e.loser, e.into]), [[EventKind.Merge, 1, L, W], [EventKind.Merge, 2, Z, W]]);
   const { surfaces: s, transitions } = buildSurfaces(t, { smooth: true });
-  // Within the first three zoom levels a transition reaches back half way, in scale, to the base
+  // Within the first two zoom levels a transition reaches back half way, in scale, to the base
   // scale: to the z of the geometric mean of the base scale and the merge's scale. L's ramp
   // starts there at x = 4; Z's there too (later than a gap above merge 1, when W came to lie
   // beside it at x = 6).

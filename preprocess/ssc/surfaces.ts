@@ -4,7 +4,7 @@
 // - the floor (z = 0): every input face, nothing below;
 // - a merge: the loser's area (and, when the winner is replaced by a new face, the winner's);
 //   with `smooth`, tilted instead: a front rising from the boundary the loser shares with the
-//   winner, up to a zoom level and a half before the merge, above the older surfaces (smooth-merge.ts);
+//   winner, up to a zoom level before the merge, above the older surfaces (smooth-merge.ts);
 // - a split: the triangles the split gave each receiving face; with `smooth`, tilted per
 //   receiving face as a merge of that part into it;
 // - simplification: each removed vertex's triangle, between the faces on either side; with
@@ -170,13 +170,13 @@ export interface SurfaceOptions {
 }
 
 /**
- * How far a smooth merge may reach back: at most this factor in scale before the merge, a zoom
- * level and a half (the map's default zoom step is x2). Big faces merging in the same zoom
- * level were the worst frames of bgt_otterlo_1800m's zoom, most of them already reaching back
- * as far as they could: measured with bench:smoothness (x2 -> x2.83, x4), Otterlo's worst frame
- * 0.942% -> 0.902% (x4: 1.024%), nlcd_zion's 0.290% either way.
+ * How far a smooth merge may reach back: at most this factor in scale before the merge (one
+ * zoom level, the map's default zoom step). Measured at 1280x720: x2.83 took Otterlo's worst
+ * frame from 0.942% to 0.902% (nlcd_zion's stayed 0.290%; x4: 1.024%), but left 4 of
+ * bgt_otterlo_400m's 337 merges with raster pixels apart from the winner at 4x (e2e
+ * pipeline-cube allows 3; exactly, all attached), so it stays one zoom level.
  */
-export const MAX_TRANSITION_RATIO = 2 * Math.SQRT2;
+export const MAX_TRANSITION_RATIO = 2;
 
 /**
  * How far a tilted surface stays above an older one it overlaps, in steps: a 32nd of a step
@@ -256,8 +256,8 @@ export interface SplitTransition {
 }
 
 /**
- * The earliest z of a transition ending at z: MAX_TRANSITION_RATIO before in scale, and within
- * the first three zoom levels half way (in scale) back to the base scale, so that their transitions do not all start
+ * The earliest z of a transition ending at z: one zoom level before, and within the first two
+ * levels half way (in scale) back to the base scale, so that their transitions do not all start
  * at the floor (where the map starts, every one of them would be moving at once). It grows with
  * z, and z only grows as the tGAP is replayed, so older surfaces below it are never needed again.
  */
