@@ -40,12 +40,12 @@ export class FlickerCounter {
         const p = j * W + i;
         const id = f.ids[p]!;
         if (id === 0 || nearBoundary(f.ids, W, H, i, j)) continue;
-        const back = this.classes.show(p, f.classes[p]!);
+        const back = this.classes.show(p, f.classes[p]!, this.frames);
         if (back) {
           this.flickering++;
           if (this.examples.length < EXAMPLES) this.examples.push(`pixel ${i},${j}: classes ${back.join(' ')} (back in frame ${this.frames})`);
         }
-        if (this.faces.show(p, id)) this.faceReturns++;
+        if (this.faces.show(p, id, this.frames)) this.faceReturns++;
       }
     }
     this.frames++;
@@ -54,6 +54,11 @@ export class FlickerCounter {
   /** Whether the pixel at column i, row j has flickered (gone back to a class) so far. */
   flickered(i: number, j: number): boolean {
     return this.classes.returned(j * this.width + i);
+  }
+
+  /** Whether the pixel at column i, row j first went back to a class in frame `frame` (0: the first added). */
+  flickeredIn(i: number, j: number, frame: number): boolean {
+    return this.classes.returnedIn(j * this.width + i, frame);
   }
 
   /** Whether the pixel at column i, row j has gone back to a face so far. */
@@ -68,15 +73,16 @@ class Shown {
   private readonly last: Int32Array;
   /** Per pixel that changed, the values it showed before its current one. */
   private readonly earlier = new Map<number, number[]>();
-  private readonly flagged: Uint8Array;
+  /** Per pixel, 1 + the frame of its first return (0: none). */
+  private readonly flagged: Int32Array;
 
   constructor(n: number) {
     this.last = new Int32Array(n).fill(-1);
-    this.flagged = new Uint8Array(n);
+    this.flagged = new Int32Array(n);
   }
 
-  /** Pixel p shows `x`; the values it went through when this is its first return to one. */
-  show(p: number, x: number): number[] | null {
+  /** Pixel p shows `x` in `frame`; the values it went through when this is its first return to one. */
+  show(p: number, x: number, frame: number): number[] | null {
     const was = this.last[p]!;
     if (was === x) return null;
     this.last[p] = x;
@@ -86,12 +92,16 @@ class Shown {
     const first = before.includes(x) && !this.flagged[p];
     before.push(was);
     if (!first) return null;
-    this.flagged[p] = 1;
+    this.flagged[p] = frame + 1;
     return [...before, x];
   }
 
   returned(p: number): boolean {
-    return this.flagged[p] === 1;
+    return this.flagged[p]! > 0;
+  }
+
+  returnedIn(p: number, frame: number): boolean {
+    return this.flagged[p] === frame + 1;
   }
 }
 

@@ -14,7 +14,6 @@ import { mkdtempSync, rmSync, statSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { parseArgs } from 'node:util';
-import { zAtScale } from '../format/scale.js';
 import { readTgap } from '../format/tgap.js';
 import { scaleInfoOf, type Tgap } from '../format/tgap-model.js';
 import { fitView, type View } from '../preprocess/map/rasterize.js';
@@ -29,9 +28,9 @@ import { FlickerCounter } from './flicker.js';
 import { median, percentile } from './stats.js';
 import { printTable } from './table.js';
 import { classicTransitions, scaleRatios, smoothTransitions, transitionLengths, type Transition } from './transition-lengths.js';
-import { zoomFrames } from './zoom-frames.js';
+import { ZOOM_FRAMES, zoomFrames, zoomZs } from './zoom-frames.js';
 
-const FRAMES = 120;
+const FRAMES = ZOOM_FRAMES;
 // Issue 11's targets.
 const WORST_VS_CLASSIC = 0.5;
 const WORST_OVER_MEDIAN = 3;
@@ -65,12 +64,10 @@ async function zoom(cube: BenchCube): Promise<CubeFigures> {
   const reader = await CubeReader.open(cube.dir);
   const meta = reader.index.meta;
   const view: View = fitView(meta.extent, width, height);
-  // The scale at which the (fitted) extent fills the window: its metres per pixel over the pixel size.
-  const extentScale = ((view.bbox[2] - view.bbox[0]) / width) * (1000 / meta.pixelSizeMm);
   const shares: number[] = [];
   const ms: number[] = [];
   // The map's own scale -> z.
-  const zs = Array.from({ length: FRAMES }, (_, i) => zAtScale(meta, meta.baseScale * (extentScale / meta.baseScale) ** (i / (FRAMES - 1))));
+  const zs = zoomZs(meta, meta.pixelSizeMm, view, FRAMES);
   const flicker = new FlickerCounter(width, height);
   let before: ClassFrame | undefined;
   for await (const { slicer, ms: t } of zoomFrames(reader, view, zs)) {

@@ -36,7 +36,9 @@ export function classicTransitions(events: readonly Pick<TgapEvent, 'kind' | 'st
  * a split from where its first part starts to the split; a merge or split drawn flat lasts as
  * in the classic cube.
  */
-export function smoothTransitions(events: readonly Pick<TgapEvent, 'kind' | 'step' | 'loser'>[], merges: readonly MergeTransition[], splits: readonly SplitTransition[]): Transition[] {
+export function smoothTransitions(
+  events: readonly Pick<TgapEvent, 'kind' | 'step' | 'loser'>[], merges: readonly Pick<MergeTransition, 'step' | 'loser' | 'zStart' | 'zMerge' | 'tilted'>[], splits: readonly SplitTransition[],
+): Transition[] {
   const tilted = new Map<number, { step: number; zStart: number; zEnd: number }>();
   for (const m of merges) if (m.tilted) tilted.set(m.loser, { step: m.step, zStart: m.zStart, zEnd: m.zMerge });
   for (const p of splits) if (p.zStart < p.zSplit) tilted.set(p.loser, { step: p.step, zStart: p.zStart, zEnd: p.zSplit });

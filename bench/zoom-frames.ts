@@ -3,10 +3,23 @@
 // chunk read and decoded once for the whole run, as the map's cache would keep it.
 import type { DecodedChunk } from '../format/chunk.js';
 import type { ChunkLeaf } from '../format/cube-index.js';
+import { zAtScale, type ScaleInfo } from '../format/scale.js';
 import { sliceCube, type ChunkSource } from '../preprocess/commands/slice-cube.js';
 import type { View } from '../preprocess/map/rasterize.js';
 import type { CpuSlicer } from '../preprocess/ssc/cpu-slicer.js';
 import { CubeReader } from '../preprocess/ssc/read-cube.js';
+
+/** Frames of bench:smoothness's zoom. */
+export const ZOOM_FRAMES = 120;
+
+/**
+ * The z of each of `frames` frames of a geometric zoom on `view` from the base scale to the
+ * scale at which the (fitted) extent fills the window: its metres per pixel over the pixel size.
+ */
+export function zoomZs(info: ScaleInfo, pixelSizeMm: number, view: View, frames = ZOOM_FRAMES): number[] {
+  const extentScale = ((view.bbox[2] - view.bbox[0]) / view.width) * (1000 / pixelSizeMm);
+  return Array.from({ length: frames }, (_, i) => zAtScale(info, info.baseScale * (extentScale / info.baseScale) ** (i / (frames - 1))));
+}
 
 /** The reader's chunks, each read once. */
 export function cachedChunks(reader: CubeReader): ChunkSource {

@@ -146,6 +146,24 @@ export interface SurfaceStats extends TriangulateStats {
   chordSplits: number;
 }
 
+/** What made a run of surface triangles (bench/explain-frames.ts attributes a frame's changes to it). */
+export type OriginKind = 'floor' | 'merge' | 'split' | 'simplify' | 'reemit';
+
+/**
+ * Triangles first..end (not including end) of the surfaces came from one event of `step`:
+ * a merge (with the copies at the winner's re-emits), one receiving face's part of a split,
+ * the removals of one edge version, a re-emit, or one face's floor. `face`: the loser (the
+ * lower face of a removal), `into`: the winner (the upper face).
+ */
+export interface SurfaceOrigin {
+  kind: OriginKind;
+  step: number;
+  face: number;
+  into: number;
+  first: number;
+  end: number;
+}
+
 export interface SurfaceOptions {
   /** Smooth merges: the loser's area tilted over its transition (docs/FORMAT.md, "Smooth cube"). */
   smooth?: boolean;
@@ -153,7 +171,10 @@ export interface SurfaceOptions {
 
 /**
  * How far a smooth merge may reach back: at most this factor in scale before the merge (one
- * zoom level, the map's default zoom step).
+ * zoom level, the map's default zoom step). Measured at 1280x720: x2.83 took Otterlo's worst
+ * frame from 0.942% to 0.902% (nlcd_zion's stayed 0.290%; x4: 1.024%), but left 4 of
+ * bgt_otterlo_400m's 337 merges with raster pixels apart from the winner at 4x (e2e
+ * pipeline-cube allows 3; exactly, all attached), so it stays one zoom level.
  */
 export const MAX_TRANSITION_RATIO = 2;
 
@@ -173,6 +194,8 @@ const LEVEL_ROUNDS = 8;
 interface Ramp {
   zStart: number;
   end: number;
+  /** The earliest z its front could leave the shared boundary (zMerge: none), before any wait above older surfaces. */
+  zFront: number;
 }
 
 /** A removed vertex's triangle (counterclockwise), passing from `lower` to `upper` at its phase. */
@@ -204,6 +227,12 @@ export interface MergeTransition {
   into: number;
   zStart: number;
   zMerge: number;
+  /**
+   * What bounded zStart: the earliest start allowed (reachBackZ), and the
+   * earliest z at which the front could leave the shared boundary (the winner beside it).
+   */
+  zFoot: number;
+  zFront: number;
   /** Drawn tilted (with --smooth, room in z and a vertex off the shared boundary). */
   tilted: boolean;
   /**
@@ -242,7 +271,7 @@ export function reachBackZ(info: ScaleInfo, z: number): number {
  * `smooth`, `input` without the re-emits of faces that end soon after (late-reemits.ts), whose
  * faces are the ones to write beside the surfaces.
  */
-export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surfaces: Surfaces; stats: SurfaceStats; transitions: MergeTransition[]; splits: SplitTransition[]; tgap: Tgap } {
+export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surfaces: Surfaces; stats: SurfaceStats; transitions: MergeTransition[]; splits: SplitTransition[]; origins: SurfaceOrigin[]; tgap: Tgap } {
   // The scale of every step: skipping re-emits keeps the tGAP's meta.
   const scaleInfo = scaleInfoOf(input);
   const t = opts.smooth ? skipLateReemits(input, (z) => reachBackZ(scaleInfo, z)).tgap : input;
@@ -432,7 +461,9 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         if (group[t]! <= i) out.add(own[3 * t]!, own[3 * t + 1]!, own[3 * t + 2]!, level, members[i + 1]!, members[i]!);
       }
     });
-    return { zStart: z ? zLow - SURFACE_GAP / 2 : zMerge, end };
+    let zFront = Infinity;
+    for (const t of shared.values()) zFront = Math.min(zFront, Math.max(t, zFoot));
+    return { zStart: z ? zLow - SURFACE_GAP / 2 : zMerge, end, zFront: Math.min(zFront, zMerge) };
   };
   /**
    * The ramp `z` changed so that no triangle crosses one of the winner's re-emit levels: the
@@ -465,7 +496,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
    * Where a smooth removal's corner starts to recede: the triangle (a, v, b) tilts from its
    * corner v (the receding vertex) up to its chord, at the removal's z or before it when later
    * removals of the step overlap it (removal-heights.ts), so the upper face takes
-   * it from the corner, beside which it lies. No further back than one zoom level, nor before
+   * it from the corner, beside which it lies. No further back than reachBackZ, nor before
    * the upper face was created or lay beside the corner (its side of the parent chain), and
    * above every older surface in the losing face's area.
    */
@@ -480,10 +511,19 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   };
   const transitions: MergeTransition[] = [];
   const splits: SplitTransition[] = [];
+  const origins: SurfaceOrigin[] = [];
+  /** The triangles from `first` to the last one added came from this event. */
+  const origin = (kind: OriginKind, step: number, face: number, into: number, first: number): void => {
+    if (out.count > first) origins.push({ kind, step, face, into, first, end: out.count });
+  };
 
   for (const e of born[0]!) if (edges[e]!.stepHigh > 0) attach(e, 0);
   for (let f = 1; f < faces.length; f++) {
-    if (faces[f]!.stepLow === 0 && faces[f]!.stepHigh > 0) stats.floor += emitFace(f, 0, 0, f, 0);
+    if (faces[f]!.stepLow === 0 && faces[f]!.stepHigh > 0) {
+      const first = out.count;
+      stats.floor += emitFace(f, 0, 0, f, 0);
+      origin('floor', 0, 0, f, first);
+    }
   }
   let ev = 0;
   for (let k = 1; k <= steps; k++) {
@@ -497,17 +537,19 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       if (e.kind === EventKind.Merge) {
         const shared = sharedEdges(e.loser, e.into, k - 1);
         const first = out.count;
-        let ramp: Ramp = { zStart: z0, end: first };
+        let ramp: Ramp = { zStart: z0, end: first, zFront: z0 };
+        const zFoot = byFace ? Math.max(SURFACE_GAP, reachBack(z0)) : z0;
         if (byFace) {
-          // No further back than one zoom level (the winner's re-emits meanwhile are handled there).
-          ramp = emitSmoothMerge(byFace, e.loser, e.into, k - 1, shared, Math.max(SURFACE_GAP, reachBack(z0)), z0, `m${ev}`);
+          // No further back than reachBackZ (the winner's re-emits meanwhile are handled there).
+          ramp = emitSmoothMerge(byFace, e.loser, e.into, k - 1, shared, zFoot, z0, `m${ev}`);
           lieIn(e.into, first);
           byFace.hand(e.loser, e.into);
         } else {
           stats.merge += emitFace(e.loser, k - 1, z0, e.into, e.loser);
           ramp.end = out.count;
         }
-        transitions.push({ step: k, loser: e.loser, into: e.into, zStart: ramp.zStart, zMerge: z0, tilted: ramp.zStart < z0, first, end: ramp.end });
+        transitions.push({ step: k, loser: e.loser, into: e.into, zStart: ramp.zStart, zMerge: z0, zFoot, zFront: ramp.zFront, tilted: ramp.zStart < z0, first, end: ramp.end });
+        origin('merge', k, e.loser, e.into, first);
         // The winner grows; the loser's neighbours now border the winner.
         relabel(e.loser, z0, before);
         handOn.push([e.loser, e.into]);
@@ -530,11 +572,14 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
             if (part.zStart < z0) stats.tiltedSplits++;
             zStart = Math.min(zStart, part.zStart);
             lieIn(into, first);
+            origin('split', k, e.loser, into, first);
           }
           splits.push({ step: k, loser: e.loser, zStart, zSplit: z0 });
         } else {
+          const first = out.count;
           for (let i = 0; i < tf.length; i++) out.add(tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!, z0, tf[i]!, e.loser);
           stats.split += tf.length;
+          origin('split', k, e.loser, 0, first);
         }
         byFace?.drop(e.loser);
         relabel(e.loser, z0, before);
@@ -606,11 +651,16 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       }
       lieIn(upper, out.count - 1);
       stats.simplify++;
+      // One origin per edge version and side (its removals are consecutive).
+      const prev = removals[r - 1];
+      if (prev?.edge === edge && prev.upper === upper) origins[origins.length - 1]!.end = out.count;
+      else origin('simplify', k, lower, upper, out.count - 1);
     });
     // Replaced faces: their whole area, as it is at the end of the step, drawn again.
     for (const [f, g] of reemits) {
       const first = out.count;
       stats.reemit += emitFace(g, k, phaseZ(k, REEMIT_PHASE), g, f);
+      origin('reemit', k, f, g, first);
       byFace?.drop(f);
       lieIn(g, first);
     }
@@ -620,5 +670,5 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     const u = out.upper[i]!;
     out.zEnd[i] = u > 0 ? Math.min(zTop, faceEndZ(faces[u]!, steps)) : zTop;
   }
-  return { surfaces: out, stats, transitions, splits, tgap: t };
+  return { surfaces: out, stats, transitions, splits, origins, tgap: t };
 }
