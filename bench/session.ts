@@ -1,0 +1,238 @@
+// npm run bench:session [-- <dataset filter>] [runs=N] [frames=N]: one scripted session, the
+// same for both maps, in headless Chromium at 1280x720: the vario map (the public ES build and
+// a cube built fresh by ssc build) against MapLibre GL JS showing tippecanoe vector tiles of
+// the same data (issue 13). Both sites come from the project's static server on 127.0.0.1,
+// every file gzip-encoded as a CDN would send it. The session: open at the base scale (1:1,000
+// for bgt_otterlo_1800m, the style's baseScale for nlcd_zion), zoom out to the full extent in
+// `frames` frames (120; geometric in scale), pan a quarter of the data's width in frames/6,
+// zoom back in to the base scale in frames/2. Each frame sets the view and waits until the map
+// is complete (vario: whenIdle with one supersampling frame; MapLibre: 'idle'), recording the
+// data bytes sent so far (server side), setView-to-complete ms and the triangles drawn.
+// Prints, per dataset, the medians over `runs` runs (3) and their ratio; `csv=<file>` also
+// writes every frame (medians over the runs). SwiftShader is a software GPU: the times compare
+// the two maps on one machine, nothing more.
+import { cp, mkdir, mkdtemp, rm, writeFile } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import type { Browser } from 'playwright-core';
+import type { CubeMeta } from '../format/cube-index.js';
+import { loadStyle } from '../preprocess/style.js';
+import { createStaticServer } from '../server/static-server.js';
+import { launchChromium } from '../e2e/helpers/browser.js';
+import { buildBenchCube } from './bench-cube.js';
+import { benchArgs, datasets, median, root, type Dataset } from './datasets.js';
+import { gzipSiblings } from './gzip-siblings.js';
+import { logResponses, type Sent } from './response-log.js';
+import { toMapLibreView, type LngLatView, type ProjectedView } from './scale-zoom.js';
+import { writeSessionPages, type FirstMap, type FrameResult } from './session-pages.js';
+import { printTable } from './table.js';
+import { buildTiles, tippecanoeVersion, TIPPECANOE_MISSING, writeWgs84GeoJson } from './tippecanoe-tiles.js';
+
+const WIDTH = 1280, HEIGHT = 720;
+const MAPLIBRE_FILES = ['maplibre-gl.mjs', 'maplibre-gl-shared.mjs', 'maplibre-gl-worker.mjs', 'maplibre-gl.css'];
+
+interface PageBench {
+  first: Promise<FirstMap>;
+  frame(v: ProjectedView | LngLatView): Promise<FrameResult>;
+}
+declare const bench: PageBench;
+
+interface Session {
+  start: ProjectedView;
+  /** Each frame's view and the phase it belongs to. */
+  frames: { phase: string; view: ProjectedView }[];
+}
+
+function scriptedSession(meta: CubeMeta, zoomOutFrames: number): Session {
+  const [x0, y0, x1, y1] = meta.extent;
+  const centre: [number, number] = [(x0 + x1) / 2, (y0 + y1) / 2];
+  const base = meta.baseScale;
+  const full = (Math.max((x1 - x0) / WIDTH, (y1 - y0) / HEIGHT) * 1000) / meta.pixelSizeMm;
+  const frames: Session['frames'] = [];
+  for (let i = 1; i <= zoomOutFrames; i++) frames.push({ phase: 'zoom out', view: { center: centre, scale: base * (full / base) ** (i / zoomOutFrames) } });
+  // A quarter of the data's width: at the full extent half the view would leave the data
+  // (bgt_otterlo_1800m is square, the view wide), and the zoom in must end on it.
+  const panFrames = Math.max(1, Math.round(zoomOutFrames / 6));
+  const end: [number, number] = [centre[0] + (x1 - x0) / 4, centre[1]];
+  for (let i = 1; i <= panFrames; i++) frames.push({ phase: 'pan', view: { center: [centre[0] + (end[0] - centre[0]) * (i / panFrames), centre[1]], scale: full } });
+  const inFrames = Math.max(1, Math.round(zoomOutFrames / 2));
+  for (let i = 1; i <= inFrames; i++) frames.push({ phase: 'zoom in', view: { center: end, scale: full * (base / full) ** (i / inFrames) } });
+  return { start: { center: centre, scale: base }, frames };
+}
+
+interface RunResult {
+  firstMs: number;
+  bytesBeforeFirst: number;
+  /** Data bytes sent up to each frame's completion. */
+  bytesSoFar: number[];
+  frames: FrameResult[];
+  /** Everything sent that is not data (the page, the library), bytes. */
+  codeBytes: number;
+}
+
+/** Opens `page` in a fresh context (an empty cache), runs the session, and sums up the server's log. */
+async function runPage(browser: Browser, url: string, views: (ProjectedView | LngLatView)[], log: Sent[], isData: (p: string) => boolean): Promise<RunResult> {
+  const context = await browser.newContext({ viewport: { width: WIDTH, height: HEIGHT } });
+  try {
+    const page = await context.newPage();
+    const problems: string[] = [];
+    page.on('pageerror', (e) => problems.push(e.message));
+    page.on('console', (m) => {
+      if (m.type() === 'error') problems.push(m.text());
+    });
+    log.length = 0;
+    await page.goto(url);
+    await page.waitForFunction(() => typeof bench !== 'undefined');
+    const first = await page.evaluate(() => bench.first);
+    const frames = await page.evaluate(async (vs) => {
+      const out: FrameResult[] = [];
+      for (const v of vs) out.push(await bench.frame(v));
+      return out;
+    }, views);
+    if (problems.length > 0) throw new Error(`${url}: ${problems.join('; ')}`);
+    const dataUpTo = (at: number): number => log.reduce((s, r) => s + (r.at <= at && isData(r.path) ? r.bytes : 0), 0);
+    const end = frames[frames.length - 1]!.at;
+    return {
+      firstMs: first.ms,
+      bytesBeforeFirst: dataUpTo(first.at),
+      bytesSoFar: frames.map((f) => dataUpTo(f.at)),
+      frames,
+      codeBytes: log.reduce((s, r) => s + (r.at <= end && !isData(r.path) ? r.bytes : 0), 0),
+    };
+  } finally {
+    await context.close();
+  }
+}
+
+const mb = (b: number): string => `${(b / 1e6).toFixed(2)} MB`;
+const ratio = (a: number, b: number): string => `${(a / b).toFixed(2)}x`;
+
+async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFrames: number, csv: string[]): Promise<void> {
+  const tmp = await mkdtemp(path.join(tmpdir(), 'ssc-bench-session-'));
+  try {
+    const site = path.join(tmp, 'site');
+    await mkdir(site);
+    const cube = buildBenchCube(d, path.join(site, 'cube'));
+    const meta = cube.index.meta;
+    if (!meta.proj4) throw new Error(`${d.name}: the cube's index has no proj4 definition, so MapLibre's view cannot be placed`);
+    const style = await loadStyle(d.style);
+    const classProperty = style.classProperty;
+    if (classProperty === null) throw new Error(`${d.style}: the style has no classProperty to colour the tiles by`);
+    const toLngLat = toMapLibreView(meta.proj4, WIDTH, meta.pixelSizeMm);
+    const s = scriptedSession(meta, zoomOutFrames);
+    // MapLibre draws a 512-px vector source's tiles of floor(zoom): the tiles span the zooms
+    // the session shows, the highest holding the full detail.
+    const zooms = [s.start, ...s.frames.map((f) => f.view)].map((v) => toLngLat(v).zoom);
+    const geojson = path.join(tmp, `${d.name}.wgs84.geojson`);
+    await writeWgs84GeoJson(d.file, classProperty, geojson);
+    process.stderr.write(`tiling ${d.name}... `);
+    const t0 = performance.now();
+    const tiles = await buildTiles(geojson, path.join(site, 'tiles'), Math.floor(Math.min(...zooms)), Math.floor(Math.max(...zooms)));
+    process.stderr.write(`${((performance.now() - t0) / 1000).toFixed(1)} s\n`);
+    await cp(path.join(root, 'dist/lib'), path.join(site, 'lib'), { recursive: true });
+    await mkdir(path.join(site, 'maplibre'));
+    for (const f of MAPLIBRE_FILES) await cp(path.join(root, 'node_modules/maplibre-gl/dist', f), path.join(site, 'maplibre', f));
+    await writeSessionPages(site, s.start, toLngLat(s.start), { ...style, classProperty }, tiles);
+    const gz = await gzipSiblings(site, ['cube', 'tiles']);
+
+    const server = createStaticServer({ root: site });
+    const log = logResponses(server.server);
+    await server.listen(0, '127.0.0.1');
+    const results: { vario: RunResult[]; maplibre: RunResult[] } = { vario: [], maplibre: [] };
+    try {
+      for (let r = 0; r < runs; r++) {
+        // Turn about, so that neither map always runs on a machine the other has just warmed.
+        for (const which of r % 2 === 0 ? (['vario', 'maplibre'] as const) : (['maplibre', 'vario'] as const)) {
+          const views = which === 'vario' ? s.frames.map((f) => f.view) : s.frames.map((f) => toLngLat(f.view));
+          const prefix = which === 'vario' ? '/cube/' : '/tiles/';
+          const res = await runPage(browser, `${server.url}${which}.html`, views, log, (p) => p.startsWith(prefix));
+          results[which].push(res);
+          process.stderr.write(`  ${d.name} run ${r + 1} ${which}: first map ${res.firstMs.toFixed(0)} ms, ${mb(res.bytesSoFar[res.bytesSoFar.length - 1]!)}, frame median ${median(res.frames.map((f) => f.ms)).toFixed(0)} ms\n`);
+        }
+      }
+    } finally {
+      await server.close();
+    }
+
+    const n = s.frames.length;
+    /** Per frame, the median over the runs. */
+    const perFrame = (rs: RunResult[], f: (r: RunResult, i: number) => number | null): (number | null)[] =>
+      Array.from({ length: n }, (_, i) => {
+        const xs = rs.map((r) => f(r, i)).filter((x): x is number => x !== null);
+        return xs.length === 0 ? null : median(xs);
+      });
+    const sum = (which: 'vario' | 'maplibre'): { total: number; beforeFirst: number; frameMs: number; firstMs: number; code: number; ms: (number | null)[]; bytes: (number | null)[]; tri: (number | null)[] } => {
+      const rs = results[which];
+      const ms = perFrame(rs, (r, i) => r.frames[i]!.ms);
+      return {
+        total: median(rs.map((r) => r.bytesSoFar[n - 1]!)),
+        beforeFirst: median(rs.map((r) => r.bytesBeforeFirst)),
+        frameMs: median(ms.filter((x): x is number => x !== null)),
+        firstMs: median(rs.map((r) => r.firstMs)),
+        code: median(rs.map((r) => r.codeBytes)),
+        ms,
+        bytes: perFrame(rs, (r, i) => r.bytesSoFar[i]!),
+        tri: perFrame(rs, (r, i) => r.frames[i]!.triangles),
+      };
+    };
+    const v = sum('vario'), m = sum('maplibre');
+    process.stdout.write(`\n${d.name}: ${n} frames (${s.frames.filter((f) => f.phase === 'zoom out').length} out from 1:${Math.round(s.start.scale)}, pan, in), ${WIDTH}x${HEIGHT}, median of ${runs} run${runs > 1 ? 's' : ''}, gzip for both\n`);
+    printTable([
+      ['', 'vario map', 'MapLibre + tippecanoe', 'ratio'],
+      ['data bytes for the session', mb(v.total), mb(m.total), ratio(v.total, m.total)],
+      ['data bytes before the first map', mb(v.beforeFirst), mb(m.beforeFirst), ratio(v.beforeFirst, m.beforeFirst)],
+      ['median time from setView to a complete frame', `${v.frameMs.toFixed(0)} ms`, `${m.frameMs.toFixed(0)} ms`, ratio(v.frameMs, m.frameMs)],
+      ['first complete map after navigation', `${(v.firstMs / 1000).toFixed(2)} s`, `${(m.firstMs / 1000).toFixed(2)} s`, ratio(v.firstMs, m.firstMs)],
+      ['code bytes (page, library, workers)', mb(v.code), mb(m.code), ratio(v.code, m.code)],
+    ]);
+    const phases = [...new Set(s.frames.map((f) => f.phase))];
+    const rows = [['phase', 'frames', 'vario ms', 'MapLibre ms', 'vario triangles', 'MapLibre triangles', 'vario MB at end', 'MapLibre MB at end']];
+    for (const p of phases) {
+      const idx = s.frames.flatMap((f, i) => (f.phase === p ? [i] : []));
+      const med = (xs: (number | null)[]): string => {
+        const got = idx.map((i) => xs[i]).filter((x): x is number => x !== null && x !== undefined);
+        return got.length === 0 ? '-' : Math.round(median(got)).toString();
+      };
+      const last = idx[idx.length - 1]!;
+      rows.push([p, String(idx.length), med(v.ms), med(m.ms), med(v.tri), med(m.tri), (v.bytes[last]! / 1e6).toFixed(2), (m.bytes[last]! / 1e6).toFixed(2)]);
+    }
+    printTable(rows);
+    process.stdout.write(`whole dataset, gzip: cube ${mb(gz.get('cube')!)}, tiles (z${tiles.minZoom}-${tiles.maxZoom}) ${mb(gz.get('tiles')!)}, ratio ${ratio(gz.get('cube')!, gz.get('tiles')!)}\n`);
+    process.stdout.write(`tiles: ${tiles.command}\n`);
+    for (let i = 0; i < n; i++) {
+      const f = s.frames[i]!;
+      const cell = (x: number | null | undefined): string => (x === null || x === undefined ? '' : String(Math.round(x)));
+      csv.push([d.name, i + 1, f.phase, Math.round(f.view.scale), cell(v.bytes[i]), cell(m.bytes[i]), cell(v.ms[i]), cell(m.ms[i]), cell(v.tri[i]), cell(m.tri[i])].join(','));
+    }
+  } finally {
+    await rm(tmp, { recursive: true, force: true });
+  }
+}
+
+async function main(): Promise<void> {
+  const version = tippecanoeVersion();
+  if (version === null) {
+    process.stderr.write(`${TIPPECANOE_MISSING}\n`);
+    process.exit(1);
+  }
+  const { runs, filter } = benchArgs(3);
+  const args = process.argv.slice(2);
+  const frames = Number(args.find((a) => a.startsWith('frames='))?.slice(7) ?? 120);
+  if (!Number.isInteger(frames) || frames < 1) throw new Error('frames= takes a whole number >= 1');
+  const csvFile = args.find((a) => a.startsWith('csv='))?.slice(4);
+  const sets = datasets(filter?.includes('=') ? undefined : filter, ['bgt_otterlo_1800m', 'nlcd_zion']);
+  process.stderr.write(`${version}\n`);
+  const csv = ['dataset,frame,phase,scale,vario bytes so far,maplibre bytes so far,vario ms,maplibre ms,vario triangles,maplibre triangles'];
+  const browser = await launchChromium();
+  try {
+    for (const d of sets) await runDataset(browser, d, runs, frames, csv);
+  } finally {
+    await browser.close();
+  }
+  if (csvFile) await writeFile(csvFile, `${csv.join('\n')}\n`);
+}
+
+main().catch((err: unknown) => {
+  console.error(err);
+  process.exit(1);
+});
