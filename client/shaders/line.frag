@@ -31,7 +31,7 @@ float share(vec4 r, float z) {
   return clamp(min(grow, shrink), 0.0, 1.0);
 }
 
-// How far along its glide an end is at z (from, to): 0 before, 1 from `to` on (glideShare).
+// How far along its glide an end is at z, gliding over [from, to]: 0 before it, 1 at its end and after (glideShare).
 float glide(float from, float to, float z) {
   if (!(to > from)) return z >= to ? 1.0 : 0.0;
   return clamp((z - from) / (to - from), 0.0, 1.0);
