@@ -57,7 +57,7 @@ export interface PruneOrderInput {
   importance: ArrayLike<number>;
   /** Line length allowed at each state (index); the last index is the top state. */
   budget: ArrayLike<number>;
-  /** 1 where a line's face touched the edge of the data: one free end is not a dead end. */
+  /** 1 where a line goes on beyond the data (pruneLines: its stroke reaches the data's edge): one free end is not a dead end. */
   atEdge?: ArrayLike<number>;
   /** The network of each line (default: all one), and each network's share of the budget (default: all of it). */
   network?: ArrayLike<number>;
