@@ -8,7 +8,7 @@ import { lineRuleFinder } from '../../format/line-style.js';
 import { collapseLines } from '../lines/collapse-lines.js';
 import { keepLines } from '../lines/keep-lines.js';
 import { pruneLines } from '../lines/prune-lines.js';
-import { simplifyLines, type SimplifiedLine } from '../lines/simplify-lines.js';
+import { simplifyLines } from '../lines/simplify-lines.js';
 import type { Style } from '../style.js';
 import type { TriangleBoxes } from './chunk-cuts.js';
 import { splitEvenly } from './chunking.js';
@@ -21,12 +21,13 @@ export function stateEndZ(state: number, steps: number): number {
 
 /**
  * The lines of the cube before they are put in z: the collapsed lines the style draws, pruned
- * and simplified, each with its line rule (the style's, from its feature's attributes). Lines
- * never on the map are left out: those whose rule draws nothing (keep-lines.ts: they take no
- * share of the line budget either) and those pruned at birth. Pruning weighs each line by its rule's weight, and chains lines of one rule into
+ * and simplified (`simplified.lines`), with `rules[i]` the line rule of line i (the style's,
+ * from its feature's attributes). Lines never on the map are left out: those whose rule draws
+ * nothing (keep-lines.ts: they take no share of the line budget either) and those pruned at
+ * birth. Pruning weighs each line by its rule's weight, and chains lines of one rule into
  * strokes. `bench:lines` reports on these.
  */
-export function generalizedLines(tgap: Tgap, style: Pick<Style, 'classes' | 'lineRules'>): { lines: SimplifiedLine[]; rules: number[]; pruned: ReturnType<typeof pruneLines>; simplified: ReturnType<typeof simplifyLines> } {
+export function generalizedLines(tgap: Tgap, style: Pick<Style, 'classes' | 'lineRules'>): { rules: number[]; pruned: ReturnType<typeof pruneLines>; simplified: ReturnType<typeof simplifyLines> } {
   const ruleOf = lineRuleFinder(style.lineRules);
   const collapsed = collapseLines(tgap, style).lines;
   const rules = collapsed.map((l) => ruleOf(l.classIndex, l.feature >= 0 ? tgap.meta.attributes[l.feature] : null));
@@ -37,14 +38,14 @@ export function generalizedLines(tgap: Tgap, style: Pick<Style, 'classes' | 'lin
   // Lines pruned the state they are born in are never on the map.
   const shown = pruned.lines.map((l, i) => ({ l, rule: keptRules[i]! })).filter(({ l }) => l.step < l.prunedStep);
   const simplified = simplifyLines(shown.map(({ l }) => l), tgap);
-  return { lines: simplified.lines, rules: shown.map(({ rule }) => rule), pruned, simplified };
+  return { rules: shown.map(({ rule }) => rule), pruned, simplified };
 }
 
 /** The lines of generalizedLines in the cube's z, in the order collapseLines gives them. */
 export function cubeLines(tgap: Tgap, style: Pick<Style, 'classes' | 'lineRules'>): LineRecord[] {
   const steps = tgap.meta.steps;
-  const { lines, rules } = generalizedLines(tgap, style);
-  return lines.map((l, i) => ({
+  const { simplified, rules } = generalizedLines(tgap, style);
+  return simplified.lines.map((l, i) => ({
     classIndex: l.classIndex,
     rule: rules[i]!,
     feature: l.feature,

@@ -17,7 +17,7 @@ test('bgt_otterlo_1800m: the main road stays to 1:25,000 and the watercourses to
   const styleName = styleFile('bgt.json');
   const { tgap } = await generalizeFile(dataset('bgt_otterlo_1800m.geojson'), { style: styleName });
   const style = await loadStyle(styleName);
-  const { lines, rules } = generalizedLines(tgap, style);
+  const { simplified: { lines }, rules } = generalizedLines(tgap, style);
   const info = scaleInfoOf(tgap);
   const ruleOf = (key: string, value: string): number => style.lineRules.findIndex((r) => style.classes[r.classIndex]!.key === key && (r.values ?? []).includes(value));
   const main = ruleOf('wegdeel', 'rijbaan regionale weg'), street = ruleOf('wegdeel', 'rijbaan lokale weg'), water = ruleOf('waterdeel', 'waterloop');
