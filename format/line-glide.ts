@@ -12,6 +12,7 @@ import type { LineRecord, LineSegment } from './line-chunk.js';
 import { lineSegments } from './line-chunk.js';
 import { LINE_RAMP_SCALE } from './line-ramp.js';
 import { scaleAtZ, zAtScale, type ScaleInfo } from './scale.js';
+import { projectOnSegment } from './point-segment.js';
 
 /** Per vertex of one polyline: where it glides to, and from which z (to its leave z). */
 export interface PathGlides {
@@ -47,9 +48,10 @@ export function lineGlides(l: LineRecord, info: ScaleInfo): PathGlides[] {
       while (b < n && !(leave[b]! > gone)) b++;
       // Simplification keeps a polyline's ends; without a neighbour on each side there is no chord.
       if (a < 0 || b >= n) continue;
-      const [fx, fy] = nearestOnSegment(x, y, p[2 * a]!, p[2 * a + 1]!, p[2 * b]!, p[2 * b + 1]!);
-      tx[v] = fx;
-      ty[v] = fy;
+      const ax = p[2 * a]!, ay = p[2 * a + 1]!, bx = p[2 * b]!, by = p[2 * b + 1]!;
+      const t = projectOnSegment(x, y, ax, ay, bx, by);
+      tx[v] = ax + t * (bx - ax);
+      ty[v] = ay + t * (by - ay);
       from[v] = Math.max(l.zStart, Math.min(gone, zAtScale(info, scaleAtZ(info, gone) / LINE_RAMP_SCALE)));
     }
     return { tx, ty, from };
@@ -79,10 +81,4 @@ export function glideShare(from: number, to: number, z: number): number {
 export function segmentAt(s: GlidingSegment, z: number): [number, number, number, number] {
   const ga = glideShare(s.aFrom, s.aTo, z), gb = glideShare(s.bFrom, s.bTo, z);
   return [s.ax + (s.atx - s.ax) * ga, s.ay + (s.aty - s.ay) * ga, s.bx + (s.btx - s.bx) * gb, s.by + (s.bty - s.by) * gb];
-}
-
-function nearestOnSegment(x: number, y: number, ax: number, ay: number, bx: number, by: number): [number, number] {
-  const dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy;
-  const t = l2 > 0 ? Math.max(0, Math.min(1, ((x - ax) * dx + (y - ay) * dy) / l2)) : 0;
-  return [ax + t * dx, ay + t * dy];
 }

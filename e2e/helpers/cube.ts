@@ -11,6 +11,7 @@ import { parseIndex, parseSubIndex, type ChunkLeaf, type CubeMeta, type InnerNod
 import { queryIndex } from '../../format/index-query.js';
 import { zAtScale } from '../../format/scale.js';
 import { parseSurface, surfaceZ, type Surface } from '../../format/slicing-surface.js';
+import { pointSegmentDistance } from '../../format/point-segment.js';
 import { sliceCube } from '../../preprocess/commands/slice-cube.js';
 import { fitView } from '../../preprocess/map/rasterize.js';
 import { CubeReader } from '../../preprocess/ssc/read-cube.js';
@@ -113,12 +114,6 @@ export async function cubeTriangles(cubeDir: string): Promise<CubeTriangles> {
   return new CubeTriangles(Float64Array.from(out));
 }
 
-function segmentDistance(px: number, py: number, ax: number, ay: number, bx: number, by: number): number {
-  const dx = bx - ax, dy = by - ay;
-  const len2 = dx * dx + dy * dy;
-  const t = len2 === 0 ? 0 : Math.max(0, Math.min(1, ((px - ax) * dx + (py - ay) * dy) / len2));
-  return Math.hypot(px - (ax + t * dx), py - (ay + t * dy));
-}
 
 /** A triangle's plane at a point over it: z there and |grad z| (steps per ground unit). */
 export interface PlaneAt {
@@ -170,7 +165,7 @@ export class CubeTriangles {
     for (const t of this.near(x, y, tol)) {
       const ax = d[t]!, ay = d[t + 1]!, bx = d[t + 3]!, by = d[t + 4]!, cx = d[t + 6]!, cy = d[t + 7]!;
       if (x < Math.min(ax, bx, cx) - tol || x > Math.max(ax, bx, cx) + tol || y < Math.min(ay, by, cy) - tol || y > Math.max(ay, by, cy) + tol) continue;
-      if (segmentDistance(x, y, ax, ay, bx, by) <= tol || segmentDistance(x, y, bx, by, cx, cy) <= tol || segmentDistance(x, y, cx, cy, ax, ay) <= tol) return true;
+      if (pointSegmentDistance(x, y, ax, ay, bx, by) <= tol || pointSegmentDistance(x, y, bx, by, cx, cy) <= tol || pointSegmentDistance(x, y, cx, cy, ax, ay) <= tol) return true;
     }
     return false;
   }

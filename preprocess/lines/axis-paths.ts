@@ -2,7 +2,7 @@
 // more pieces meet; a loop with none of those (a ring road) is one closed path. Then points
 // that lie on the straight line between their neighbours (within a tolerance far below the
 // area's width) are dropped: a straight strip's axis has a point per triangle.
-import { pointSegmentDistance } from '../geom/point-segment.js';
+import { pointSegmentDistance } from '../../format/point-segment.js';
 import type { AxisGraph } from './axis-graph.js';
 
 /** Node sequences of the graph's paths, in node order (a closed path repeats its first node). */

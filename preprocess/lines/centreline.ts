@@ -16,7 +16,7 @@
 // (port-approach.ts) and the rest traced into polylines (axis-paths.ts).
 import { triangulateRegion } from '../geom/cdt.js';
 import { orient, segmentsIntersect } from '../geom/predicates.js';
-import { pointSegmentDistance, projectOnSegment } from '../geom/point-segment.js';
+import { pointSegmentDistance, projectOnSegment } from '../../format/point-segment.js';
 import { AxisGraph } from './axis-graph.js';
 import { simplifyPath, tracePaths } from './axis-paths.js';
 import { straightenApproaches } from './port-approach.js';

@@ -16,7 +16,7 @@ import { lineRamp, lineWidthShare, ruleRamp, type LineRamp } from '../../format/
 import type { LineRule } from '../../format/line-style.js';
 import { PIXEL_SIZE_MM } from '../../format/pixel-size.js';
 import type { ScaleInfo } from '../../format/scale.js';
-import { pointSegmentDistance } from '../geom/point-segment.js';
+import { pointSegmentDistance } from '../../format/point-segment.js';
 import type { View } from './rasterize.js';
 
 /** The surface's z at pixel p, and the cube's scales. */

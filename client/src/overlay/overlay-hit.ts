@@ -6,6 +6,7 @@
 import Flatbush from 'flatbush';
 import { boxAround } from '../geometry/box-around.js';
 import type { Parts, XY } from './geojson-read.js';
+import { pointSegmentDistance } from '../../../format/point-segment.js';
 
 export interface HitReach {
   /** Ground units per CSS pixel. */
@@ -79,10 +80,7 @@ function box(it: Item): [number, number, number, number] {
 
 /** Distance from p to the segment a-b. */
 export function distanceToSegment(p: XY, a: XY, b: XY): number {
-  const dx = b[0] - a[0], dy = b[1] - a[1];
-  const l2 = dx * dx + dy * dy;
-  const t = l2 > 0 ? Math.max(0, Math.min(1, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2)) : 0;
-  return Math.hypot(p[0] - (a[0] + t * dx), p[1] - (a[1] + t * dy));
+  return pointSegmentDistance(p[0], p[1], a[0], a[1], b[0], b[1]);
 }
 
 /** Distance from p to a polyline (closed: a ring, with the segment from its last position to its first). */

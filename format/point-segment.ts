@@ -1,4 +1,5 @@
-// A point against a segment: where its perpendicular foot falls, and how far away it is.
+// A point against a segment: where its perpendicular foot falls, and how far away it is. In
+// format/ so that the build, the map (picking, overlays, line glides) and the tests share it.
 
 /** Parameter in [0, 1] of the point of segment a-b nearest to p (0 for a segment of no length). */
 export function projectOnSegment(px: number, py: number, ax: number, ay: number, bx: number, by: number): number {
