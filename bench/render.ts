@@ -2,9 +2,12 @@
 // 1280x720, for bgt_otterlo_1800m and nlcd_zion at the base scale, a middle scale and the full
 // extent. Per view: time from page load to the first complete map, frame time (median and p95
 // over 60 frames of continuous redrawing, each frame a new view so the worker queries the
-// index), triangles submitted per frame, index query time per frame, and the chunks and bytes
-// the view needs. Lines: segments submitted per frame, the line chunks' bytes, and the frame
-// time with the lines hidden, measured in turns with the lines shown on the same page. Cubes are built fresh (ssc build) and served by the project's static server.
+// index), triangles submitted per frame and those the view needs (triangles-in-view.ts), index
+// query time per frame, and the chunks and bytes the view needs. Lines: segments submitted per
+// frame, the line chunks' bytes, and the frame time with the lines hidden, measured in turns
+// with the lines shown on the same page; in a third turn every triangle of the chunks is drawn,
+// as before draw runs, for comparison. Cubes are built fresh (ssc build) and served by the
+// project's static server.
 // SwiftShader is a software GPU: the numbers compare versions on one machine, nothing more.
 import { execFile } from 'node:child_process';
 import { cp, mkdtemp, readFile, rm } from 'node:fs/promises';
@@ -16,6 +19,7 @@ import { createStaticServer } from '../server/static-server.js';
 import { launchChromium } from '../e2e/helpers/browser.js';
 import { datasets, median, root } from './datasets.js';
 import { linesInView } from './lines-in-view.js';
+import { trianglesInView } from './triangles-in-view.js';
 
 const run = promisify(execFile);
 const WIDTH = 1280, HEIGHT = 720, FRAMES = 60, WARMUP = 5;
@@ -36,6 +40,7 @@ interface PageEngine {
   on(t: 'render', f: (s: Stats) => void): void;
   off(t: 'render', f: (s: Stats) => void): void;
   neededChunks(): { visible: string[]; margin: string[] };
+  setWholeChunks(whole: boolean): void;
 }
 interface Stats { triangles: number; segments: number; queryMs: number }
 declare const map: PageMap;
@@ -56,7 +61,7 @@ async function main(): Promise<void> {
   const filter = process.argv[2];
   const sets = datasets(filter, ['bgt_otterlo_1800m', 'nlcd_zion']);
   const browser = await launchChromium();
-  const rows: string[][] = [['dataset', 'view', 'scale', 'first map ms', 'frame ms median', 'frame ms p95', 'no lines ms', 'triangles/frame', 'at 5 places', 'segments/frame', 'line vertices in view', 'query ms/frame', 'chunks', 'MB', 'line MB', 'long tasks load', 'long tasks frames']];
+  const rows: string[][] = [['dataset', 'view', 'scale', 'first map ms', 'frame ms median', 'frame ms p95', 'no lines ms', 'whole chunks ms', 'triangles/frame', 'whole chunks', 'needed in view', 'at 5 places', 'segments/frame', 'line vertices in view', 'query ms/frame', 'chunks', 'MB', 'line MB', 'long tasks load', 'long tasks frames']];
   const ratios: string[] = [];
   try {
     for (const d of sets) {
@@ -102,10 +107,11 @@ async function main(): Promise<void> {
             const bytes = files.reduce((s, f) => s + (leafBytes.get(f) ?? 0), 0);
             const lineMb = files.reduce((s, f) => s + (lineBytes.get(f) ?? 0), 0) / 1e6;
             /** n frames in a row, each a new view; the first `warmup` are dropped. */
-            const frames = (n: number, warmup: number, lines: boolean): Promise<{ ms: number[]; stats: Stats[] }> => page.evaluate(
-              ([n, warmup, lines]) =>
+            const frames = (n: number, warmup: number, lines: boolean, whole = false): Promise<{ ms: number[]; stats: Stats[] }> => page.evaluate(
+              ([n, warmup, lines, whole]) =>
                 new Promise<{ ms: number[]; stats: Stats[] }>((resolve) => {
                   map.setLinesVisible(lines);
+                  engine.setWholeChunks(whole);
                   const out: { t: number; s: Stats }[] = [];
                   const [cx, cy] = map.getCenterProjected();
                   const f = (s: Stats): void => {
@@ -122,16 +128,21 @@ async function main(): Promise<void> {
                   engine.on('render', f);
                   engine.redraw();
                 }),
-              [n, warmup, lines] as const,
+              [n, warmup, lines, whole] as const,
             );
-            const frameMs: number[] = [], noLinesMs: number[] = [];
-            const kept: Stats[] = [];
+            const frameMs: number[] = [], noLinesMs: number[] = [], wholeMs: number[] = [];
+            const kept: Stats[] = [], wholeStats: Stats[] = [];
             for (let t = 0; t < TURNS; t++) {
               const on = await frames(FRAMES / TURNS, t === 0 ? WARMUP : 2, true);
               frameMs.push(...on.ms);
               kept.push(...on.stats);
               noLinesMs.push(...(await frames(FRAMES / TURNS, 2, false)).ms);
+              // Every triangle of the chunks, as before draw runs: what they save, on this page.
+              const whole = await frames(FRAMES / TURNS, 2, true, true);
+              wholeMs.push(...whole.ms);
+              wholeStats.push(...whole.stats);
             }
+            await page.evaluate(() => engine.setWholeChunks(false));
             await page.evaluate(() => map.setLinesVisible(true));
             const longFrames = await page.evaluate(() => (globalThis as unknown as { longTasks: number[] }).longTasks.splice(0));
             const fmt = (xs: number[]): string => (xs.length === 0 ? '0' : `${xs.length} (max ${Math.round(Math.max(...xs))} ms)`);
@@ -157,11 +168,14 @@ async function main(): Promise<void> {
             }
             triangleMeans.push(placed.reduce((a, b) => a + b, 0) / placed.length);
             const lineVertices = await linesInView(path.join(dir, 'cube'), index, scale, centre);
+            const neededTriangles = await trianglesInView(path.join(dir, 'cube'), scale, centre);
+            const drawn = median(kept.map((s) => s.triangles));
+            ratios.push(`${d.name} ${name}: triangles drawn / needed in view: ${(drawn / Math.max(1, neededTriangles)).toFixed(2)}`);
             rows.push([
               d.name, name, `1:${Math.round(scale)}`,
               firstMs === null ? 'never' : firstMs.toFixed(0),
-              median(frameMs).toFixed(1), p95(frameMs).toFixed(1), median(noLinesMs).toFixed(1),
-              Math.round(median(kept.map((s) => s.triangles))).toString(),
+              median(frameMs).toFixed(1), p95(frameMs).toFixed(1), median(noLinesMs).toFixed(1), median(wholeMs).toFixed(1),
+              Math.round(drawn).toString(), Math.round(median(wholeStats.map((s) => s.triangles))).toString(), String(neededTriangles),
               Math.round(triangleMeans[triangleMeans.length - 1]!).toString(),
               Math.round(median(kept.map((s) => s.segments))).toString(), String(lineVertices),
               median(kept.map((s) => s.queryMs)).toFixed(2),

@@ -258,6 +258,15 @@ export class MapEngine extends Evented<EngineEvents> {
     return this.settings.lines;
   }
 
+  /**
+   * Benchmarks only: draw every triangle of every chunk, as before draw runs (draw-ranges.ts), to
+   * set the two against each other on one page.
+   */
+  setWholeChunks(whole: boolean): void {
+    if (this.renderer) this.renderer.wholeChunks = whole;
+    this.redraw();
+  }
+
   setGpuMemoryBudget(bytes: number): void {
     if (this.renderer) this.renderer.store.budgetBytes = bytes;
     this.redraw();

@@ -53,8 +53,13 @@ interface Gpu {
   faceState: FaceStateTexture | null;
 }
 
+/** A z range that every triangle meets: the whole chunk is drawn. */
+const EVERY_Z: readonly [number, number] = [-Infinity, Infinity];
+
 export class Renderer {
   readonly store: ChunkStore;
+  /** Draw whole chunks, not only the triangles the slice needs (map-engine's setWholeChunks). */
+  wholeChunks = false;
   private gpu: Gpu | null = null;
   private meta: CubeMeta | null = null;
   private style: CubeStyle | null = null;
@@ -204,7 +209,7 @@ export class Renderer {
     g.targets.resize(f.view.width, f.view.height);
     gl.bindVertexArray(g.emptyVao);
     g.surface.draw(g.targets, f.view, f.surface, f.zMax);
-    const triangles = g.id.draw(g.targets, f.view, chunks, f.surface, f.zMax, f.jitter);
+    const triangles = g.id.draw(g.targets, f.view, chunks, f.surface, f.zMax, this.wholeChunks ? EVERY_Z : f.sliceRange, f.jitter);
     this.idsJittered = f.jitter[0] !== 0 || f.jitter[1] !== 0;
     gl.bindVertexArray(g.emptyVao);
     g.colour.draw(g.targets, { ...f.colour, style: g.style.texture, classCount: g.style.classCount, background: parseColour(this.style.background), faceState: g.faceState.texture });
@@ -252,7 +257,7 @@ export class Renderer {
     if (this.idsJittered) {
       // Only chunks still on the GPU (some may have been evicted since).
       const chunks = this.lastChunks.filter((c) => this.store.get(c.file) === c);
-      g.id.draw(g.targets, f.view, chunks, f.surface, f.zMax, [0, 0]);
+      g.id.draw(g.targets, f.view, chunks, f.surface, f.zMax, this.wholeChunks ? EVERY_Z : f.sliceRange, [0, 0]);
       this.idsJittered = false;
     }
     return g;

@@ -5,6 +5,7 @@ import { decodeChunk } from '../../../format/chunk.js';
 import { FormatError } from '../../../format/format-error.js';
 import { gunzipIfNeeded } from './gunzip.js';
 import { sha256Hex } from './sha256.js';
+import { orderForDrawing } from './draw-ranges.js';
 import { keepUpwardTriangles } from './upward-triangles.js';
 import { fetchBytes, type RetryOptions } from './fetch-retry.js';
 import type { ChunkPayload } from './worker-protocol.js';
@@ -45,6 +46,7 @@ export async function fetchChunk(leaf: ChunkLeaf, url: string, retry: RetryOptio
   const { data: chunk, verified } = await fetchChunkFile(leaf, url, retry, signal, decodeChunk);
   // After the hash check: this rewrites the index section in place.
   const triangleCount = keepUpwardTriangles(chunk.positions, chunk.indices);
+  const blocks = orderForDrawing(chunk.positions, chunk.upperEnd, chunk.indices, triangleCount);
   return {
     kind: 'surfaces',
     file: leaf.file,
@@ -58,6 +60,7 @@ export async function fetchChunk(leaf: ChunkLeaf, url: string, retry: RetryOptio
     vertexByteLength: chunk.vertexByteLength,
     indexByteOffset: chunk.indices.byteOffset,
     indexSize: chunk.indices.BYTES_PER_ELEMENT as 2 | 4,
+    blocks,
     verified,
   };
 }

@@ -1,6 +1,7 @@
 // Messages between the map (main thread) and the chunk worker.
 import type { Box3, CubeMeta } from '../../../format/cube-index.js';
 import type { FaceRecord } from '../../../format/face-page.js';
+import type { DrawBlocks } from './draw-ranges.js';
 
 /** not-requested -> requested -> received -> gpu -> evicted (-> requested ...); failed: corrupt or gave up. */
 export type ChunkStatus = 'not-requested' | 'requested' | 'received' | 'gpu' | 'evicted' | 'failed';
@@ -73,6 +74,8 @@ export interface ChunkPayload {
   vertexByteLength: number;
   indexByteOffset: number;
   indexSize: 2 | 4;
+  /** The triangles' order for drawing: which runs a slice range needs (draw-ranges.ts). */
+  blocks: DrawBlocks;
   /** False when crypto.subtle was unavailable (not a secure context) to check the hash. */
   verified: boolean;
 }
