@@ -1,7 +1,11 @@
 // The triangles a view needs, counted on the CPU from the chunks (issue 13's "triangles needed by
 // the faces actually visible"): those relevant at the view's z (lowest corner at or below it,
-// upper face not yet ended: docs/FORMAT.md, "Surfaces") whose ground box meets the view. A frame
+// upper face not yet ended: docs/FORMAT.md, "Surfaces"; a face's end from the face table pages,
+// taken as its stepHigh, at or just above its true end) whose ground box meets the view. A frame
 // that draws exactly these draws no triangle in vain; the renderer's count is set against it.
+import { readFile } from 'node:fs/promises';
+import path from 'node:path';
+import { decodeFacePage, faceRecord } from '../format/face-page.js';
 import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
 import { zAtScale } from '../format/scale.js';
 import { CubeReader } from '../preprocess/ssc/read-cube.js';
@@ -9,7 +13,21 @@ import { CubeReader } from '../preprocess/ssc/read-cube.js';
 /** Triangles needed by a `width` x `height` px view at 1:scale centred on `centre`. */
 export async function trianglesInView(cubeDir: string, scale: number, centre: [number, number], width = 1280, height = 720): Promise<number> {
   const cube = await CubeReader.open(cubeDir);
-  const z = zAtScale(cube.index.meta, scale);
+  const meta = cube.index.meta;
+  const z = zAtScale(meta, scale);
+  const pages = await Promise.all(meta.faces.pages.map(async (p) => {
+    const b = await readFile(path.join(cubeDir, p.file));
+    return decodeFacePage(b.buffer.slice(b.byteOffset, b.byteOffset + b.byteLength));
+  }));
+  const ends = new Map<number, number>();
+  const endOf = (face: number): number => {
+    let e = ends.get(face);
+    if (e === undefined) {
+      const rec = pages.map((p) => faceRecord(p, face)).find((r) => r !== undefined);
+      ends.set(face, (e = rec ? rec.stepHigh : Infinity));
+    }
+    return e;
+  };
   const res = (scale * PIXEL_SIZE_MM) / 1000;
   const [x0, y0, x1, y1] = [centre[0] - (width / 2) * res, centre[1] - (height / 2) * res, centre[0] + (width / 2) * res, centre[1] + (height / 2) * res];
   let n = 0;
@@ -18,7 +36,7 @@ export async function trianglesInView(cubeDir: string, scale: number, centre: [n
     const P = c.positions, I = c.indices;
     for (let t = 0; t < c.triangleCount; t++) {
       const a = I[3 * t]!, b = I[3 * t + 1]!, d = I[3 * t + 2]!;
-      if (Math.min(P[3 * a + 2]!, P[3 * b + 2]!, P[3 * d + 2]!) > z || c.upperEnd[a]! <= z) continue;
+      if (Math.min(P[3 * a + 2]!, P[3 * b + 2]!, P[3 * d + 2]!) > z || endOf(c.upper[a]!) <= z) continue;
       const tx0 = c.originX + Math.min(P[3 * a]!, P[3 * b]!, P[3 * d]!), tx1 = c.originX + Math.max(P[3 * a]!, P[3 * b]!, P[3 * d]!);
       const ty0 = c.originY + Math.min(P[3 * a + 1]!, P[3 * b + 1]!, P[3 * d + 1]!), ty1 = c.originY + Math.max(P[3 * a + 1]!, P[3 * b + 1]!, P[3 * d + 1]!);
       if (tx1 >= x0 && tx0 <= x1 && ty1 >= y0 && ty0 <= y1) n++;

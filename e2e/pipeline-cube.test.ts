@@ -178,7 +178,8 @@ test('bgt_otterlo_400m cube', async (t) => {
     const damaged = path.join(dir, 'damaged');
     mkdirSync(damaged);
     for (const n of readdirSync(cube)) writeFileSync(path.join(damaged, n), readFileSync(path.join(cube, n)));
-    const chunk = readdirSync(damaged).find((n) => n.startsWith('c-') && n.endsWith('.bin'))!;
+    // A chunk the slice at step 0 reads (not every chunk reaches down to the floor).
+    const chunk = (await (await CubeReader.open(damaged)).query({ ground: [-Infinity, -Infinity, Infinity, Infinity], zMin: 0, zMax: 0 }))[0]!.file;
     const bytes = readFileSync(path.join(damaged, chunk));
     bytes[200] = bytes[200]! ^ 0xff;
     writeFileSync(path.join(damaged, chunk), bytes);
@@ -213,8 +214,9 @@ test('bgt_otterlo_400m cube', async (t) => {
     assert.equal(rep.bytes.total, files.reduce((a, f) => a + readFileSync(path.join(cube, f)).length, 0));
     assert.ok(rep.bytes.cv <= 0.25, `chunk sizes vary too much (CV ${rep.bytes.cv})`);
     // Compressed chunks (version 2) pay for chunking also in their codecs starting afresh and
-    // sharing points only within a chunk: a few per cent more than the raw version 1 did.
-    assert.ok(rep.overhead <= 1.15, `chunking costs ${rep.overhead}`);
+    // sharing points only within a chunk; the default 32 KiB chunks (build-cube.ts says why)
+    // start afresh eight times as often as the 256 KiB ones did, which cost 1.15: about 1.2.
+    assert.ok(rep.overhead <= 1.25, `chunking costs ${rep.overhead}`);
     assert.equal(rep.views.length, 8);
   });
 });

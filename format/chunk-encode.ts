@@ -1,4 +1,4 @@
-// The chunk file's encoder (docs/FORMAT.md, "Chunk file", version 3), beside the decoder in
+// The chunk file's encoder (docs/FORMAT.md, "Chunk file", version 2), beside the decoder in
 // chunk.ts: a file of its own so that the map, which only decodes, does not load the
 // encoder's WebAssembly. Used by the build (Node). Same input, same bytes.
 import { MeshoptEncoder } from 'meshoptimizer/encoder';
@@ -22,50 +22,29 @@ export interface ChunkInput {
   /** Each face's class: the same wherever the face is named. */
   upperClass: ArrayLike<number>;
   lowerClass: ArrayLike<number>;
-  /** The z where each vertex's upper face ends: the same wherever the face is named as upper. */
-  upperEnd: ArrayLike<number>;
   /** Counterclockwise triangles as vertex indices. */
   indices: ArrayLike<number>;
 }
 
-/** The smallest float32 at or above x (an end rounded down would drop a triangle a slice just below it needs). */
-function float32AtOrAbove(x: number): number {
-  const f = Math.fround(x);
-  if (f >= x || !Number.isFinite(f)) return f;
-  const a = new Float32Array([f]), bits = new Int32Array(a.buffer);
-  bits[0]! += f > 0 ? 1 : f < 0 ? -1 : 0;
-  if (f === 0) a[0] = 2 ** -149;
-  return a[0]!;
-}
-
-/**
- * The faces named by the vertices, in order of first mention (upper before lower), with their
- * classes and ends (0 for a face named only as a lower face: no triangle's relevance needs it).
- */
-function faceTable(c: ChunkInput): { ids: number[]; classes: number[]; ends: number[]; local: Map<number, number> } {
+/** The faces named by the vertices, in order of first mention (upper before lower), with their classes. */
+function faceTable(c: ChunkInput): { ids: number[]; classes: number[]; local: Map<number, number> } {
   const local = new Map<number, number>();
-  const ids: number[] = [], classes: number[] = [], ends: number[] = [];
-  const add = (face: number, cls: number, end: number | undefined): void => {
-    let i = local.get(face);
+  const ids: number[] = [], classes: number[] = [];
+  const add = (face: number, cls: number): void => {
+    const i = local.get(face);
     if (i === undefined) {
-      local.set(face, (i = ids.length));
+      local.set(face, ids.length);
       ids.push(face);
       classes.push(cls);
-      ends.push(NaN);
     } else if (classes[i] !== cls) {
       throw new Error(`chunk encoder: face ${face} has class ${classes[i]} at one vertex and ${cls} at another`);
     }
-    if (end === undefined) return;
-    const e = float32AtOrAbove(end);
-    if (!Number.isFinite(e)) throw new Error(`chunk encoder: face ${face} ends at ${end}, not a finite z`);
-    if (Number.isNaN(ends[i]!)) ends[i] = e;
-    else if (ends[i] !== e) throw new Error(`chunk encoder: face ${face} ends at ${ends[i]} at one vertex and ${e} at another`);
   };
   for (let k = 0; k < c.upper.length; k++) {
-    add(c.upper[k]!, c.upperClass[k]!, c.upperEnd[k]);
-    add(c.lower[k]!, c.lowerClass[k]!, undefined);
+    add(c.upper[k]!, c.upperClass[k]!);
+    add(c.lower[k]!, c.lowerClass[k]!);
   }
-  return { ids, classes, ends: ends.map((e) => (Number.isNaN(e) ? 0 : e)), local };
+  return { ids, classes, local };
 }
 
 /** Every vertex is used by a triangle (a reader relies on it to bound the counts). */
@@ -84,9 +63,6 @@ export function encodeChunk(c: ChunkInput): Uint8Array {
   const V = c.upper.length, T = c.indices.length / 3;
   if (!Number.isInteger(T)) throw new Error(`chunk encoder: ${c.indices.length} indices are not whole triangles`);
   checkUsed(c.indices, V);
-  for (const k of ['lower', 'upperClass', 'lowerClass', 'upperEnd'] as const) {
-    if (c[k].length !== V) throw new Error(`chunk encoder: ${c[k].length} entries of ${k} for ${V} vertices`);
-  }
   const faces = faceTable(c);
   const F = faces.ids.length;
   const faceIndexSize = faceIndexSizeFor(F), indexSize = indexSizeFor(V);
@@ -146,7 +122,6 @@ export function encodeChunk(c: ChunkInput): Uint8Array {
   for (let i = 0; i < F; i++) {
     dv.setUint32(sec.faceIds + 4 * i, faces.ids[i]!, true);
     dv.setUint16(sec.faceClasses + 2 * i, faces.classes[i]!, true);
-    dv.setFloat32(sec.faceEnds + 4 * i, faces.ends[i]!, true);
   }
   out.set(pointStream, sec.points);
   out.set(vertexStream, sec.vertices);

@@ -1,4 +1,4 @@
-// The chunk file, version 3: the encoder writes the header and face table of docs/FORMAT.md
+// The chunk file, version 2: the encoder writes the header and face table of docs/FORMAT.md
 // (checked at offsets worked out by hand), the decoder gives back what went in (positions
 // within half a grid step, everything else exactly), and a damaged, truncated or old file is
 // refused with a message that says what is wrong.
@@ -19,7 +19,6 @@ function square(): ChunkInput & { positions: Float32Array } {
     lower: new Uint32Array([0, 0, 7, 0]),
     upperClass: new Uint16Array([2, 2, 4, 2]),
     lowerClass: new Uint16Array([0xffff, 0xffff, 2, 0xffff]),
-    upperEnd: new Float32Array([6, 6, 8.5, 6]),
     indices: new Uint16Array([0, 1, 2, 0, 2, 3]),
   };
 }
@@ -72,8 +71,6 @@ function gridChunk(n: number, size: number, seed = 1): ChunkInput & { positions:
     originX: 181234, originY: 456789, box: Float32Array.of(0, 0, 40, size, size, 42),
     positions: Float64Array.from(keep.flatMap((v) => [positions[3 * v]!, positions[3 * v + 1]!, positions[3 * v + 2]!])),
     upper: Uint32Array.from(U), lower: Uint32Array.from(D), upperClass: Uint16Array.from(U, cls), lowerClass: Uint16Array.from(D, cls),
-    // A face ends some phases after 41, by its id; 1/9 is not a float32, so ends round up to one.
-    upperEnd: Float64Array.from(U, (f) => 41 + (f % 13) / 9),
     indices: keep.length <= 0xffff ? Uint16Array.from(indices, (v) => at.get(v)!) : Uint32Array.from(indices, (v) => at.get(v)!),
   };
 }
@@ -107,10 +104,6 @@ function assertSame(d: DecodedChunk, c: ChunkInput, tol: number): void {
   assert.deepEqual([...d.lower], Array.from(c.lower));
   assert.deepEqual([...d.upperClass], Array.from(c.upperClass));
   assert.deepEqual([...d.lowerClass], Array.from(c.lowerClass));
-  for (let k = 0; k < V; k++) {
-    const e = c.upperEnd[k]!, got = d.upperEnd[k]!;
-    assert.ok(got >= e && Math.fround(got) === got && (got === Math.fround(e) || Math.fround(e) < e), `vertex ${k}: end ${e} comes back as the float32 at or above it (${got})`);
-  }
   assert.deepEqual(triangles(d.indices), triangles(c.indices));
 }
 
@@ -119,7 +112,7 @@ describe('chunk file', () => {
     const bytes = encodeChunk(square());
     const dv = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
     assert.equal(dv.getUint32(0, true), 0x43435353);
-    assert.equal(dv.getUint32(4, true), 3, 'version');
+    assert.equal(dv.getUint32(4, true), 2, 'version');
     assert.equal(dv.getUint32(8, true), 4, 'vertices');
     assert.equal(dv.getUint32(12, true), 2, 'triangles');
     assert.equal(dv.getFloat64(16, true), 181000.5);
@@ -130,12 +123,11 @@ describe('chunk file', () => {
     assert.equal(dv.getUint32(60, true), 3, 'faces 7, 0 and 8');
     assert.equal(dv.getUint32(64, true), 4, 'points: the four corners');
     const pointStream = dv.getUint32(68, true), vertexStream = dv.getUint32(72, true), indexStream = dv.getUint32(76, true);
-    // Face ids at 80 (3 x u32), classes at 92 (3 x u16, padded to 100), ends at 100 (3 x f32), then the streams.
+    // Face ids at 80 (3 x u32), classes at 92 (3 x u16, padded to 100), then the streams.
     assert.deepEqual([0, 1, 2].map((i) => dv.getUint32(80 + 4 * i, true)), [7, 0, 8], 'in order of first mention, upper before lower');
     assert.deepEqual([0, 1, 2].map((i) => dv.getUint16(92 + 2 * i, true)), [2, 0xffff, 4]);
-    assert.deepEqual([0, 1, 2].map((i) => dv.getFloat32(100 + 4 * i, true)), [6, 0, 8.5], 'face 0 is only below: no end');
-    assert.equal(bytes[112], 0xa1, 'the point stream starts at 112 with the vertex codec\'s version-1 header byte');
-    const vertexAt = (112 + pointStream + 3) & ~3;
+    assert.equal(bytes[100], 0xa1, 'the point stream starts at 100 with the vertex codec\'s version-1 header byte');
+    const vertexAt = (100 + pointStream + 3) & ~3;
     assert.equal(bytes[vertexAt], 0xa1, 'the vertex stream at the next multiple of 4');
     const indexAt = (vertexAt + vertexStream + 3) & ~3;
     assert.equal(bytes[indexAt], 0xe1, 'the index stream at the next multiple of 4, with the index codec\'s header byte');
@@ -187,7 +179,6 @@ describe('chunk file', () => {
       positions: Float32Array.from([...c.positions, 0, 0, 9, 1, 0, 9, 1, 1, 9, 0, 1, 9]),
       upper: Uint32Array.of(...Array.from(c.upper), 8, 8, 8, 8), lower: Uint32Array.of(...Array.from(c.lower), 7, 7, 7, 7),
       upperClass: Uint16Array.of(...Array.from(c.upperClass), 4, 4, 4, 4), lowerClass: Uint16Array.of(...Array.from(c.lowerClass), 2, 2, 2, 2),
-      upperEnd: Float32Array.of(...Array.from(c.upperEnd), 8.5, 8.5, 8.5, 8.5),
       indices: Uint16Array.of(...Array.from(c.indices), 4, 5, 6, 4, 6, 7),
     };
     const bytes = encodeChunk(roof);
@@ -217,7 +208,7 @@ describe('chunk file', () => {
     const c: ChunkInput = {
       originX: 0, originY: 0, box: new Float32Array([0, 0, 0, 100, 0, 0]), positions,
       upper: Uint32Array.from({ length: V }, (_, i) => 1 + Math.floor(i / 3)), lower: new Uint32Array(V), upperClass: new Uint16Array(V),
-      lowerClass: new Uint16Array(V).fill(0xffff), upperEnd: new Float32Array(V).fill(1), indices,
+      lowerClass: new Uint16Array(V).fill(0xffff), indices,
     };
     const d = await decodeChunk(encodeChunk(c));
     assert.ok(d.indices instanceof Uint32Array);
@@ -233,12 +224,6 @@ describe('chunk file', () => {
     const c = square();
     c.upperClass = Uint16Array.of(2, 2, 4, 3);
     assert.throws(() => encodeChunk(c), /face 7 has class 2 at one vertex and 3 at another/);
-    const ends = square();
-    ends.upperEnd = Float32Array.of(6, 6, 8.5, 7);
-    assert.throws(() => encodeChunk(ends), /face 7 ends at 6 at one vertex and 7 at another/);
-    const endless = square();
-    endless.upperEnd = Float32Array.of(6, 6, Infinity, 6);
-    assert.throws(() => encodeChunk(endless), /face 8 ends at Infinity, not a finite z/);
     const far = square();
     far.positions[3] = 5;
     assert.throws(() => encodeChunk(far), /vertex 1 lies outside the chunk's box/);
@@ -260,15 +245,14 @@ describe('chunk file', () => {
     await refuses(good.subarray(0, 40), /truncated \(40 bytes, the header alone is 80\)/);
     await refuses(good.subarray(0, 3), /truncated/);
     await refuses(damaged((dv) => dv.setUint32(0, CHUNK_MAGIC + 1, true)), /bad magic/);
-    await refuses(damaged((dv) => dv.setUint32(4, 2, true)), /chunk version 2, this reader knows only version 3 \(rebuild the cube with ssc build\)/);
-    await refuses(damaged((dv) => dv.setUint32(4, 4, true)), /chunk version 4/);
-    await refuses(damaged((dv) => dv.setFloat32(104, NaN, true)), /face 0 has a non-finite end z/);
+    await refuses(damaged((dv) => dv.setUint32(4, 1, true)), /chunk version 1, this reader knows only version 2 \(rebuild the cube with ssc build\)/);
+    await refuses(damaged((dv) => dv.setUint32(4, 3, true)), /chunk version 3/);
     await refuses(good.subarray(0, good.length - 4), new RegExp(`${good.length - 4} bytes, its header .* needs ${good.length}`));
     await refuses(damaged((dv) => dv.setInt32(56, -20, true)), /position step 2\^-20 does not fit its box \(2\^-23\)/);
     await refuses(damaged((dv) => dv.setUint32(8, 2 ** 30, true)), /counts out of bounds \(2 triangles, 1073741824 vertices/);
     await refuses(damaged((dv) => dv.setUint32(12, 2 ** 30, true)), /1073741824 triangles cannot fit an index stream of \d+ bytes/);
     await refuses(damaged((dv) => dv.setUint32(64, 5, true)), /counts out of bounds \(2 triangles, 4 vertices, 5 points, 3 faces\)/);
-    await refuses(damaged((_, b) => { b[112] = 0; }), /compressed points, vertices or triangles do not decode/);
+    await refuses(damaged((_, b) => { b[100] = 0; }), /compressed points, vertices or triangles do not decode/);
   });
 
   test('a file of version 1 (24 bytes a vertex) is refused, not misread', async () => {
@@ -279,6 +263,6 @@ describe('chunk file', () => {
     dv.setUint32(4, 1, true);
     dv.setUint32(8, 4, true);
     dv.setUint32(12, 2, true);
-    await assert.rejects(decodeChunk(v1, 'c-old.bin'), /c-old\.bin: chunk version 1, this reader knows only version 3/);
+    await assert.rejects(decodeChunk(v1, 'c-old.bin'), /c-old\.bin: chunk version 1, this reader knows only version 2/);
   });
 });

@@ -1,8 +1,7 @@
-// The chunk file (docs/FORMAT.md, "Chunk file", version 3): surface triangles of one chunk,
+// The chunk file (docs/FORMAT.md, "Chunk file", version 2): surface triangles of one chunk,
 // compact. Ground points relative to the chunk's origin on a power-of-two grid, each once (the
 // corners of several surfaces share it); a vertex is a point, its z as float32 and the faces
-// above and below as indices into a chunk-local face table (which gives each face's class, and
-// the z where it ends, so that a reader can tell which triangles a slice needs).
+// above and below as indices into a chunk-local face table (which gives each face's class).
 // Points, vertices and triangles are compressed with meshoptimizer's vertex and index codecs
 // (the glTF EXT_meshopt_compression codecs). The decoder expands a file to the vertex columns
 // the GPU binds as they are (chunk-layout.ts). Pure: used by the CPU slicer and the map's
@@ -12,7 +11,7 @@ import { VERTEX_BYTES, vertexColumnOffset, type VertexColumn } from './chunk-lay
 import { FormatError } from './format-error.js';
 
 export const CHUNK_MAGIC = 0x43435353; // "SSCC"
-export const CHUNK_VERSION = 3;
+export const CHUNK_VERSION = 2;
 export const NO_CLASS = 0xffff;
 /** Header bytes (docs/FORMAT.md). */
 export const CHUNK_HEADER_BYTES = 80;
@@ -36,12 +35,6 @@ export interface ChunkData {
   lower: Uint32Array;
   upperClass: Uint16Array;
   lowerClass: Uint16Array;
-  /**
-   * Per vertex, the z where its upper face ends (the top of the cube for one that lasts): a
-   * triangle is needed by slices from its lowest vertex's z up to there; above, newer surfaces
-   * cover it. Not part of the GPU's vertex columns.
-   */
-  upperEnd: Float32Array;
   indices: Uint16Array | Uint32Array;
 }
 
@@ -79,7 +72,6 @@ export function positionExponent(box: ArrayLike<number>): number {
 export interface ChunkSections {
   faceIds: number;
   faceClasses: number;
-  faceEnds: number;
   points: number;
   vertices: number;
   indices: number;
@@ -90,11 +82,10 @@ export interface ChunkSections {
 export function chunkSections(faces: number, pointStreamBytes: number, vertexStreamBytes: number, indexStreamBytes: number): ChunkSections {
   const faceIds = CHUNK_HEADER_BYTES;
   const faceClasses = faceIds + 4 * faces;
-  const faceEnds = pad4(faceClasses + 2 * faces);
-  const points = faceEnds + 4 * faces;
+  const points = pad4(faceClasses + 2 * faces);
   const vertices = pad4(points + pointStreamBytes);
   const indices = pad4(vertices + vertexStreamBytes);
-  return { faceIds, faceClasses, faceEnds, points, vertices, indices, end: pad4(indices + indexStreamBytes) };
+  return { faceIds, faceClasses, points, vertices, indices, end: pad4(indices + indexStreamBytes) };
 }
 
 /** Bytes of a decoded chunk: the vertex columns, then the indices. */
@@ -171,9 +162,6 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
 
   const faceIds = new Uint32Array(b.buffer, b.byteOffset + sec.faceIds, F);
   const faceClasses = new Uint16Array(b.buffer, b.byteOffset + sec.faceClasses, F);
-  const faceEnds = new Float32Array(b.buffer, b.byteOffset + sec.faceEnds, F);
-  for (let i = 0; i < F; i++) if (!Number.isFinite(faceEnds[i]!)) throw fail(`face ${faceIds[i]} has a non-finite end z`);
-  const upperEnd = new Float32Array(V);
   const { positions, upper, lower, upperClass, lowerClass } = columnViews(out, V);
   const points = new Int32Array(rawPoints.buffer);
   const pointOf = new Uint32Array(raw.buffer), floats = new Float32Array(raw.buffer);
@@ -193,7 +181,6 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
     lower[k] = faceIds[d]!;
     upperClass[k] = faceClasses[u]!;
     lowerClass[k] = faceClasses[d]!;
-    upperEnd[k] = faceEnds[u]!;
   }
   const indices = indexSize === 2 ? new Uint16Array(out, indexOffset, 3 * T) : new Uint32Array(out, indexOffset, 3 * T);
   for (let i = 0; i < indices.length; i++) {
@@ -201,7 +188,7 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   }
   return {
     vertexCount: V, triangleCount: T,
-    originX: dv.getFloat64(16, true), originY: dv.getFloat64(24, true), box, positions, upper, lower, upperClass, lowerClass, upperEnd, indices,
+    originX: dv.getFloat64(16, true), originY: dv.getFloat64(24, true), box, positions, upper, lower, upperClass, lowerClass, indices,
     vertexByteOffset: 0, vertexByteLength: VERTEX_BYTES * V,
   };
 }

@@ -22,7 +22,6 @@ export function squareChunk(n = 0): Uint8Array {
     lower: new Uint32Array([0, 0, 0, 0]),
     upperClass: new Uint16Array([1, 1, 1, 1]),
     lowerClass: new Uint16Array([0xffff, 0xffff, 0xffff, 0xffff]),
-    upperEnd: new Float32Array([11, 11, 11, 11]),
     indices: new Uint16Array([0, 2, 1, 0, 2, 3]),
   });
 }

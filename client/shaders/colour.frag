@@ -110,7 +110,8 @@ void main() {
     if (edge) colour = mix(colour, uBoundaryColour.rgb, uBoundaryColour.a);
   }
   uint bits = stateBits(ids.x);
-  for (int s = 0; s < 2; s++) {
+  // Guarded: SwiftShader runs this loop for every pixel otherwise, which doubled the pass.
+  if (bits != 0u) for (int s = 0; s < 2; s++) {
     if ((bits & (1u << uint(s))) == 0u) continue;
     colour = mix(colour, uStateFill[s].rgb, uStateFill[s].a);
     // The outline: pixels of the face within its width of another face (or of nothing).

@@ -47,7 +47,6 @@ export function assembleChunk(
   const positions = new Float64Array(3 * V);
   const upper = new Uint32Array(V), lower = new Uint32Array(V);
   const upperClass = new Uint16Array(V), lowerClass = new Uint16Array(V);
-  const upperEnd = new Float64Array(V);
   for (let k = 0; k < V; k++) {
     const v = verts[2 * k]!, corner = verts[2 * k + 1]!, i = Math.floor(corner / 3);
     positions[3 * k] = xs[v]! - ox;
@@ -57,11 +56,10 @@ export function assembleChunk(
     lower[k] = s.lower[i]!;
     upperClass[k] = s.upper[i]! > 0 ? classOf(s.upper[i]!) : NO_CLASS;
     lowerClass[k] = s.lower[i]! > 0 ? classOf(s.lower[i]!) : NO_CLASS;
-    upperEnd[k] = s.zEnd[i]!;
   }
   const box = Float32Array.of(x0 - ox, y0 - oy, z0, x1 - ox, y1 - oy, z1);
   const bytes = encodeChunk({
-    originX: ox, originY: oy, box, positions, upper, lower, upperClass, lowerClass, upperEnd,
+    originX: ox, originY: oy, box, positions, upper, lower, upperClass, lowerClass,
     indices: V <= 0xffff ? Uint16Array.from(indices) : Uint32Array.from(indices),
   });
   return { bytes, triangles: tris.length, vertices: V, bbox: [x0, y0, z0, x1, y1, z1] };

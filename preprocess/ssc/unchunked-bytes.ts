@@ -7,7 +7,7 @@ import { encodeChunk } from '../../format/chunk-encode.js';
 export function unchunkedBytes(chunks: Iterable<ChunkData>): number {
   const vertexOf = new Map<string, number>();
   const xs: number[] = [], ys: number[] = [], zs: number[] = [];
-  const upper: number[] = [], lower: number[] = [], upperClass: number[] = [], lowerClass: number[] = [], upperEnd: number[] = [];
+  const upper: number[] = [], lower: number[] = [], upperClass: number[] = [], lowerClass: number[] = [];
   const indices: number[] = [];
   let x0 = Infinity, y0 = Infinity, z0 = Infinity, x1 = -Infinity, y1 = -Infinity, z1 = -Infinity;
   for (const c of chunks) {
@@ -19,7 +19,7 @@ export function unchunkedBytes(chunks: Iterable<ChunkData>): number {
       if (k === undefined) {
         vertexOf.set(key, (k = xs.length));
         xs.push(x); ys.push(y); zs.push(z);
-        upper.push(c.upper[v]!); lower.push(c.lower[v]!); upperClass.push(c.upperClass[v]!); lowerClass.push(c.lowerClass[v]!); upperEnd.push(c.upperEnd[v]!);
+        upper.push(c.upper[v]!); lower.push(c.lower[v]!); upperClass.push(c.upperClass[v]!); lowerClass.push(c.lowerClass[v]!);
         x0 = Math.min(x0, x); x1 = Math.max(x1, x);
         y0 = Math.min(y0, y); y1 = Math.max(y1, y);
         z0 = Math.min(z0, z); z1 = Math.max(z1, z);
@@ -28,7 +28,7 @@ export function unchunkedBytes(chunks: Iterable<ChunkData>): number {
     }
     for (let i = 0; i < c.indices.length; i++) indices.push(local[c.indices[i]!]!);
   }
-  if (xs.length === 0) return encodeChunk({ originX: 0, originY: 0, box: new Float32Array(6), positions: [], upper: [], lower: [], upperClass: [], lowerClass: [], upperEnd: [], indices: [] }).byteLength;
+  if (xs.length === 0) return encodeChunk({ originX: 0, originY: 0, box: new Float32Array(6), positions: [], upper: [], lower: [], upperClass: [], lowerClass: [], indices: [] }).byteLength;
   // As a build would place it: a whole-unit origin at the smallest x, y.
   const ox = Math.floor(x0), oy = Math.floor(y0);
   const positions = new Float64Array(3 * xs.length);
@@ -38,6 +38,6 @@ export function unchunkedBytes(chunks: Iterable<ChunkData>): number {
     positions[3 * k + 2] = zs[k]!;
   }
   return encodeChunk({
-    originX: ox, originY: oy, box: Float32Array.of(x0 - ox, y0 - oy, z0, x1 - ox, y1 - oy, z1), positions, upper, lower, upperClass, lowerClass, upperEnd, indices,
+    originX: ox, originY: oy, box: Float32Array.of(x0 - ox, y0 - oy, z0, x1 - ox, y1 - oy, z1), positions, upper, lower, upperClass, lowerClass, indices,
   }).byteLength;
 }

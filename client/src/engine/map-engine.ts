@@ -259,8 +259,8 @@ export class MapEngine extends Evented<EngineEvents> {
   }
 
   /**
-   * Benchmarks only: draw every triangle of every chunk, as before draw runs (draw-ranges.ts), to
-   * set the two against each other on one page.
+   * Benchmarks only: draw every triangle of every chunk, as before the drawing order
+   * (draw-ranges.ts), to set the two against each other on one page.
    */
   setWholeChunks(whole: boolean): void {
     if (this.renderer) this.renderer.wholeChunks = whole;

@@ -1,9 +1,9 @@
 // A chunk on the GPU: its vertex section as one buffer (attributes at offsets into it, exactly
 // as the file lays them out) and its triangle indices, bound in a vertex array object. It draws
-// only the runs of triangles the slice's z range needs (draw-ranges.ts).
+// only the triangles that are not above the slice everywhere (draw-ranges.ts).
 import { VERTEX_COLUMNS, vertexColumnOffset } from '../../../format/chunk-layout.js';
 import type { Box3 } from '../../../format/cube-index.js';
-import { drawRuns, type DrawBlocks } from '../source/draw-ranges.js';
+import { trianglesUpTo, type DrawBlocks } from '../source/draw-ranges.js';
 import type { ChunkPayload } from '../source/worker-protocol.js';
 
 export class GpuChunk {
@@ -18,8 +18,6 @@ export class GpuChunk {
   /** Frame number of the last frame that drew it (least recently used goes first). */
   lastUsed = 0;
   private readonly blocks: DrawBlocks;
-  private readonly indexSize: number;
-  private readonly runs: number[] = [];
   private readonly vao: WebGLVertexArrayObject;
   private readonly buffers: WebGLBuffer[];
 
@@ -30,7 +28,6 @@ export class GpuChunk {
     this.originY = c.originY;
     this.triangleCount = c.triangleCount;
     this.blocks = c.blocks;
-    this.indexSize = c.indexSize;
     const V = c.vertexCount;
     const indexBytes = c.indexSize * 3 * c.triangleCount;
     this.bytes = c.vertexByteLength + indexBytes;
@@ -56,13 +53,12 @@ export class GpuChunk {
     this.buffers = [vbo, ibo];
   }
 
-  /** Draws the triangles slices from zMin to zMax need; returns how many. */
-  draw(gl: WebGL2RenderingContext, zMin: number, zMax: number): number {
-    const n = drawRuns(this.blocks, zMin, zMax, this.runs);
+  /** Draws the triangles a slicing surface up to zMax can show; returns how many. */
+  draw(gl: WebGL2RenderingContext, zMax: number): number {
+    const n = trianglesUpTo(this.blocks, zMax);
     if (n === 0) return 0;
     gl.bindVertexArray(this.vao);
-    const r = this.runs;
-    for (let k = 0; k < r.length; k += 2) gl.drawElements(gl.TRIANGLES, 3 * r[k + 1]!, this.indexType, 3 * this.indexSize * r[k]!);
+    gl.drawElements(gl.TRIANGLES, 3 * n, this.indexType, 0);
     return n;
   }
 

@@ -24,11 +24,11 @@ export class IdPass {
 
   /**
    * Draws the chunks sliced by `surface` (whose z per pixel is in the surface target);
-   * `jitter` shifts the image by a fraction of a pixel (supersampling); `sliceRange` is the
-   * surface's z range over the view, which chooses the triangles drawn. Returns the triangles
-   * submitted.
+   * `jitter` shifts the image by a fraction of a pixel (supersampling); `sliceTop` is the
+   * surface's highest z over the view: triangles wholly above it are not drawn. Returns the
+   * triangles submitted.
    */
-  draw(targets: Targets, view: ViewGeometry, chunks: Iterable<GpuChunk>, surface: Surface, zMax: number, sliceRange: readonly [number, number], jitter: [number, number]): number {
+  draw(targets: Targets, view: ViewGeometry, chunks: Iterable<GpuChunk>, surface: Surface, zMax: number, sliceTop: number, jitter: [number, number]): number {
     const gl = this.gl;
     const p = this.program;
     const hw = (view.width * view.resolution) / 2, hh = (view.height * view.resolution) / 2;
@@ -63,7 +63,7 @@ export class IdPass {
       this.matrix[13]! += jy;
       this.matrix32.set(this.matrix);
       gl.uniformMatrix4fv(uMatrix, false, this.matrix32);
-      triangles += c.draw(gl, sliceRange[0], sliceRange[1]);
+      triangles += c.draw(gl, sliceTop);
     }
     gl.bindVertexArray(null);
     gl.disable(gl.CULL_FACE);

@@ -53,8 +53,6 @@ interface Gpu {
   faceState: FaceStateTexture | null;
 }
 
-/** A z range that every triangle meets: the whole chunk is drawn. */
-const EVERY_Z: readonly [number, number] = [-Infinity, Infinity];
 
 export class Renderer {
   readonly store: ChunkStore;
@@ -209,7 +207,7 @@ export class Renderer {
     g.targets.resize(f.view.width, f.view.height);
     gl.bindVertexArray(g.emptyVao);
     g.surface.draw(g.targets, f.view, f.surface, f.zMax);
-    const triangles = g.id.draw(g.targets, f.view, chunks, f.surface, f.zMax, this.wholeChunks ? EVERY_Z : f.sliceRange, f.jitter);
+    const triangles = g.id.draw(g.targets, f.view, chunks, f.surface, f.zMax, this.wholeChunks ? Infinity : f.sliceRange[1], f.jitter);
     this.idsJittered = f.jitter[0] !== 0 || f.jitter[1] !== 0;
     gl.bindVertexArray(g.emptyVao);
     g.colour.draw(g.targets, { ...f.colour, style: g.style.texture, classCount: g.style.classCount, background: parseColour(this.style.background), faceState: g.faceState.texture });
@@ -257,7 +255,7 @@ export class Renderer {
     if (this.idsJittered) {
       // Only chunks still on the GPU (some may have been evicted since).
       const chunks = this.lastChunks.filter((c) => this.store.get(c.file) === c);
-      g.id.draw(g.targets, f.view, chunks, f.surface, f.zMax, this.wholeChunks ? EVERY_Z : f.sliceRange, [0, 0]);
+      g.id.draw(g.targets, f.view, chunks, f.surface, f.zMax, this.wholeChunks ? Infinity : f.sliceRange[1], [0, 0]);
       this.idsJittered = false;
     }
     return g;

@@ -8,6 +8,9 @@ import type { ViewGeometry } from '../geometry/view.js';
 import { Program } from './program.js';
 import type { Targets } from './targets.js';
 
+/** surface.frag's kind of a flat slice. */
+const FLAT = 0;
+
 export class SurfacePass {
   private readonly program: Program;
   /** The surface computed on the CPU (rows from the bottom), when float targets are missing. */
@@ -24,6 +27,14 @@ export class SurfacePass {
       return;
     }
     const sp = surfaceParams(surface, view.centerX, view.centerY);
+    if (sp.kind === FLAT) {
+      // One z everywhere: a clear writes what surface.frag would (clamp in float32), without
+      // running a shader per pixel, which on a software GPU cost a tenth of the frame.
+      const z = Math.fround(Math.min(Math.max(Math.fround(sp.base), 0), Math.fround(zMax)));
+      gl.bindFramebuffer(gl.FRAMEBUFFER, targets.surfaceFb);
+      gl.clearBufferfv(gl.COLOR, 0, new Float32Array([z, 0, 0, 0]));
+      return;
+    }
     const p = this.program;
     p.use();
     gl.uniform1i(p.loc('uKind'), sp.kind);

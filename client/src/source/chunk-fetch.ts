@@ -46,7 +46,7 @@ export async function fetchChunk(leaf: ChunkLeaf, url: string, retry: RetryOptio
   const { data: chunk, verified } = await fetchChunkFile(leaf, url, retry, signal, decodeChunk);
   // After the hash check: this rewrites the index section in place.
   const triangleCount = keepUpwardTriangles(chunk.positions, chunk.indices);
-  const blocks = orderForDrawing(chunk.positions, chunk.upperEnd, chunk.indices, triangleCount);
+  const blocks = orderForDrawing(chunk.positions, chunk.indices, triangleCount);
   return {
     kind: 'surfaces',
     file: leaf.file,

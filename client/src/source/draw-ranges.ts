@@ -1,65 +1,37 @@
-// Which of a chunk's triangles a slice needs. A triangle matters to slices from its lowest
-// vertex's z up to the z where its upper face ends; below, it lies above the slice and is
-// discarded pixel by pixel; above, newer surfaces cover it. A chunk holds many states stacked
-// over the same ground, so drawing it whole rasterizes every one of them (id.frag writes its
-// depth, so nothing is rejected early). Here the triangles are put in an order in which the
-// ones a slice range needs form a few runs, and the runs are found from a small table:
-// - groups by lowest z (equal counts), so the groups above the slice are skipped;
-// - inside a group, by ascending end, so the ones ended below the slice are a prefix;
-// - blocks of equal count inside each group, each with its lowest z and highest end.
-// What is drawn in excess is at most the group the slice is in and a block per group.
-// Pure: the worker orders a decoded chunk; the renderer picks the runs each frame.
+// Which of a chunk's triangles a slice can show. A chunk holds many states stacked over the same
+// ground; a triangle whose lowest corner lies above the slicing surface everywhere in the view
+// is discarded pixel by pixel by id.frag, after being rasterized (it writes its depth, so nothing
+// is rejected early). Here the triangles are ordered by their lowest z, so those at or below the
+// view's highest slice z are a prefix, found from a small table of blocks: at the base scale that
+// skips almost the whole chunk.
+//
+// Triangles whose upper face has ended below the slice are still drawn: newer surfaces cover
+// them, but where the GPU leaves a pixel between two current triangles uncovered (their shared
+// edge through the pixel centre, snapped differently in two chunks) they fill it, as they did
+// before this order. Skipping them too would need crack-free edges across chunks.
+// Pure: the worker orders a decoded chunk; the renderer picks the prefix each frame.
 
 /** The blocks of a chunk ordered for drawing, as transferred to the renderer. */
 export interface DrawBlocks {
-  /** Lowest vertex z of each block's triangles. */
+  /** Lowest vertex z of each block's first triangle (the blocks ascend). */
   zLow: Float32Array;
-  /** Highest end of each block's triangles. */
-  zHigh: Float32Array;
   /** First triangle of each block, and the triangle count last (blocks + 1 entries). */
   first: Uint32Array;
 }
 
-/** Groups by lowest z in a chunk, and blocks in a group, at most (draw calls and table size stay small). */
-const MAX_GROUPS = 16, MAX_BLOCKS_PER_GROUP = 16;
-/** Triangles a block holds at least: below that, the table costs more than it saves. */
-const MIN_BLOCK = 32;
+/** Triangles a block holds at least: the table stays small, and the prefix ends at most this much late. */
+const BLOCK = 64;
 
 /**
- * Reorders the first `count` triangles of `indices` in place for drawing and returns their
- * blocks. `positions` holds x, y, z per vertex; `upperEnd` the end z of each vertex's upper face
- * (the same on a triangle's three vertices).
+ * Reorders the first `count` triangles of `indices` in place by their lowest vertex z
+ * (`positions` holds x, y, z per vertex; ties keep their order) and returns their blocks.
  */
-export function orderForDrawing(positions: ArrayLike<number>, upperEnd: ArrayLike<number>, indices: Uint16Array | Uint32Array, count: number): DrawBlocks {
-  const low = new Float64Array(count), end = new Float64Array(count);
+export function orderForDrawing(positions: ArrayLike<number>, indices: Uint16Array | Uint32Array, count: number): DrawBlocks {
+  const low = new Float64Array(count);
   for (let t = 0; t < count; t++) {
-    const a = indices[3 * t]!, b = indices[3 * t + 1]!, c = indices[3 * t + 2]!;
-    low[t] = Math.min(positions[3 * a + 2]!, positions[3 * b + 2]!, positions[3 * c + 2]!);
-    end[t] = upperEnd[a]!;
+    low[t] = Math.min(positions[3 * indices[3 * t]! + 2]!, positions[3 * indices[3 * t + 1]! + 2]!, positions[3 * indices[3 * t + 2]! + 2]!);
   }
-  const byLow = Array.from({ length: count }, (_, t) => t).sort((p, q) => low[p]! - low[q]! || p - q);
-  const groups = Math.max(1, Math.min(MAX_GROUPS, Math.floor(count / (MIN_BLOCK * 4))));
-  const order: number[] = [];
-  const first: number[] = [], zLow: number[] = [], zHigh: number[] = [];
-  for (let g = 0; g < groups; g++) {
-    const group = byLow.slice(Math.floor((g * count) / groups), Math.floor(((g + 1) * count) / groups));
-    group.sort((p, q) => end[p]! - end[q]! || p - q);
-    const blocks = Math.max(1, Math.min(MAX_BLOCKS_PER_GROUP, Math.floor(group.length / MIN_BLOCK)));
-    for (let k = 0; k < blocks; k++) {
-      const from = Math.floor((k * group.length) / blocks), to = Math.floor(((k + 1) * group.length) / blocks);
-      if (to === from) continue;
-      let lo = Infinity, hi = -Infinity;
-      for (let i = from; i < to; i++) {
-        lo = Math.min(lo, low[group[i]!]!);
-        hi = Math.max(hi, end[group[i]!]!);
-      }
-      first.push(order.length);
-      zLow.push(lo);
-      zHigh.push(hi);
-      for (let i = from; i < to; i++) order.push(group[i]!);
-    }
-  }
-  first.push(count);
+  const order = Array.from({ length: count }, (_, t) => t).sort((p, q) => low[p]! - low[q]! || p - q);
   const copy = indices.slice(0, 3 * count);
   for (let i = 0; i < count; i++) {
     const t = order[i]!;
@@ -67,33 +39,24 @@ export function orderForDrawing(positions: ArrayLike<number>, upperEnd: ArrayLik
     indices[3 * i + 1] = copy[3 * t + 1]!;
     indices[3 * i + 2] = copy[3 * t + 2]!;
   }
-  // float32 tables: lowest z rounds down and ends round up, so a block is never skipped by rounding.
-  return { zLow: roundedTable(zLow, -1), zHigh: roundedTable(zHigh, 1), first: Uint32Array.from(first) };
-}
-
-function roundedTable(xs: number[], toward: 1 | -1): Float32Array {
-  const out = Float32Array.from(xs);
-  for (let i = 0; i < xs.length; i++) {
-    if (toward * (out[i]! - xs[i]!) < 0) out[i] = out[i]! + toward * Math.max(Math.abs(out[i]!) * 2 ** -23, 2 ** -149);
-  }
-  return out;
+  const blocks = Math.ceil(count / BLOCK);
+  // positions are float32, so the lowest z of a block is exact in the float32 table.
+  const zLow = Float32Array.from({ length: blocks }, (_, k) => low[order[k * BLOCK]!]!);
+  const first = Uint32Array.from({ length: blocks + 1 }, (_, k) => Math.min(count, k * BLOCK));
+  return { zLow, first };
 }
 
 /**
- * The runs of triangles that slices between `zMin` and `zMax` need, as [first, count] pairs in
- * `out` (adjacent blocks joined); returns the triangles in them. A block is needed when its
- * lowest z is at or below zMax and its highest end above zMin: the index's test for a chunk.
+ * How many triangles, from the first, slices up to `zMax` can show: every triangle whose
+ * lowest z is at or below zMax is among them (the index's test for a chunk's z0).
  */
-export function drawRuns(b: DrawBlocks, zMin: number, zMax: number, out: number[]): number {
-  out.length = 0;
-  let total = 0;
-  for (let k = 0; k < b.zLow.length; k++) {
-    if (!(b.zLow[k]! <= zMax && b.zHigh[k]! > zMin)) continue;
-    const from = b.first[k]!, n = b.first[k + 1]! - from;
-    const last = out.length - 2;
-    if (last >= 0 && out[last]! + out[last + 1]! === from) out[last + 1]! += n;
-    else out.push(from, n);
-    total += n;
+export function trianglesUpTo(b: DrawBlocks, zMax: number): number {
+  let lo = 0, hi = b.zLow.length;
+  // The first block that starts above zMax: it and all after it are skipped.
+  while (lo < hi) {
+    const mid = (lo + hi) >> 1;
+    if (b.zLow[mid]! <= zMax) lo = mid + 1;
+    else hi = mid;
   }
-  return total;
+  return b.first[lo]!;
 }

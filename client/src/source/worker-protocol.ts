@@ -74,7 +74,7 @@ export interface ChunkPayload {
   vertexByteLength: number;
   indexByteOffset: number;
   indexSize: 2 | 4;
-  /** The triangles' order for drawing: which runs a slice range needs (draw-ranges.ts). */
+  /** The triangles' order for drawing: how many a slice up to some z can show (draw-ranges.ts). */
   blocks: DrawBlocks;
   /** False when crypto.subtle was unavailable (not a secure context) to check the hash. */
   verified: boolean;
