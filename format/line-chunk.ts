@@ -102,7 +102,7 @@ export async function decodeLineChunk(input: Uint8Array | ArrayBuffer, name = 'l
     throw bad(`its compressed lines, polylines or vertices do not decode (${(err as Error).message})`);
   }
 
-  const lv = new DataView(lineBytes.buffer), pv = new DataView(pathBytes.buffer), vv = new DataView(vertexBytes.buffer);
+  const lv = new DataView(lineBytes.buffer), pv = new DataView(pathBytes.buffer);
   const lineClass = new Uint16Array(L), lineRule = new Uint16Array(L), lineFeature = new Int32Array(L);
   const zStart = new Float32Array(L), zEnd = new Float32Array(L);
   const linePaths = new Uint32Array(L + 1), pathVertices = new Uint32Array(P + 1);
@@ -131,15 +131,17 @@ export async function decodeLineChunk(input: Uint8Array | ArrayBuffer, name = 'l
   if (pathVertices[P] !== V) throw bad(`the polylines hold ${pathVertices[P]} vertices, the header says ${V}`);
   const positions = new Float32Array(2 * V), leaveZ = new Float32Array(V);
   const step = 2 ** e, limit = 2 ** POSITION_BITS;
+  // The vertex records as i32 and f32 words (typed arrays are little-endian wherever the map runs, as chunk.ts assumes).
+  const steps = new Int32Array(vertexBytes.buffer), words = new Float32Array(vertexBytes.buffer);
+  const w = VERTEX_RECORD_BYTES / 4;
   for (let v = 0; v < V; v++) {
-    const o = v * VERTEX_RECORD_BYTES;
-    const qx = vv.getInt32(o, true), qy = vv.getInt32(o + 4, true);
+    const qx = steps[w * v]!, qy = steps[w * v + 1]!, z = words[w * v + 2]!;
     // Within the grid, a position is exact in float32.
     if (Math.abs(qx) > limit || Math.abs(qy) > limit) throw bad(`vertex ${v} lies outside the grid of its box (${qx}, ${qy} steps)`);
+    if (!Number.isFinite(z)) throw bad(`vertex ${v} has a non-finite leave z`);
     positions[2 * v] = qx * step;
     positions[2 * v + 1] = qy * step;
-    leaveZ[v] = vv.getFloat32(o + 8, true);
-    if (!Number.isFinite(leaveZ[v]!)) throw bad(`vertex ${v} has a non-finite leave z`);
+    leaveZ[v] = z;
   }
   return {
     lineCount: L, pathCount: P, vertexCount: V, originX: dv.getFloat64(24, true), originY: dv.getFloat64(32, true), box,
