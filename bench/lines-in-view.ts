@@ -4,7 +4,8 @@
 import { readFile } from 'node:fs/promises';
 import path from 'node:path';
 import type { CubeIndex } from '../format/cube-index.js';
-import { decodeLineChunk, lineOfChunk, linePathsAtZ } from '../format/line-chunk.js';
+import { decodeLineChunk, lineOfChunk } from '../format/line-chunk.js';
+import { linePathsAtZ } from '../format/line-record.js';
 import { lineRuleDrawnAt } from '../format/line-style.js';
 import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
 import { zAtScale } from '../format/scale.js';
@@ -19,7 +20,7 @@ export async function linesInView(cubeDir: string, index: CubeIndex, scale: numb
   for (const leaf of index.lines ?? []) {
     const [bx0, by0, bz0, bx1, by1, bz1] = leaf.bbox;
     if (bx1 < x0 || bx0 > x1 || by1 < y0 || by0 > y1 || z < bz0 || z >= bz1) continue;
-    const c = decodeLineChunk(await readFile(path.join(cubeDir, leaf.file)), leaf.file);
+    const c = await decodeLineChunk(await readFile(path.join(cubeDir, leaf.file)), leaf.file);
     for (let i = 0; i < c.lineCount; i++) {
       const l = lineOfChunk(c, i);
       if (!lineRuleDrawnAt(meta.style.lines[l.rule]!, scale)) continue;

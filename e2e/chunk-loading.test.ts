@@ -47,7 +47,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     }
     // Line chunks share the budget: their segments as the map holds them.
     for (const l of contents.lines) {
-      const payload = { ...lineSegmentPayload(decodeLineChunk(await readFile(path.join(cube.dir, l.file)), l.file), contents.meta), file: l.file, bbox: l.bbox, verified: true };
+      const payload = { ...lineSegmentPayload(await decodeLineChunk(await readFile(path.join(cube.dir, l.file)), l.file), contents.meta), file: l.file, bbox: l.bbox, verified: true };
       gpuBytes.set(l.file, payloadBytes(payload));
     }
   });

@@ -3,7 +3,7 @@
 // encoder's WebAssembly. Used by the build (Node). Same input, same bytes.
 import { MeshoptEncoder } from 'meshoptimizer/encoder';
 import {
-  CHUNK_MAGIC, CHUNK_VERSION, chunkSections, encodedVertexBytes, faceIndexSizeFor, indexSizeFor,
+  CHUNK_MAGIC, CHUNK_VERSION, chunkSections, encodedVertexBytes, faceIndexSizeFor, gridSteps, indexSizeFor,
   POINT_BYTES, POSITION_BITS, positionExponent,
 } from './chunk.js';
 
@@ -66,7 +66,7 @@ export function encodeChunk(c: ChunkInput): Uint8Array {
   const faces = faceTable(c);
   const F = faces.ids.length;
   const faceIndexSize = faceIndexSizeFor(F), indexSize = indexSizeFor(V);
-  const e = positionExponent(c.box), step = 2 ** e, limit = 2 ** POSITION_BITS;
+  const e = positionExponent(c.box), limit = 2 ** POSITION_BITS;
 
   // One record per vertex and one per point (x, y on the grid, in order of first use), as
   // docs/FORMAT.md lays them out, for the vertex codec.
@@ -77,8 +77,8 @@ export function encodeChunk(c: ChunkInput): Uint8Array {
   const points: number[] = [];
   for (let k = 0; k < V; k++) {
     const o = k * stride;
-    const qx = Math.round(c.positions[3 * k]! / step), qy = Math.round(c.positions[3 * k + 1]! / step);
-    if (!(Math.abs(qx) <= limit && Math.abs(qy) <= limit)) throw new Error(`chunk encoder: vertex ${k} lies outside the chunk's box`);
+    const qx = gridSteps(c.positions[3 * k]!, e), qy = gridSteps(c.positions[3 * k + 1]!, e);
+    if (Number.isNaN(qx) || Number.isNaN(qy)) throw new Error(`chunk encoder: vertex ${k} lies outside the chunk's box`);
     // |q| <= 2^24: one exact key.
     const key = (qx + limit) * (2 * limit + 1) + (qy + limit);
     let p = pointIds.get(key);

@@ -68,6 +68,16 @@ export function positionExponent(box: ArrayLike<number>): number {
   return b - POSITION_BITS;
 }
 
+/**
+ * x or y (relative to the origin) as whole steps of the grid `2^e`: the nearest, at most half a
+ * step off (a division by a power of two is exact, so only the rounding moves it); NaN beyond
+ * the grid's 2^POSITION_BITS steps either side, where float32 would no longer hold it exactly.
+ */
+export function gridSteps(v: number, e: number): number {
+  const q = Math.round(v / 2 ** e);
+  return Math.abs(q) <= 2 ** POSITION_BITS ? q : NaN;
+}
+
 /** Where the sections after the header start (docs/FORMAT.md), from the header's counts. */
 export interface ChunkSections {
   faceIds: number;

@@ -1,114 +1,146 @@
-// The line chunk file: the encoder writes the layout of docs/FORMAT.md (checked at offsets
-// worked out by hand), lines come back as they went in (to float32), the polyline at a z drops
-// the vertices gone by then, and a damaged file is refused with a message saying what is wrong.
+// The line chunk file, version 3: the encoder writes the layout of docs/FORMAT.md (header and
+// records checked at offsets worked out by hand, the streams decoded with meshoptimizer's own
+// decoder), lines come back on the position grid (within half a step; z exact in float32), the
+// same lines give the same bytes, and a damaged, truncated or old file is refused with a message
+// saying what is wrong.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { decodeLineChunk, encodeLineChunk, lineAliveAt, lineOfChunk, linePathsAtZ, lineSegments, type LineRecord } from './line-chunk.js';
+import { MeshoptDecoder } from 'meshoptimizer/decoder';
+import { MeshoptEncoder } from 'meshoptimizer/encoder';
+import { roadAndBrook } from '../testing/road-and-brook.js';
 import { FormatError } from './format-error.js';
+import { decodeLineChunk, lineOfChunk } from './line-chunk.js';
+import { encodeLineChunk } from './line-chunk-encode.js';
+import type { LineRecord } from './line-record.js';
 
-/** A road of two polylines (a T: 3 + 2 points) and a brook of one (3 points). */
-function lines(): LineRecord[] {
-  return [
-    {
-      classIndex: 4, rule: 9, feature: 17, zStart: 10.5, zEnd: 40.25,
-      paths: [Float64Array.of(181000.5, 457000.25, 181010.5, 457000.25, 181020.5, 457000.25), Float64Array.of(181010.5, 457000.25, 181010.5, 457030.75)],
-      leaveZ: [Float64Array.of(40.25, 20.125, 40.25), Float64Array.of(40.25, 40.25)],
-    },
-    {
-      classIndex: 7, rule: 300, feature: -1, zStart: 3, zEnd: 12,
-      paths: [Float64Array.of(181005, 456990, 181006, 456995, 181030, 457001)],
-      leaveZ: [Float64Array.of(12, 5, 12)],
-    },
-  ];
+await MeshoptDecoder.ready;
+await MeshoptEncoder.ready;
+
+/** Record sizes of docs/FORMAT.md: line, polyline, vertex. */
+const STRIDES = [20, 4, 12] as const;
+const pad4 = (n: number): number => Math.ceil(n / 4) * 4;
+
+/** The three streams of a file, decoded to records by the header's lengths, read as the doc says. */
+function records(bytes: Uint8Array): DataView[] {
+  const dv = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  const counts = [dv.getUint32(8, true), dv.getUint32(12, true), dv.getUint32(16, true)];
+  let at = 76;
+  return STRIDES.map((stride, s) => {
+    const length = dv.getUint32(64 + 4 * s, true);
+    const out = new Uint8Array(counts[s]! * stride);
+    MeshoptDecoder.decodeVertexBuffer(out, counts[s]!, stride, bytes.subarray(at, at + length));
+    at = pad4(at + length);
+    return new DataView(out.buffer);
+  });
+}
+
+/** A file with the header of `bytes` and its records edited: streams re-encoded, lengths rewritten. */
+function edited(bytes: Uint8Array, edit: (lines: DataView, paths: DataView, vertices: DataView) => void): Uint8Array {
+  const r = records(bytes);
+  edit(r[0]!, r[1]!, r[2]!);
+  const streams = r.map((v, s) => MeshoptEncoder.encodeVertexBufferLevel(new Uint8Array(v.buffer), v.byteLength / STRIDES[s]!, STRIDES[s]!, 2, 1));
+  const out = new Uint8Array(streams.reduce((n, s) => pad4(n + s.length), 76));
+  out.set(bytes.subarray(0, 64));
+  let at = 76;
+  streams.forEach((s, i) => {
+    new DataView(out.buffer).setUint32(64 + 4 * i, s.length, true);
+    out.set(s, at);
+    at = pad4(at + s.length);
+  });
+  return out;
 }
 
 describe('line chunk file', () => {
   test('the encoder writes the documented layout', () => {
-    const { bytes, bbox } = encodeLineChunk(lines());
+    const { bytes, bbox } = encodeLineChunk(roadAndBrook());
     const dv = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
-    // 2 lines, 3 polylines, 8 vertices: header 64, classes 4, rules 4, feature/zStart/zEnd 3 x 8,
-    // line polylines 3 x 4, polyline vertices 4 x 4, positions 8 x 8, leave z 8 x 4.
-    assert.equal(bytes.byteLength, 64 + 4 + 4 + 24 + 12 + 16 + 64 + 32);
     assert.equal(dv.getUint32(0, true), 0x4c435353);
-    assert.equal(dv.getUint32(4, true), 2);
-    assert.deepEqual([dv.getUint32(8, true), dv.getUint32(12, true), dv.getUint32(16, true)], [2, 3, 8]);
+    assert.equal(dv.getUint32(4, true), 3);
+    assert.deepEqual([dv.getUint32(8, true), dv.getUint32(12, true), dv.getUint32(16, true)], [2, 3, 8], '2 lines, 3 polylines, 8 vertices');
+    // The box relative to the origin reaches y 40.75: below 2^6, so the step is 2^(6 - 24).
+    assert.equal(dv.getInt32(20, true), -18, 'position step exponent');
     assert.equal(dv.getFloat64(24, true), 181000, 'origin x: whole metres below the smallest x');
     assert.equal(dv.getFloat64(32, true), 456990);
-    assert.equal(dv.getFloat32(40 + 4 * 5, true), 40.25, 'box z1');
-    assert.equal(dv.getUint16(64 + 2, true), 7, 'class of line 1');
-    assert.deepEqual([68, 70].map((o) => dv.getUint16(o, true)), [9, 300], 'line rule of each line');
-    assert.equal(dv.getInt32(72 + 4, true), -1, 'feature of line 1');
-    assert.equal(dv.getFloat32(80, true), 10.5, 'zStart of line 0');
-    assert.equal(dv.getFloat32(88 + 4, true), 12, 'zEnd of line 1');
-    assert.deepEqual([96, 100, 104].map((o) => dv.getUint32(o, true)), [0, 2, 3], 'first polyline of each line, then the count');
-    assert.deepEqual([108, 112, 116, 120].map((o) => dv.getUint32(o, true)), [0, 3, 5, 8], 'first vertex of each polyline, then the count');
-    assert.equal(dv.getFloat32(124 + 8 * 4 + 4, true), 40.75, 'y of vertex 4, relative to origin y 456990');
-    assert.equal(dv.getFloat32(188 + 4 * 6, true), 5, 'leave z of vertex 6');
+    assert.deepEqual([0, 1, 2, 3, 4, 5].map((i) => dv.getFloat32(40 + 4 * i, true)), [0.5, 0, 3, 30, 40.75, 40.25], 'box');
+    const [ll, lp, lv] = [64, 68, 72].map((o) => dv.getUint32(o, true)) as [number, number, number];
+    assert.equal(bytes.byteLength, pad4(pad4(pad4(76 + ll) + lp) + lv), 'header, then the three streams, each padded to 4 bytes');
+    const [lines, paths, vertices] = records(bytes) as [DataView, DataView, DataView];
+    // Line 1 (the brook) from byte 20 of the line records.
+    assert.deepEqual(
+      [lines.getUint16(20, true), lines.getUint16(22, true), lines.getInt32(24, true), lines.getFloat32(28, true), lines.getFloat32(32, true), lines.getUint32(36, true)],
+      [7, 300, -1, 3, 12, 1], 'class, rule, feature, zStart, zEnd, polylines of line 1',
+    );
+    assert.equal(lines.getUint32(16, true), 2, 'the road has two polylines');
+    assert.deepEqual([0, 4, 8].map((o) => paths.getUint32(o, true)), [3, 2, 3], 'vertices of each polyline');
+    // Vertex 4: the T's end (181010.5, 457030.75), 10.5 and 40.75 m from the origin, in steps of 2^-18.
+    assert.deepEqual([vertices.getInt32(48, true), vertices.getInt32(52, true), vertices.getFloat32(56, true)], [10.5 * 2 ** 18, 40.75 * 2 ** 18, 40.25]);
+    assert.equal(vertices.getFloat32(6 * 12 + 8, true), 5, 'leave z of vertex 6');
     assert.deepEqual(bbox, [181000.5, 456990, 3, 181030, 457030.75, 40.25]);
   });
 
-  test('lines come back with their class, rule, feature, z range and coordinates', () => {
-    const c = decodeLineChunk(encodeLineChunk(lines()).bytes);
-    assert.equal(c.lineCount, 2);
-    assert.deepEqual([0, 1].map((i) => lineOfChunk(c, i)), lines(), 'these coordinates and z are exact in float32 relative to the origin');
+  test('lines come back with their class, rule, feature, z range and coordinates', async () => {
+    const c = await decodeLineChunk(encodeLineChunk(roadAndBrook()).bytes);
+    assert.deepEqual([c.lineCount, c.pathCount, c.vertexCount], [2, 3, 8]);
+    assert.deepEqual([...c.linePaths], [0, 2, 3]);
+    assert.deepEqual([...c.pathVertices], [0, 3, 5, 8]);
+    assert.deepEqual([0, 1].map((i) => lineOfChunk(c, i)), roadAndBrook(), 'these coordinates are on the grid and these z exact in float32');
   });
 
-  test('coordinates far from whole metres keep millimetres', () => {
-    const l: LineRecord = { classIndex: 0, rule: 0, feature: 0, zStart: 0, zEnd: 1, paths: [Float64Array.of(181234.123456, 457890.987654, 182999.001, 459000.002)], leaveZ: [Float64Array.of(1, 1)] };
-    const back = lineOfChunk(decodeLineChunk(encodeLineChunk([l]).bytes), 0).paths[0]!;
-    for (let i = 0; i < 4; i++) assert.ok(Math.abs(back[i]! - l.paths[0]![i]!) < 0.001, `coordinate ${i}: ${back[i]} for ${l.paths[0]![i]}`);
-  });
-
-  test('a line is there for zStart <= z < zEnd, and loses each vertex at its leave z', () => {
-    const [road, brook] = lines() as [LineRecord, LineRecord];
-    assert.deepEqual([10, 10.5, 40, 40.25].map((z) => lineAliveAt(road, z)), [false, true, true, false]);
-    assert.deepEqual(linePathsAtZ(road, 20).map((p) => [...p]), [[181000.5, 457000.25, 181010.5, 457000.25, 181020.5, 457000.25], [181010.5, 457000.25, 181010.5, 457030.75]]);
-    assert.deepEqual(linePathsAtZ(road, 20.125)[0], Float64Array.of(181000.5, 457000.25, 181020.5, 457000.25), 'the middle vertex has gone');
-    assert.deepEqual(linePathsAtZ(brook, 12), [], 'pruned');
-  });
-
-  test('segments with their z ranges: at every z, the segments of the polylines at that z', () => {
-    const [road, brook] = lines() as [LineRecord, LineRecord];
-    const seg = (ax: number, ay: number, bx: number, by: number, z0: number, z1: number, path: number, a: number, b: number): object => ({ ax, ay, bx, by, z0, z1, path, a, b });
-    assert.deepEqual(lineSegments(road), [
-      seg(181000.5, 457000.25, 181010.5, 457000.25, 10.5, 20.125, 0, 0, 1),
-      seg(181000.5, 457000.25, 181020.5, 457000.25, 20.125, 40.25, 0, 0, 2),
-      seg(181010.5, 457000.25, 181020.5, 457000.25, 10.5, 20.125, 0, 1, 2),
-      seg(181010.5, 457000.25, 181010.5, 457030.75, 10.5, 40.25, 1, 0, 1),
-    ]);
-    // A line whose vertices leave one after another, checked at many z against linePathsAtZ.
-    const zig: LineRecord = {
-      classIndex: 0, rule: 0, feature: 0, zStart: 1, zEnd: 9,
-      paths: [Float64Array.from({ length: 14 }, (_, i) => (i % 2 === 0 ? i : (i % 4) * 3))],
-      leaveZ: [Float64Array.of(9, 4, 2, 6, 3, 5, 9)],
-    };
-    for (const l of [road, brook, zig]) {
-      for (let z = 0; z < 42; z += 0.25) {
-        const want = linePathsAtZ(l, z).flatMap((p) => Array.from({ length: p.length / 2 - 1 }, (_, i) => [...p.subarray(2 * i, 2 * i + 4)].join(' ')));
-        const got = lineSegments(l).filter((s) => s.z0 <= z && z < s.z1).map((s) => [s.ax, s.ay, s.bx, s.by].join(' '));
-        assert.deepEqual(got.sort(), want.sort(), `segments at z ${z}`);
-      }
+  test('coordinates off the grid come back on it, within half a step; z to float32', async () => {
+    // 1,765 m wide from the origin 181234: below 2^11, a step of 2^(11 - 24) = 1/8192 m.
+    const x = [181234.123456, 182999.001, 181500.3, 182000.77777], y = [457890.987654, 459000.002, 458000.1, 457891.5];
+    const l: LineRecord = { classIndex: 0, rule: 0, feature: 0, zStart: 0.1, zEnd: 1.3, paths: [Float64Array.from(x.flatMap((v, i) => [v, y[i]!]))], leaveZ: [Float64Array.of(1.3, 0.7, 0.9, 1.3)] };
+    const c = await decodeLineChunk(encodeLineChunk([l]).bytes);
+    assert.deepEqual([c.originX, c.originY], [181234, 457890]);
+    const step = 2 ** -13;
+    const back = lineOfChunk(c, 0);
+    for (let i = 0; i < 8; i++) {
+      const want = l.paths[0]![i]!, got = back.paths[0]![i]!, origin = i % 2 === 0 ? 181234 : 457890;
+      assert.equal(got - origin, Math.round((want - origin) / step) * step, `coordinate ${i}: the nearest grid value`);
+      assert.ok(Math.abs(got - want) <= step / 2, `coordinate ${i}: ${got} for ${want}`);
     }
+    assert.deepEqual([...back.leaveZ[0]!], [1.3, 0.7, 0.9, 1.3].map(Math.fround));
+    assert.deepEqual([back.zStart, back.zEnd], [Math.fround(0.1), Math.fround(1.3)]);
   });
 
-  test('damaged files are refused, saying what is wrong', () => {
-    const good = encodeLineChunk(lines()).bytes;
-    const damaged = (edit: (dv: DataView) => void): Uint8Array => {
+  test('the same lines give the same bytes, and decoded lines encode to them again', async () => {
+    const a = encodeLineChunk(roadAndBrook()).bytes;
+    assert.deepEqual(encodeLineChunk(roadAndBrook()).bytes, a);
+    const c = await decodeLineChunk(a);
+    assert.deepEqual(encodeLineChunk([0, 1].map((i) => lineOfChunk(c, i))).bytes, a);
+  });
+
+  test('damaged, truncated and old files are refused, saying what is wrong', async () => {
+    const good = encodeLineChunk(roadAndBrook()).bytes;
+    const header = (edit: (dv: DataView) => void): Uint8Array => {
       const b = good.slice();
       edit(new DataView(b.buffer));
       return b;
     };
-    const refuses = (bytes: Uint8Array, message: RegExp): void => {
-      assert.throws(() => decodeLineChunk(bytes, 'l-test.bin'), (err: Error) => err instanceof FormatError && message.test(err.message) && err.message.startsWith('l-test.bin'));
+    const refuses = async (bytes: Uint8Array, message: RegExp): Promise<void> => {
+      await assert.rejects(decodeLineChunk(bytes, 'l-test.bin'), (err: Error) => {
+        assert.ok(err instanceof FormatError && err.message.startsWith('l-test.bin: '), err.message);
+        assert.match(err.message, message);
+        return true;
+      });
     };
-    refuses(good.subarray(0, 40), /truncated/);
-    refuses(good.subarray(0, good.length - 4), /bytes, 2 lines, 3 polylines and 8 vertices need/);
-    refuses(damaged((dv) => dv.setUint32(0, 0x43435353, true)), /bad magic/);
-    refuses(damaged((dv) => dv.setUint32(4, 1, true)), /version 1, this reader knows 2/);
-    refuses(damaged((dv) => dv.setUint32(112, 1, true)), /polyline 0 has 1 vertices \(at least 2\)/);
-    refuses(damaged((dv) => dv.setUint32(104, 2, true)), /line offsets do not run from 0 to 3/);
-    refuses(damaged((dv) => dv.setFloat32(88, 10.5, true)), /line 0 has an empty z range/);
-    refuses(damaged((dv) => dv.setFloat32(124, NaN, true)), /vertex 0 has a non-finite coordinate/);
+    await refuses(good.subarray(0, 40), /truncated \(40 bytes, the header alone is 76\)/);
+    await refuses(good.subarray(0, good.length - 4), /bytes, its header \(.*\) needs \d+/);
+    await refuses(header((dv) => dv.setUint32(0, 0x43435353, true)), /bad magic/);
+    await refuses(header((dv) => dv.setUint32(4, 2, true)), /line chunk version 2, this reader knows only version 3 \(rebuild the cube with ssc build\)/);
+    await refuses(header((dv) => dv.setUint32(16, 0xffffffff, true)), /4294967295 vertices cannot fit a stream of \d+ bytes/);
+    await refuses(header((dv) => dv.setUint32(12, 1, true)), /counts out of bounds \(2 lines, 1 polylines/);
+    await refuses(header((dv) => dv.setInt32(20, -17, true)), /position step 2\^-17 does not fit its box \(2\^-18\)/);
+    await refuses(header((dv) => dv.setUint8(76, 0)), /compressed lines, polylines or vertices do not decode/);
+    await refuses(edited(good, (_, paths) => paths.setUint32(0, 1, true)), /polyline 0 has 1 vertices \(at least 2\)/);
+    await refuses(edited(good, (_, paths) => paths.setUint32(8, 4, true)), /polyline 2 ends at vertex 9, beyond the header's 8/);
+    await refuses(edited(good, (lines) => lines.setUint32(16, 0, true)), /line 0 has no polyline/);
+    await refuses(edited(good, (lines) => lines.setUint32(36, 2, true)), /line 1 ends at polyline 4, beyond the header's 3/);
+    await refuses(edited(good, (lines) => lines.setFloat32(12, 10.5, true)), /line 0 has an empty z range \[10.5, 10.5\)/);
+    await refuses(edited(good, (_, __, vertices) => vertices.setFloat32(6 * 12 + 8, NaN, true)), /vertex 6 has a non-finite leave z/);
+    await refuses(edited(good, (_, __, vertices) => vertices.setInt32(0, 2 ** 24 + 1, true)), /vertex 0 lies outside the grid of its box/);
+    // The edits alone, without damage, give a file the reader takes.
+    assert.equal((await decodeLineChunk(edited(good, () => {}))).vertexCount, 8);
   });
 
   test('the encoder refuses a polyline of one point and a rule beyond u16', () => {

@@ -1,33 +1,25 @@
-// The line chunk file (docs/FORMAT.md, "Line chunk file"): lines of linear classes with their
-// z range in the cube, polylines relative to the chunk's origin (float32, as surface chunks
-// store theirs) and, per vertex, the z at which simplification takes it away. Encoder and
-// decoder side by side; pure, so the map's worker can use it as the build does.
-//
-// Per-vertex leave z rather than one polyline per version: each vertex is stored once, and the
-// polyline at z is its vertices whose leave z is above z (`linePathsAtZ`): a test a shader can
-// make per vertex, as the CPU does, without a copy of the line per version.
-import type { Box3 } from './cube-index.js';
+// The line chunk file (docs/FORMAT.md, "Line chunk file", version 3): lines of linear classes
+// with their z range in the cube (line-record.ts), compact. Ground positions are whole steps of
+// the surface chunks' power-of-two grid (format/chunk.ts, `positionExponent`) relative to the
+// chunk's origin, each with its leave z; lines, polylines and vertices are records compressed
+// with meshoptimizer's vertex codec. The decoder expands a file to columns (`LineChunkData`).
+// Pure: used by the CPU slicer and the map's worker; the encoder is in line-chunk-encode.ts so
+// that the map does not load its WebAssembly.
+import { MeshoptDecoder } from 'meshoptimizer/decoder';
+import { pad4, POSITION_BITS, positionExponent } from './chunk.js';
 import { FormatError } from './format-error.js';
+import type { LineRecord } from './line-record.js';
 
 export const LINE_CHUNK_MAGIC = 0x4c435353; // "SSCL"
-export const LINE_CHUNK_VERSION = 2;
-const HEADER = 64;
-
-/** One line as the build hands it to the encoder (absolute coordinates). */
-export interface LineRecord {
-  classIndex: number;
-  /** Index of the style's line rule that draws it (format/line-style.ts, `lineRules`). */
-  rule: number;
-  /** Input feature whose attributes the line carries (-1: none). */
-  feature: number;
-  /** The line is on the map for zStart <= z < zEnd. */
-  zStart: number;
-  zEnd: number;
-  /** Polylines as flat x, y pairs, at least two points each. */
-  paths: Float64Array[];
-  /** Per polyline, per vertex: the z from which the vertex is gone (zEnd when it stays). */
-  leaveZ: Float64Array[];
-}
+export const LINE_CHUNK_VERSION = 3;
+/** Header bytes (docs/FORMAT.md). */
+export const LINE_CHUNK_HEADER_BYTES = 76;
+/** Bytes of one line record: u16 class, u16 rule, i32 feature, f32 zStart, f32 zEnd, u32 polyline count. */
+export const LINE_RECORD_BYTES = 20;
+/** Bytes of one polyline record: u32 vertex count. */
+export const PATH_RECORD_BYTES = 4;
+/** Bytes of one vertex record: i32 x, i32 y in grid steps, f32 leave z. */
+export const VERTEX_RECORD_BYTES = 12;
 
 /** A decoded line chunk: columns, ready for the GPU. */
 export interface LineChunkData {
@@ -48,144 +40,113 @@ export interface LineChunkData {
   linePaths: Uint32Array;
   /** First vertex of each polyline; pathCount + 1 entries, the last = vertexCount. */
   pathVertices: Uint32Array;
-  /** x, y per vertex, relative to the origin. */
+  /** x, y per vertex, relative to the origin: whole steps of the grid, exact in float32. */
   positions: Float32Array;
   leaveZ: Float32Array;
 }
 
-
-export function lineChunkByteLength(lines: number, paths: number, vertices: number): number {
-  return HEADER + 4 * lines + 12 * lines + 4 * (lines + 1) + 4 * (paths + 1) + 12 * vertices;
+/** Where the streams after the header start (docs/FORMAT.md), from the header's stream lengths. */
+export function lineChunkSections(lineStream: number, pathStream: number, vertexStream: number): { lines: number; paths: number; vertices: number; end: number } {
+  const lines = LINE_CHUNK_HEADER_BYTES;
+  const paths = pad4(lines + lineStream);
+  const vertices = pad4(paths + pathStream);
+  return { lines, paths, vertices, end: pad4(vertices + vertexStream) };
 }
 
-type Columns = Pick<LineChunkData, 'lineClass' | 'lineRule' | 'lineFeature' | 'zStart' | 'zEnd' | 'linePaths' | 'pathVertices' | 'positions' | 'leaveZ'>;
+/**
+ * The most records of `stride` bytes a vertex-codec stream of `bytes` can hold: the codec
+ * writes at least stride / 4 bytes per block of at most 256 records. A bound on the header's
+ * counts before anything is allocated.
+ */
+export const vertexStreamCapacity = (bytes: number, stride: number): number => Math.floor((1024 * bytes) / stride);
 
-/** The columns, one after the other in this order, as views of `buf` from `base`. */
-function columnViews(buf: ArrayBufferLike, base: number, L: number, P: number, V: number): Columns {
-  let o = base + HEADER;
-  const take = <T>(make: (at: number) => T, bytes: number): T => {
-    const at = o;
-    o += bytes;
-    return make(at);
-  };
-  return {
-    lineClass: take((at) => new Uint16Array(buf, at, L), 2 * L),
-    lineRule: take((at) => new Uint16Array(buf, at, L), 2 * L),
-    lineFeature: take((at) => new Int32Array(buf, at, L), 4 * L),
-    zStart: take((at) => new Float32Array(buf, at, L), 4 * L),
-    zEnd: take((at) => new Float32Array(buf, at, L), 4 * L),
-    linePaths: take((at) => new Uint32Array(buf, at, L + 1), 4 * (L + 1)),
-    pathVertices: take((at) => new Uint32Array(buf, at, P + 1), 4 * (P + 1)),
-    positions: take((at) => new Float32Array(buf, at, 2 * V), 8 * V),
-    leaveZ: take((at) => new Float32Array(buf, at, V), 4 * V),
-  };
-}
-
-/** The ground box x0, y0, x1, y1 of polylines given as flat x, y pairs. */
-export function groundBox(paths: readonly Float64Array[]): [number, number, number, number] {
-  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
-  for (const p of paths) {
-    for (let i = 0; i < p.length; i += 2) {
-      x0 = Math.min(x0, p[i]!);
-      x1 = Math.max(x1, p[i]!);
-      y0 = Math.min(y0, p[i + 1]!);
-      y1 = Math.max(y1, p[i + 1]!);
-    }
-  }
-  return [x0, y0, x1, y1];
-}
-
-/** The chunk's bytes and its box in ground units (for the index). */
-export function encodeLineChunk(lines: readonly LineRecord[]): { bytes: Uint8Array; bbox: Box3 } {
-  if (lines.length === 0) throw new Error('a line chunk needs at least one line');
-  let x0 = Infinity, y0 = Infinity, z0 = Infinity, x1 = -Infinity, y1 = -Infinity, z1 = -Infinity;
-  let P = 0, V = 0;
-  for (const l of lines) {
-    z0 = Math.min(z0, l.zStart);
-    z1 = Math.max(z1, l.zEnd);
-    if (!Number.isInteger(l.rule) || l.rule < 0 || l.rule > 0xffff) throw new Error(`a line of class ${l.classIndex}, feature #${l.feature}: line rule ${l.rule} is not a u16`);
-    P += l.paths.length;
-    l.paths.forEach((p, k) => {
-      if (p.length < 4 || l.leaveZ[k]!.length !== p.length / 2) throw new Error(`a line of class ${l.classIndex}, feature #${l.feature}: polyline ${k} needs two points or more and a leave z per point`);
-      V += p.length / 2;
-    });
-    const g = groundBox(l.paths);
-    x0 = Math.min(x0, g[0]);
-    y0 = Math.min(y0, g[1]);
-    x1 = Math.max(x1, g[2]);
-    y1 = Math.max(y1, g[3]);
-  }
-  const L = lines.length;
-  // A whole-unit origin, as surface chunks have: exact in float64, positions within the chunk's size.
-  const ox = Math.floor(x0), oy = Math.floor(y0);
-  const buf = new ArrayBuffer(lineChunkByteLength(L, P, V));
-  const dv = new DataView(buf);
-  dv.setUint32(0, LINE_CHUNK_MAGIC, true);
-  dv.setUint32(4, LINE_CHUNK_VERSION, true);
-  dv.setUint32(8, L, true);
-  dv.setUint32(12, P, true);
-  dv.setUint32(16, V, true);
-  dv.setUint32(20, 0, true);
-  dv.setFloat64(24, ox, true);
-  dv.setFloat64(32, oy, true);
-  [x0 - ox, y0 - oy, z0, x1 - ox, y1 - oy, z1].forEach((b, i) => dv.setFloat32(40 + 4 * i, b, true));
-  // Typed arrays are little-endian on every platform we run on; the DataView header is explicit.
-  const c = columnViews(buf, 0, L, P, V);
-  let path = 0, vertex = 0;
-  lines.forEach((l, i) => {
-    c.lineClass[i] = l.classIndex;
-    c.lineRule[i] = l.rule;
-    c.lineFeature[i] = l.feature;
-    c.zStart[i] = l.zStart;
-    c.zEnd[i] = l.zEnd;
-    c.linePaths[i] = path;
-    l.paths.forEach((p, k) => {
-      c.pathVertices[path++] = vertex;
-      const leave = l.leaveZ[k]!;
-      for (let j = 0; j < leave.length; j++, vertex++) {
-        c.positions[2 * vertex] = p[2 * j]! - ox;
-        c.positions[2 * vertex + 1] = p[2 * j + 1]! - oy;
-        c.leaveZ[vertex] = leave[j]!;
-      }
-    });
-  });
-  c.linePaths[L] = P;
-  c.pathVertices[P] = V;
-  return { bytes: new Uint8Array(buf), bbox: [x0, y0, z0, x1, y1, z1] };
-}
-
-/** Reads a line chunk, checking everything a corrupt or truncated file could break. */
-export function decodeLineChunk(input: Uint8Array | ArrayBuffer, name = 'line chunk'): LineChunkData {
-  const bytes = input instanceof Uint8Array ? input : new Uint8Array(input);
-  const bad = (what: string): never => {
-    throw new FormatError(what, name);
-  };
-  if (bytes.byteLength < HEADER) bad(`truncated (${bytes.byteLength} bytes, the header alone is ${HEADER})`);
-  // Aligned copy when the bytes do not start on a 4-byte boundary.
-  const b = bytes.byteOffset % 4 === 0 ? bytes : bytes.slice();
+/**
+ * Reads a line chunk, checking everything a corrupt or truncated file could break, and expands
+ * it to columns. Asynchronous only because the codec's WebAssembly is compiled on first use.
+ */
+export async function decodeLineChunk(input: Uint8Array | ArrayBuffer, name = 'line chunk'): Promise<LineChunkData> {
+  const b = input instanceof Uint8Array ? input : new Uint8Array(input);
+  const bad = (what: string): FormatError => new FormatError(what, name);
+  if (b.byteLength < 8) throw bad(`truncated (${b.byteLength} bytes, the header alone is ${LINE_CHUNK_HEADER_BYTES})`);
   const dv = new DataView(b.buffer, b.byteOffset, b.byteLength);
-  if (dv.getUint32(0, true) !== LINE_CHUNK_MAGIC) bad('not a line chunk file (bad magic)');
+  if (dv.getUint32(0, true) !== LINE_CHUNK_MAGIC) throw bad('not a line chunk file (bad magic)');
   const version = dv.getUint32(4, true);
-  if (version !== LINE_CHUNK_VERSION) bad(`line chunk version ${version}, this reader knows ${LINE_CHUNK_VERSION}`);
+  if (version !== LINE_CHUNK_VERSION) throw bad(`line chunk version ${version}, this reader knows only version ${LINE_CHUNK_VERSION} (rebuild the cube with ssc build)`);
+  if (b.byteLength < LINE_CHUNK_HEADER_BYTES) throw bad(`truncated (${b.byteLength} bytes, the header alone is ${LINE_CHUNK_HEADER_BYTES})`);
   const L = dv.getUint32(8, true), P = dv.getUint32(12, true), V = dv.getUint32(16, true);
-  const expected = lineChunkByteLength(L, P, V);
-  if (b.byteLength !== expected) bad(`${b.byteLength} bytes, ${L} lines, ${P} polylines and ${V} vertices need ${expected}`);
+  const e = dv.getInt32(20, true);
   const box = new Float32Array(6);
   for (let i = 0; i < 6; i++) box[i] = dv.getFloat32(40 + 4 * i, true);
-  const c = columnViews(b.buffer, b.byteOffset, L, P, V);
-  /** Offsets of the parts of each item: from 0 to `last`, at least `min` parts per item. */
-  const offsets = (a: Uint32Array, last: number, item: string, parts: string, min: number): void => {
-    if (a[0] !== 0 || a[a.length - 1] !== last) bad(`the ${item} offsets do not run from 0 to ${last}`);
-    for (let i = 0; i + 1 < a.length; i++) if (a[i + 1]! - a[i]! < min) bad(`${item} ${i} has ${a[i + 1]! - a[i]!} ${parts} (at least ${min})`);
+  if (!box.every(Number.isFinite)) throw bad('its box is not finite');
+  if (e !== positionExponent(box)) throw bad(`position step 2^${e} does not fit its box (2^${positionExponent(box)})`);
+  const lineStream = dv.getUint32(64, true), pathStream = dv.getUint32(68, true), vertexStream = dv.getUint32(72, true);
+  // Every line has a polyline and every polyline two vertices; the codec's smallest stream
+  // bounds each count: a damaged count is refused before anything is allocated.
+  if (L < 1 || P < L || V < 2 * P) throw bad(`counts out of bounds (${L} lines, ${P} polylines, ${V} vertices: at least one line, a polyline per line, two vertices per polyline)`);
+  const fits = (n: number, what: string, bytes: number, stride: number): void => {
+    if (n > vertexStreamCapacity(bytes, stride)) throw bad(`${n} ${what} cannot fit a stream of ${bytes} bytes`);
   };
-  offsets(c.linePaths, P, 'line', 'polylines', 1);
-  offsets(c.pathVertices, V, 'polyline', 'vertices', 2);
-  for (let i = 0; i < L; i++) {
-    if (!(c.zStart[i]! < c.zEnd[i]!)) bad(`line ${i} has an empty z range [${c.zStart[i]}, ${c.zEnd[i]})`);
+  fits(L, 'lines', lineStream, LINE_RECORD_BYTES);
+  fits(P, 'polylines', pathStream, PATH_RECORD_BYTES);
+  fits(V, 'vertices', vertexStream, VERTEX_RECORD_BYTES);
+  const sec = lineChunkSections(lineStream, pathStream, vertexStream);
+  if (b.byteLength !== sec.end) throw bad(`${b.byteLength} bytes, its header (${lineStream} + ${pathStream} + ${vertexStream} bytes of streams) needs ${sec.end}`);
+  await MeshoptDecoder.ready;
+
+  const lineBytes = new Uint8Array(L * LINE_RECORD_BYTES), pathBytes = new Uint8Array(P * PATH_RECORD_BYTES), vertexBytes = new Uint8Array(V * VERTEX_RECORD_BYTES);
+  try {
+    MeshoptDecoder.decodeVertexBuffer(lineBytes, L, LINE_RECORD_BYTES, b.subarray(sec.lines, sec.lines + lineStream));
+    MeshoptDecoder.decodeVertexBuffer(pathBytes, P, PATH_RECORD_BYTES, b.subarray(sec.paths, sec.paths + pathStream));
+    MeshoptDecoder.decodeVertexBuffer(vertexBytes, V, VERTEX_RECORD_BYTES, b.subarray(sec.vertices, sec.vertices + vertexStream));
+  } catch (err) {
+    throw bad(`its compressed lines, polylines or vertices do not decode (${(err as Error).message})`);
   }
-  for (let i = 0; i < c.positions.length; i++) if (!Number.isFinite(c.positions[i]!)) bad(`vertex ${i >> 1} has a non-finite coordinate`);
-  for (let i = 0; i < V; i++) if (!Number.isFinite(c.leaveZ[i]!)) bad(`vertex ${i} has a non-finite leave z`);
-  return { lineCount: L, pathCount: P, vertexCount: V, originX: dv.getFloat64(24, true), originY: dv.getFloat64(32, true), box, ...c };
+
+  const lv = new DataView(lineBytes.buffer), pv = new DataView(pathBytes.buffer);
+  const lineClass = new Uint16Array(L), lineRule = new Uint16Array(L), lineFeature = new Int32Array(L);
+  const zStart = new Float32Array(L), zEnd = new Float32Array(L);
+  const linePaths = new Uint32Array(L + 1), pathVertices = new Uint32Array(P + 1);
+  for (let i = 0, paths = 0; i < L; i++) {
+    const o = i * LINE_RECORD_BYTES;
+    lineClass[i] = lv.getUint16(o, true);
+    lineRule[i] = lv.getUint16(o + 2, true);
+    lineFeature[i] = lv.getInt32(o + 4, true);
+    zStart[i] = lv.getFloat32(o + 8, true);
+    zEnd[i] = lv.getFloat32(o + 12, true);
+    if (!(zStart[i]! < zEnd[i]!)) throw bad(`line ${i} has an empty z range [${zStart[i]}, ${zEnd[i]})`);
+    const n = lv.getUint32(o + 16, true);
+    if (n < 1) throw bad(`line ${i} has no polyline`);
+    paths += n;
+    if (paths > P) throw bad(`line ${i} ends at polyline ${paths}, beyond the header's ${P}`);
+    linePaths[i + 1] = paths;
+  }
+  if (linePaths[L] !== P) throw bad(`the lines hold ${linePaths[L]} polylines, the header says ${P}`);
+  for (let k = 0, vertices = 0; k < P; k++) {
+    const n = pv.getUint32(k * PATH_RECORD_BYTES, true);
+    if (n < 2) throw bad(`polyline ${k} has ${n} vertices (at least 2)`);
+    vertices += n;
+    if (vertices > V) throw bad(`polyline ${k} ends at vertex ${vertices}, beyond the header's ${V}`);
+    pathVertices[k + 1] = vertices;
+  }
+  if (pathVertices[P] !== V) throw bad(`the polylines hold ${pathVertices[P]} vertices, the header says ${V}`);
+  const positions = new Float32Array(2 * V), leaveZ = new Float32Array(V);
+  const step = 2 ** e, limit = 2 ** POSITION_BITS;
+  // The vertex records as i32 and f32 words (typed arrays are little-endian wherever the map runs, as chunk.ts assumes).
+  const steps = new Int32Array(vertexBytes.buffer), words = new Float32Array(vertexBytes.buffer);
+  const w = VERTEX_RECORD_BYTES / 4;
+  for (let v = 0; v < V; v++) {
+    const qx = steps[w * v]!, qy = steps[w * v + 1]!, z = words[w * v + 2]!;
+    // Within the grid, a position is exact in float32.
+    if (Math.abs(qx) > limit || Math.abs(qy) > limit) throw bad(`vertex ${v} lies outside the grid of its box (${qx}, ${qy} steps)`);
+    if (!Number.isFinite(z)) throw bad(`vertex ${v} has a non-finite leave z`);
+    positions[2 * v] = qx * step;
+    positions[2 * v + 1] = qy * step;
+    leaveZ[v] = z;
+  }
+  return {
+    lineCount: L, pathCount: P, vertexCount: V, originX: dv.getFloat64(24, true), originY: dv.getFloat64(32, true), box,
+    lineClass, lineRule, lineFeature, zStart, zEnd, linePaths, pathVertices, positions, leaveZ,
+  };
 }
 
 /** Line `i` of a decoded chunk with absolute coordinates (float64 of the stored float32). */
@@ -202,56 +163,4 @@ export function lineOfChunk(c: LineChunkData, i: number): LineRecord {
     leaveZ.push(Float64Array.from(c.leaveZ.subarray(v0, v1)));
   }
   return { classIndex: c.lineClass[i]!, rule: c.lineRule[i]!, feature: c.lineFeature[i]!, zStart: c.zStart[i]!, zEnd: c.zEnd[i]!, paths, leaveZ };
-}
-
-/** Whether a line is on the map at z. */
-export const lineAliveAt = (l: Pick<LineRecord, 'zStart' | 'zEnd'>, z: number): boolean => l.zStart <= z && z < l.zEnd;
-
-/** A line's polylines at z: the vertices not yet gone (none when the line is not alive at z). */
-export function linePathsAtZ(l: LineRecord, z: number): Float64Array[] {
-  if (!lineAliveAt(l, z)) return [];
-  return l.paths.map((p, k) => {
-    const leave = l.leaveZ[k]!;
-    const out: number[] = [];
-    for (let j = 0; j < leave.length; j++) if (leave[j]! > z) out.push(p[2 * j]!, p[2 * j + 1]!);
-    return Float64Array.from(out);
-  });
-}
-
-/** A segment of a line that is drawn for z0 <= z < z1. */
-export interface LineSegment {
-  ax: number;
-  ay: number;
-  bx: number;
-  by: number;
-  z0: number;
-  z1: number;
-  /** Its polyline in the line, and the indices of a and b among that polyline's vertices. */
-  path: number;
-  a: number;
-  b: number;
-}
-
-/**
- * Every segment a line has at some z, with its z range: (a, b) joins vertices a and b of a
- * polyline from the z where the last vertex between them is gone (the line's zStart for
- * neighbours) until a or b goes. At any z these are exactly the segments of `linePathsAtZ`,
- * so a slicing surface whose z varies over the map is drawn by testing each pixel against its
- * segment's range (the GPU's rule too).
- */
-export function lineSegments(l: LineRecord): LineSegment[] {
-  const out: LineSegment[] = [];
-  l.paths.forEach((p, k) => {
-    const leave = l.leaveZ[k]!, n = leave.length;
-    for (let a = 0; a + 1 < n; a++) {
-      const la = Math.min(leave[a]!, l.zEnd);
-      let between = l.zStart;
-      for (let b = a + 1; b < n && between < la; b++) {
-        const z1 = Math.min(la, leave[b]!, l.zEnd);
-        if (between < z1) out.push({ ax: p[2 * a]!, ay: p[2 * a + 1]!, bx: p[2 * b]!, by: p[2 * b + 1]!, z0: between, z1, path: k, a, b });
-        between = Math.max(between, leave[b]!);
-      }
-    }
-  });
-  return out;
 }

@@ -3,7 +3,7 @@
 // line drawn after it (no jump), and before each glide the vertices stand where they are stored.
 import assert from 'node:assert/strict';
 import test from 'node:test';
-import { linePathsAtZ, type LineRecord } from './line-chunk.js';
+import { linePathsAtZ, type LineRecord } from './line-record.js';
 import { glideShare, glidingSegments, lineGlides, segmentAt } from './line-glide.js';
 import type { ScaleInfo } from './scale.js';
 

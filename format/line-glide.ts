@@ -8,8 +8,8 @@
 // Derived from what the line chunk stores (positions and leave z), so the format is unchanged.
 // A neighbour that is itself gliding then is taken where it stands, not where it is going: the
 // corner it leaves is at most that neighbour's own glide, a fraction of a pixel.
-import type { LineRecord, LineSegment } from './line-chunk.js';
-import { lineSegments } from './line-chunk.js';
+import type { LineRecord, LineSegment } from './line-record.js';
+import { lineSegments } from './line-record.js';
 import { LINE_RAMP_SCALE } from './line-ramp.js';
 import { scaleAtZ, zAtScale, type ScaleInfo } from './scale.js';
 import { projectOnSegment } from './point-segment.js';

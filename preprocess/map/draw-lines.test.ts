@@ -8,7 +8,7 @@
 // the last, by widths worked out by hand.
 import assert from 'node:assert/strict';
 import test from 'node:test';
-import type { LineRecord } from '../../format/line-chunk.js';
+import type { LineRecord } from '../../format/line-record.js';
 import type { LineRule } from '../../format/line-style.js';
 import { zAtScale, type ScaleInfo } from '../../format/scale.js';
 import { drawLines, linePaintColour, type LineDepth } from './draw-lines.js';

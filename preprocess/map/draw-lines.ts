@@ -10,7 +10,7 @@
 // they appear and shrink as they go; a vertex that simplification takes away glides onto the
 // chord of its neighbours before it goes (format/line-glide.ts), so the segment's ends are
 // those at the pixel's z. No anti-aliasing: the oracle says which pixels a line covers.
-import type { LineRecord } from '../../format/line-chunk.js';
+import type { LineRecord } from '../../format/line-record.js';
 import { glidingSegments, segmentAt, type GlidingSegment } from '../../format/line-glide.js';
 import { lineRamp, lineWidthShare, ruleRamp, type LineRamp } from '../../format/line-ramp.js';
 import type { LineRule } from '../../format/line-style.js';

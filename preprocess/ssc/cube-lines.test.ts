@@ -1,7 +1,7 @@
 // Lines in the cube, on the 400 m cut of Otterlo: built by buildCube, read back by CubeReader
 // as the map would (the index's line chunks of a view, checked and decoded), they are the lines
 // of collapseLines + pruneLines of the lines the style draws: as many per class, the same
-// coordinates to float32, z ranges at phase 0 of the step born and the step pruned, and exactly
+// coordinates to the nearest step of the chunk's grid, z ranges at phase 0 of the step born and the step pruned, and exactly
 // the lines whose range holds a z are alive there. Each line's rule is the one styles/bgt.json
 // gives its input feature's `klasse` (read from the GeoJSON itself). A style without linear
 // classes gives a cube without a lines entry.
@@ -9,7 +9,9 @@ import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
 import path from 'node:path';
 import test from 'node:test';
-import { lineAliveAt, lineOfChunk, linePathsAtZ, type LineRecord } from '../../format/line-chunk.js';
+import { positionExponent } from '../../format/chunk.js';
+import { lineOfChunk } from '../../format/line-chunk.js';
+import { lineAliveAt, linePathsAtZ, type LineRecord } from '../../format/line-record.js';
 import type { LineRule } from '../../format/line-style.js';
 import type { Tgap } from '../../format/tgap-model.js';
 import { dataset, styleFile } from '../../testing/paths.js';
@@ -24,13 +26,14 @@ import { buildCube } from './build-cube.js';
 import { inspectCube } from './inspect-cube.js';
 import { CubeReader } from './read-cube.js';
 
-/** Every line of the cube as read back, with the origin of its chunk. */
-async function readAll(reader: CubeReader): Promise<{ line: LineRecord; originX: number; originY: number }[]> {
-  const out: { line: LineRecord; originX: number; originY: number }[] = [];
+/** Every line of the cube as read back, with the origin and the position step of its chunk. */
+async function readAll(reader: CubeReader): Promise<{ line: LineRecord; originX: number; originY: number; step: number }[]> {
+  const out: { line: LineRecord; originX: number; originY: number; step: number }[] = [];
   for (const leaf of reader.lineChunks({ ground: [-Infinity, -Infinity, Infinity, Infinity], zMin: -Infinity, zMax: Infinity })) {
     const c = await reader.lineChunk(leaf);
     assert.equal(c.lineCount, leaf.lines, `${leaf.file}: lines as the index says`);
-    for (let i = 0; i < c.lineCount; i++) out.push({ line: lineOfChunk(c, i), originX: c.originX, originY: c.originY });
+    const step = 2 ** positionExponent(c.box);
+    for (let i = 0; i < c.lineCount; i++) out.push({ line: lineOfChunk(c, i), originX: c.originX, originY: c.originY, step });
   }
   return out;
 }
@@ -69,7 +72,8 @@ test('bgt_otterlo_400m: the cube\'s lines read back are the collapsed and pruned
   const perClass = (classes: number[]): number[] => style.classes.map((_, ci) => classes.filter((c) => c === ci).length);
   assert.deepEqual(perClass(read.map((r) => r.line.classIndex)), perClass(shown.map((l) => l.classIndex)));
 
-  // Each line read back is one line of pruneLines' (by class, feature and first point), with its coordinates to float32 and its z range.
+  // Each line read back is one line of pruneLines' (by class, feature and first point), with its coordinates to the
+  // nearest step of its chunk's grid (docs/FORMAT.md) and its z range.
   const expected = new Map<string, PrunedLine[]>();
   for (const l of shown) {
     const k = key(l.classIndex, l.feature, l.paths[0]![0]!);
@@ -77,13 +81,14 @@ test('bgt_otterlo_400m: the cube\'s lines read back are the collapsed and pruned
   }
   const phase0 = (s: number): number => Math.fround(s - 1 + 1 / 9);
   const readOf = new Map<PrunedLine, LineRecord>();
-  for (const { line, originX, originY } of read) {
+  const onGrid = (v: number, origin: number, step: number): number => origin + Math.round((v - origin) / step) * step;
+  for (const { line, originX, originY, step } of read) {
     const candidates = expected.get(key(line.classIndex, line.feature, line.paths[0]![0]!)) ?? [];
     const same = (l: PrunedLine): boolean =>
       l.paths.length === line.paths.length &&
-      l.paths.every((p, k) => p.length === line.paths[k]!.length && p.every((v, i) => line.paths[k]![i] === (i % 2 === 0 ? originX + Math.fround(v - originX) : originY + Math.fround(v - originY))));
+      l.paths.every((p, k) => p.length === line.paths[k]!.length && p.every((v, i) => line.paths[k]![i] === onGrid(v, i % 2 === 0 ? originX : originY, step)));
     const match = candidates.find((l) => same(l) && !readOf.has(l));
-    assert.ok(match, `a line of class ${line.classIndex}, feature #${line.feature} read back matches no line of pruneLines to float32`);
+    assert.ok(match, `a line of class ${line.classIndex}, feature #${line.feature} read back matches no line of pruneLines on its grid`);
     readOf.set(match, line);
     assert.equal(line.zStart, phase0(match.step), 'zStart: phase 0 of the step the line is born');
     assert.equal(line.zEnd, match.prunedStep > steps ? steps + 1 : phase0(match.prunedStep), 'zEnd: phase 0 of the step pruned, or the top');

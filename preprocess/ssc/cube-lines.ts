@@ -2,7 +2,8 @@
 // (preprocess/lines/), with their states turned into z as docs/FORMAT.md ("Line chunk file")
 // states, and packed into line chunks of even size by the surfaces' split (chunking.ts).
 import type { Box3 } from '../../format/cube-index.js';
-import { encodeLineChunk, groundBox, type LineRecord } from '../../format/line-chunk.js';
+import { encodeLineChunk } from '../../format/line-chunk-encode.js';
+import { groundBox, type LineRecord } from '../../format/line-record.js';
 import { phaseZ, type Tgap } from '../../format/tgap-model.js';
 import { lineRuleFinder } from '../../format/line-style.js';
 import { collapseLines } from '../lines/collapse-lines.js';
@@ -62,7 +63,7 @@ export interface LineChunk {
   lines: number;
 }
 
-/** Bytes a line takes in a line chunk (docs/FORMAT.md), but for its share of the header and padding. */
+/** Bytes of a line's records in a line chunk before compression (docs/FORMAT.md), what the reader expands it to. */
 function lineBytes(l: LineRecord): number {
   let vertices = 0;
   for (const p of l.paths) vertices += p.length / 2;

@@ -7,7 +7,8 @@ import { isExternal, isLeaf, type IndexNode } from '../../format/cube-index.js';
 import { scaleAtZ, zAtScale } from '../../format/scale.js';
 import { PIXEL_SIZE_MM } from '../../format/pixel-size.js';
 import { boxMeets } from '../../format/index-query.js';
-import { groundBox, lineAliveAt, lineOfChunk } from '../../format/line-chunk.js';
+import { lineOfChunk } from '../../format/line-chunk.js';
+import { groundBox, lineAliveAt } from '../../format/line-record.js';
 import { CubeReader } from './read-cube.js';
 import { unchunkedBytes as oneFileBytes } from './unchunked-bytes.js';
 

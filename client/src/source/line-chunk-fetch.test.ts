@@ -1,6 +1,8 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { decodeLineChunk, encodeLineChunk, linePathsAtZ, type LineRecord } from '../../../format/line-chunk.js';
+import { decodeLineChunk } from '../../../format/line-chunk.js';
+import { encodeLineChunk } from '../../../format/line-chunk-encode.js';
+import { linePathsAtZ, type LineRecord } from '../../../format/line-record.js';
 import { glidingSegments } from '../../../format/line-glide.js';
 import { lineRamp } from '../../../format/line-ramp.js';
 import type { ScaleInfo } from '../../../format/scale.js';
@@ -20,8 +22,8 @@ const lines: LineRecord[] = [
   { classIndex: 7, rule: 5, feature: -1, zStart: 2, zEnd: 6, paths: [Float64Array.from([180000.5, 456050, 180040.25, 456050])], leaveZ: [Float64Array.from([6, 6])] },
 ];
 
-test('the payload holds, at every z, exactly the segments of the polylines at that z, at the stored positions', () => {
-  const chunk = decodeLineChunk(encodeLineChunk(lines).bytes);
+test('the payload holds, at every z, exactly the segments of the polylines at that z, at the stored positions', async () => {
+  const chunk = await decodeLineChunk(encodeLineChunk(lines).bytes);
   const p = lineSegmentPayload(chunk, info);
   assert.equal(p.kind, 'lines');
   assert.equal(p.segments.length, 14 * p.segmentCount);
