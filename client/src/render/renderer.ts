@@ -53,7 +53,6 @@ interface Gpu {
   faceState: FaceStateTexture | null;
 }
 
-
 export class Renderer {
   readonly store: ChunkStore;
   /** Draw whole chunks, not only the triangles the slice needs (map-engine's setWholeChunks). */
@@ -207,7 +206,7 @@ export class Renderer {
     g.targets.resize(f.view.width, f.view.height);
     gl.bindVertexArray(g.emptyVao);
     g.surface.draw(g.targets, f.view, f.surface, f.zMax);
-    const triangles = g.id.draw(g.targets, f.view, chunks, f.surface, f.zMax, this.wholeChunks ? Infinity : f.sliceRange[1], f.jitter);
+    const triangles = g.id.draw(g.targets, f.view, chunks, f.surface, f.zMax, this.sliceTop(f), f.jitter);
     this.idsJittered = f.jitter[0] !== 0 || f.jitter[1] !== 0;
     gl.bindVertexArray(g.emptyVao);
     g.colour.draw(g.targets, { ...f.colour, style: g.style.texture, classCount: g.style.classCount, background: parseColour(this.style.background), faceState: g.faceState.texture });
@@ -247,6 +246,11 @@ export class Renderer {
     this.overlaysDrawn = { layers: this.overlays, view: v, ratio: f.pixelRatio };
   }
 
+  /** The highest z the id pass draws triangles from (all of them with wholeChunks). */
+  private sliceTop(f: FrameParams): number {
+    return this.wholeChunks ? Infinity : f.sliceRange[1];
+  }
+
   /** The ID targets as drawn without jitter (drawn again if the last frame was jittered); null when lost. */
   private unjittered(): Gpu | null {
     const g = this.gpu;
@@ -255,7 +259,7 @@ export class Renderer {
     if (this.idsJittered) {
       // Only chunks still on the GPU (some may have been evicted since).
       const chunks = this.lastChunks.filter((c) => this.store.get(c.file) === c);
-      g.id.draw(g.targets, f.view, chunks, f.surface, f.zMax, this.wholeChunks ? Infinity : f.sliceRange[1], [0, 0]);
+      g.id.draw(g.targets, f.view, chunks, f.surface, f.zMax, this.sliceTop(f), [0, 0]);
       this.idsJittered = false;
     }
     return g;

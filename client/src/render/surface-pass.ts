@@ -15,6 +15,7 @@ export class SurfacePass {
   private readonly program: Program;
   /** The surface computed on the CPU (rows from the bottom), when float targets are missing. */
   cpu: Float32Array | null = null;
+  private readonly flatZ = new Float32Array(4);
 
   constructor(private readonly gl: WebGL2RenderingContext) {
     this.program = new Program(gl, fullscreenVert, surfaceFrag, 'surface pass');
@@ -30,9 +31,9 @@ export class SurfacePass {
     if (sp.kind === FLAT) {
       // One z everywhere: a clear writes what surface.frag would (clamp in float32), without
       // running a shader per pixel, which on a software GPU cost a tenth of the frame.
-      const z = Math.fround(Math.min(Math.max(Math.fround(sp.base), 0), Math.fround(zMax)));
+      this.flatZ[0] = Math.min(Math.max(Math.fround(sp.base), 0), Math.fround(zMax));
       gl.bindFramebuffer(gl.FRAMEBUFFER, targets.surfaceFb);
-      gl.clearBufferfv(gl.COLOR, 0, new Float32Array([z, 0, 0, 0]));
+      gl.clearBufferfv(gl.COLOR, 0, this.flatZ);
       return;
     }
     const p = this.program;
