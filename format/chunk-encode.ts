@@ -9,6 +9,14 @@ import {
 
 await MeshoptEncoder.ready;
 
+/**
+ * Records of `stride` bytes through meshoptimizer's vertex codec at the settings every chunk
+ * file uses (level 2, codec version 1): the surface chunks' points and vertices, the line
+ * chunks' records.
+ */
+export const encodeRecords = (records: ArrayBufferLike, count: number, stride: number): Uint8Array =>
+  MeshoptEncoder.encodeVertexBufferLevel(new Uint8Array(records), count, stride, 2, 1);
+
 /** What a chunk holds, per vertex as the decoder gives it back (positions may be float64). */
 export interface ChunkInput {
   originX: number;
@@ -99,8 +107,8 @@ export function encodeChunk(c: ChunkInput): Uint8Array {
   }
   const P = points.length / 2;
   const tri = indexSize === 2 ? Uint16Array.from(c.indices) : Uint32Array.from(c.indices);
-  const pointStream = MeshoptEncoder.encodeVertexBufferLevel(new Uint8Array(Int32Array.from(points).buffer), P, POINT_BYTES, 2, 1);
-  const vertexStream = MeshoptEncoder.encodeVertexBufferLevel(new Uint8Array(records), V, stride, 2, 1);
+  const pointStream = encodeRecords(Int32Array.from(points).buffer, P, POINT_BYTES);
+  const vertexStream = encodeRecords(records, V, stride);
   const indexStream = MeshoptEncoder.encodeIndexBuffer(new Uint8Array(tri.buffer), 3 * T, indexSize);
 
   const sec = chunkSections(F, pointStream.byteLength, vertexStream.byteLength, indexStream.byteLength);

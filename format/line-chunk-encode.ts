@@ -1,19 +1,13 @@
 // The line chunk file's encoder (docs/FORMAT.md, "Line chunk file", version 3), beside the
 // decoder in line-chunk.ts: a file of its own so that the map, which only decodes, does not
 // load the encoder's WebAssembly. Used by the build (Node). Same input, same bytes.
-import { MeshoptEncoder } from 'meshoptimizer/encoder';
 import { gridSteps, positionExponent } from './chunk.js';
+import { encodeRecords } from './chunk-encode.js';
 import type { Box3 } from './cube-index.js';
 import {
   LINE_CHUNK_MAGIC, LINE_CHUNK_VERSION, LINE_RECORD_BYTES, lineChunkSections, PATH_RECORD_BYTES, VERTEX_RECORD_BYTES,
 } from './line-chunk.js';
 import { groundBox, type LineRecord } from './line-record.js';
-
-await MeshoptEncoder.ready;
-
-/** Records of `stride` bytes through the vertex codec, as the surface chunks' are (level 2, codec version 1). */
-const encodeRecords = (records: ArrayBuffer, count: number, stride: number): Uint8Array =>
-  MeshoptEncoder.encodeVertexBufferLevel(new Uint8Array(records), count, stride, 2, 1);
 
 /** The chunk's bytes and its box in ground units (for the index). */
 export function encodeLineChunk(lines: readonly LineRecord[]): { bytes: Uint8Array; bbox: Box3 } {
