@@ -108,38 +108,39 @@ function explain(name: string, tgap: Tgap, smooth: boolean, analytic: boolean): 
       for (const [f, a] of byFrame) m.set(f, (m.get(f) ?? 0) + a / px);
     }
     for (const m of perOrigin.values()) for (const [f, a] of m) m.set(f, Math.round(a));
+  } else {
+    const byZ = Int32Array.from({ length: s.count }, (_, i) => i).sort((a, b) => s.zMin[a]! - s.zMin[b]! || a - b);
+    zs.forEach((z, f) => {
+      const sl = sliceSurfaces(s, byZ, classOf, view, z);
+      for (let p = 0; p < faceIds.length; p++) faceIds[p] = sl.ids[p] === 0 ? 0 : s.upper[sl.ids[p]! - 1]!;
+      const flickered = flicker.flickering;
+      flicker.add({ ids: faceIds, classes: sl.classes });
+      if (flicker.flickering > flickered) {
+        for (let p = 0; p < faceIds.length; p++) {
+          const i = p % width, j = Math.floor(p / width);
+          if (!flicker.flickeredIn(i, j, f)) continue;
+          const o = originOf(origins, sl.ids[p]! - 1);
+          flickerBy.set(o, (flickerBy.get(o) ?? 0) + 1);
+        }
+      }
+      if (before) {
+        let domain = 0, changed = 0;
+        for (let p = 0; p < sl.ids.length; p++) {
+          if (before.ids[p] === 0 || sl.ids[p] === 0) continue;
+          domain++;
+          if (before.classes[p] === sl.classes[p]) continue;
+          changed++;
+          const o = originOf(origins, sl.ids[p]! - 1);
+          let m = perOrigin.get(o);
+          if (!m) perOrigin.set(o, (m = new Map()));
+          m.set(f, (m.get(f) ?? 0) + 1);
+        }
+        shares.push(domain === 0 ? 0 : changed / domain);
+        changedPx.push(changed);
+      }
+      before = sl;
+    });
   }
-  const byZ = analytic ? new Int32Array(0) : Int32Array.from({ length: s.count }, (_, i) => i).sort((a, b) => s.zMin[a]! - s.zMin[b]! || a - b);
-  if (!analytic) zs.forEach((z, f) => {
-    const sl = sliceSurfaces(s, byZ, classOf, view, z);
-    for (let p = 0; p < faceIds.length; p++) faceIds[p] = sl.ids[p] === 0 ? 0 : s.upper[sl.ids[p]! - 1]!;
-    const flickered = flicker.flickering;
-    flicker.add({ ids: faceIds, classes: sl.classes });
-    if (flicker.flickering > flickered) {
-      for (let p = 0; p < faceIds.length; p++) {
-        const i = p % width, j = Math.floor(p / width);
-        if (!flicker.flickeredIn(i, j, f)) continue;
-        const o = originOf(origins, sl.ids[p]! - 1);
-        flickerBy.set(o, (flickerBy.get(o) ?? 0) + 1);
-      }
-    }
-    if (before) {
-      let domain = 0, changed = 0;
-      for (let p = 0; p < sl.ids.length; p++) {
-        if (before.ids[p] === 0 || sl.ids[p] === 0) continue;
-        domain++;
-        if (before.classes[p] === sl.classes[p]) continue;
-        changed++;
-        const o = originOf(origins, sl.ids[p]! - 1);
-        let m = perOrigin.get(o);
-        if (!m) perOrigin.set(o, (m = new Map()));
-        m.set(f, (m.get(f) ?? 0) + 1);
-      }
-      shares.push(domain === 0 ? 0 : changed / domain);
-      changedPx.push(changed);
-    }
-    before = sl;
-  });
   const cube = smooth ? 'smooth' : 'classic';
   const pct = (x: number): string => `${(100 * x).toFixed(3)}%`;
   const worst = Math.max(...shares);

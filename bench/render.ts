@@ -82,6 +82,7 @@ async function main(): Promise<void> {
         const server = createStaticServer({ root: dir });
         await server.listen(0, '127.0.0.1');
         const triangleMeans: number[] = [];
+        const neededIn = await trianglesInView(path.join(dir, 'cube'));
         try {
           for (const [name, scale] of views) {
             const context = await browser.newContext({ viewport: { width: WIDTH, height: HEIGHT } });
@@ -168,7 +169,7 @@ async function main(): Promise<void> {
             }
             triangleMeans.push(placed.reduce((a, b) => a + b, 0) / placed.length);
             const lineVertices = await linesInView(path.join(dir, 'cube'), index, scale, centre);
-            const neededTriangles = await trianglesInView(path.join(dir, 'cube'), scale, centre);
+            const neededTriangles = await neededIn(scale, centre);
             const drawn = median(kept.map((s) => s.triangles));
             ratios.push(`${d.name} ${name}: triangles drawn / needed in view: ${(drawn / Math.max(1, neededTriangles)).toFixed(2)}`);
             rows.push([

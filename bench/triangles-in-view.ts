@@ -10,11 +10,13 @@ import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
 import { zAtScale } from '../format/scale.js';
 import { CubeReader } from '../preprocess/ssc/read-cube.js';
 
-/** Triangles needed by a `width` x `height` px view at 1:scale centred on `centre`. */
-export async function trianglesInView(cubeDir: string, scale: number, centre: [number, number], width = 1280, height = 720): Promise<number> {
+/** Triangles a view needs, for views of one cube: its index and face pages are read once. */
+export type TrianglesInView = (scale: number, centre: [number, number], width?: number, height?: number) => Promise<number>;
+
+/** The counter of triangles needed by a `width` x `height` px view at 1:scale centred on `centre`. */
+export async function trianglesInView(cubeDir: string): Promise<TrianglesInView> {
   const cube = await CubeReader.open(cubeDir);
   const meta = cube.index.meta;
-  const z = zAtScale(meta, scale);
   const pages = await Promise.all(meta.faces.pages.map(async (p) => {
     const b = await readFile(path.join(cubeDir, p.file));
     return decodeFacePage(b.buffer.slice(b.byteOffset, b.byteOffset + b.byteLength));
@@ -28,19 +30,22 @@ export async function trianglesInView(cubeDir: string, scale: number, centre: [n
     }
     return e;
   };
-  const res = (scale * PIXEL_SIZE_MM) / 1000;
-  const [x0, y0, x1, y1] = [centre[0] - (width / 2) * res, centre[1] - (height / 2) * res, centre[0] + (width / 2) * res, centre[1] + (height / 2) * res];
-  let n = 0;
-  for (const leaf of await cube.query({ ground: [x0, y0, x1, y1], zMin: z, zMax: z })) {
-    const c = await cube.chunk(leaf);
-    const P = c.positions, I = c.indices;
-    for (let t = 0; t < c.triangleCount; t++) {
-      const a = I[3 * t]!, b = I[3 * t + 1]!, d = I[3 * t + 2]!;
-      if (Math.min(P[3 * a + 2]!, P[3 * b + 2]!, P[3 * d + 2]!) > z || endOf(c.upper[a]!) <= z) continue;
-      const tx0 = c.originX + Math.min(P[3 * a]!, P[3 * b]!, P[3 * d]!), tx1 = c.originX + Math.max(P[3 * a]!, P[3 * b]!, P[3 * d]!);
-      const ty0 = c.originY + Math.min(P[3 * a + 1]!, P[3 * b + 1]!, P[3 * d + 1]!), ty1 = c.originY + Math.max(P[3 * a + 1]!, P[3 * b + 1]!, P[3 * d + 1]!);
-      if (tx1 >= x0 && tx0 <= x1 && ty1 >= y0 && ty0 <= y1) n++;
+  return async (scale, centre, width = 1280, height = 720) => {
+    const z = zAtScale(meta, scale);
+    const res = (scale * PIXEL_SIZE_MM) / 1000;
+    const [x0, y0, x1, y1] = [centre[0] - (width / 2) * res, centre[1] - (height / 2) * res, centre[0] + (width / 2) * res, centre[1] + (height / 2) * res];
+    let n = 0;
+    for (const leaf of await cube.query({ ground: [x0, y0, x1, y1], zMin: z, zMax: z })) {
+      const c = await cube.chunk(leaf);
+      const P = c.positions, I = c.indices;
+      for (let t = 0; t < c.triangleCount; t++) {
+        const a = I[3 * t]!, b = I[3 * t + 1]!, d = I[3 * t + 2]!;
+        if (Math.min(P[3 * a + 2]!, P[3 * b + 2]!, P[3 * d + 2]!) > z || endOf(c.upper[a]!) <= z) continue;
+        const tx0 = c.originX + Math.min(P[3 * a]!, P[3 * b]!, P[3 * d]!), tx1 = c.originX + Math.max(P[3 * a]!, P[3 * b]!, P[3 * d]!);
+        const ty0 = c.originY + Math.min(P[3 * a + 1]!, P[3 * b + 1]!, P[3 * d + 1]!), ty1 = c.originY + Math.max(P[3 * a + 1]!, P[3 * b + 1]!, P[3 * d + 1]!);
+        if (tx1 >= x0 && tx0 <= x1 && ty1 >= y0 && ty0 <= y1) n++;
+      }
     }
-  }
-  return n;
+    return n;
+  };
 }
