@@ -37,10 +37,10 @@ export function classicTransitions(events: readonly Pick<TgapEvent, 'kind' | 'st
  * in the classic cube.
  */
 export function smoothTransitions(
-  events: readonly Pick<TgapEvent, 'kind' | 'step' | 'loser'>[], merges: readonly Pick<MergeTransition, 'step' | 'loser' | 'zStart' | 'zMerge' | 'tilted'>[], splits: readonly SplitTransition[],
+  events: readonly Pick<TgapEvent, 'kind' | 'step' | 'loser'>[], merges: readonly Pick<MergeTransition, 'step' | 'loser' | 'zStart' | 'zMerge' | 'tilted' | 'held'>[], splits: readonly SplitTransition[],
 ): Transition[] {
   const tilted = new Map<number, { step: number; zStart: number; zEnd: number }>();
-  for (const m of merges) if (m.tilted) tilted.set(m.loser, { step: m.step, zStart: m.zStart, zEnd: m.zMerge });
+  for (const m of merges) if (m.tilted || m.held) tilted.set(m.loser, { step: m.step, zStart: m.zStart, zEnd: m.zMerge });
   for (const p of splits) if (p.zStart < p.zSplit) tilted.set(p.loser, { step: p.step, zStart: p.zStart, zEnd: p.zSplit });
   return events.flatMap((e) => {
     const m = e.kind === EventKind.Merge || e.kind === EventKind.Split ? tilted.get(e.loser) : undefined;

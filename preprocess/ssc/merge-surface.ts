@@ -12,12 +12,12 @@ import type { MergeTransition, Surfaces } from './surfaces.js';
  */
 export function mergeTriangles(s: Surfaces, transitions: readonly MergeTransition[], t?: Pick<Tgap, 'faces'>): number[][] {
   const replaced = t ? replacedFaces(t.faces) : undefined;
-  return transitions.map(({ first, end, loser, into }) => {
+  return transitions.map(({ first, end, loser, into, carries }) => {
     if (!(first >= 0 && first <= end && end <= s.count)) throw new Error(`merge of ${loser} into ${into}: triangles ${first}..${end} not in the surfaces (${s.count})`);
     const winner = replaced ? winnerIds(replaced, into) : new Set([into]);
     const out: number[] = [];
     for (let i = first; i < end; i++) {
-      if (s.lower[i] !== loser || !winner.has(s.upper[i]!)) throw new Error(`merge of ${loser} into ${into}: triangle ${i} is between ${s.lower[i]} and ${s.upper[i]}`);
+      if ((s.lower[i] !== loser && !carries?.includes(s.lower[i]!)) || !winner.has(s.upper[i]!)) throw new Error(`merge of ${loser} into ${into}: triangle ${i} is between ${s.lower[i]} and ${s.upper[i]}`);
       out.push(i);
     }
     return out;

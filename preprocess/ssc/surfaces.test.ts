@@ -34,7 +34,7 @@ const THREE: FixtureFace[] = [
 /** Every surface triangle in one chunk, decoded: slices then see what the map would. */
 async function slicer(t: Tgap, s: Surfaces, view: View): Promise<(z: number) => Uint32Array> {
   const all = Uint32Array.from({ length: s.count }, (_, i) => i);
-  const chunk = await decodeChunk(assembleChunk(s, all, t.xs, t.ys, (f) => t.faces[f]!.classIndex).bytes);
+  const chunk = await decodeChunk(assembleChunk(s, all, s.xs, s.ys, (f) => t.faces[f]!.classIndex).bytes);
   return (z) => {
     const sl = new CpuSlicer(view, () => z);
     sliceChunk(sl, chunk);
@@ -132,4 +132,70 @@ test('a smooth cube is a partition at every z and equals the classic one at the 
   const classic = await slicer(t, buildSurfaces(t).surfaces, view);
   assert.deepEqual(slice(0), classic(0));
   assert.deepEqual(slice(zMax), classic(zMax));
+});
+
+// A cascade that would send an area back to its class:
+//
+//   +--+--------+----------------+-----------+-- ... --+-+
+//   |X |   Y    |       Z        |  filler   |         |c|   X = [0,1]   class a, area 4
+//   |a |   b    |       a        |     c     |  c ...  |c|   Y = [1,5]   class b, area 16
+//   |  |        |                |           |         |c|   Z = [5,13]  class a, area 32
+//   +--+--------+----------------+-----------+-- ... --+-+   6 fillers of 40, 4 squares of 1
+//
+// The squares go first (steps 1 to 4: early on a transition reaches back half way to the base
+// scale). X's only neighbour is Y: X merges into Y (step 5), then Y (20) into Z (step 6), within
+// a transition's reach. X's pixels would show a, b, a; the smooth cube holds X back until Y's
+// ramp carries it to Z, so they show a throughout.
+function cascade(zClass: string): { t: Tgap; X: number; Y: number; Z: number } {
+  const faces: FixtureFace[] = [
+    { cls: 'a', rings: [rect(0, 0, 1, 4)] },
+    { cls: 'b', rings: [rect(1, 0, 5, 4)] },
+    { cls: zClass, rings: [rect(5, 0, 13, 4)] },
+  ];
+  for (let i = 0; i < 6; i++) faces.push({ cls: 'c', rings: [rect(13 + 10 * i, 0, 23 + 10 * i, 4)] });
+  for (let j = 0; j < 4; j++) faces.push({ cls: 'c', rings: [rect(73, j, 74, j + 1)] });
+  return { t: fixtureTgap(faces, ['a', 'b', 'c']), X: 1, Y: 2, Z: 3 };
+}
+
+test('a smooth cube holds back a merge whose area would go back to its class: it never shows the winner in between', async () => {
+  const { t, X, Y, Z } = cascade('a');
+  assert.deepEqual([X, Y].map((f) => t.events.find((e) => e.loser === f)).map((e) => [e?.step, e?.into]), [[5, Y], [6, Z]]);
+  const built = buildSurfaces(t, { smooth: true });
+  const { surfaces: s, transitions, tgap: cube } = built;
+  const m = transitions.find((x) => x.loser === X)!;
+  const carrier = transitions.find((x) => x.loser === Y)!;
+  assert.equal(m.held, true);
+  assert.ok(carrier.tilted, 'Y tilts into Z');
+  // X's transition is Y's ramp, and X lives (in the faces the cube names) until Y's merge, into Z.
+  assert.deepEqual([m.zStart, m.zMerge], [carrier.zStart, carrier.zMerge]);
+  assert.deepEqual([cube.faces[X]!.stepHigh, cube.faces[X]!.mergedInto], [6, Z]);
+  assert.deepEqual([t.faces[X]!.stepHigh, t.faces[X]!.mergedInto], [5, Y], 'the tGAP itself unchanged');
+  // Below Y's ramp lies Y, or X where a triangle's centre lies in X's part.
+  for (let i = carrier.first; i < carrier.end; i++) assert.ok([X, Y].includes(s.lower[i]!), `ramp triangle ${i}: lower ${s.lower[i]}`);
+  // Sliced through a real chunk at 300 z up to past the cascade: X's columns show X, then Z;
+  // every pixel shows one face, alive in the cube's faces.
+  const view = fitView(t.meta.extent, 730, 40);
+  const slice = await slicer(t, s, view);
+  const colOf = (x: number): number => Math.floor((x - view.bbox[0]) / ((view.bbox[2] - view.bbox[0]) / view.width));
+  const seen = new Set<number>();
+  for (let k = 0; k <= 300; k++) {
+    const z = (7 * k) / 300;
+    const row = middleRow(slice(z), view);
+    for (let c = 0; c < colOf(1); c++) seen.add(row[c]!);
+    row.forEach((f, p) => assert.ok(f > 0 && faceStartZ(cube.faces[f]!) <= z && z < faceEndZ(cube.faces[f]!, t.meta.steps), `z ${z}: column ${p} shows face ${f}`));
+  }
+  assert.deepEqual([...seen].sort(), [X, Z]);
+});
+
+test('a cascade that does not come back to the loser\'s class is not held back: the loser\'s area shows the winner on the way', async () => {
+  const { t, X, Y, Z } = cascade('c');
+  assert.deepEqual([X, Y].map((f) => t.events.find((e) => e.loser === f)).map((e) => [e?.step, e?.into]), [[5, Y], [6, Z]]);
+  const { surfaces: s, transitions, tgap: cube } = buildSurfaces(t, { smooth: true });
+  assert.equal(transitions.find((x) => x.loser === X)!.held, undefined);
+  assert.equal(cube.faces[X]!.stepHigh, 5);
+  const view = fitView(t.meta.extent, 730, 40);
+  const slice = await slicer(t, s, view);
+  const seen = new Set<number>();
+  for (let k = 0; k <= 300; k++) seen.add(middleRow(slice((7 * k) / 300), view)[0]!);
+  assert.deepEqual([...seen].sort(), [X, Y, Z]);
 });

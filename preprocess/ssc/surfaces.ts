@@ -21,6 +21,7 @@ import { skipLateReemits } from './late-reemits.js';
 import { removalHeights } from './removal-heights.js';
 import { SurfacesByFace } from './surfaces-by-face.js';
 import { triangulateFace, type FaceEdge, type TriangulateStats } from './triangulate-face.js';
+import { AreaIndex } from './area-index.js';
 
 export class Surfaces {
   count = 0;
@@ -210,6 +211,13 @@ interface Removal {
   phase: number;
 }
 
+/** A face whose merge was held back (a cascade): its area, and its transition (that of the merge that carries it on). */
+interface Held {
+  face: number;
+  area: AreaIndex;
+  transition: MergeTransition;
+}
+
 /** The winner's ids over a transition: members[i] until levels[i], where members[i + 1] takes over. */
 interface WinnerIds {
   members: number[];
@@ -235,6 +243,14 @@ export interface MergeTransition {
   zFront: number;
   /** Drawn tilted (with --smooth, room in z and a vertex off the shared boundary). */
   tilted: boolean;
+  /**
+   * Held back (a smooth cube's cascade that would send the loser's area back to its class): the
+   * loser stays until its winner's own merge, whose ramp (zStart to zMerge) carries its area on
+   * to the winner's winner; it has no ramp of its own (first = end).
+   */
+  held?: boolean;
+  /** The faces held back in the loser's area whose areas this merge's ramp carries on (their lower face under it). */
+  carries?: number[];
   /**
    * Its ramp's triangles in the surfaces: from `first` up to (not including) `end`; their upper
    * face is the winner, or the id it had before a re-emit during the transition (copies of the
@@ -358,7 +374,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
    * earlier than zFoot, and waits above the older surfaces still in the loser's area
    * (smooth-merge.ts); or flat at zMerge when it cannot tilt. Returns its Ramp.
    */
-  const emitSmoothMerge = (byFace: SurfacesByFace, loser: number, into: number, s: number, sharedWithInto: number[], zFoot: number, zMerge: number, key: string): Ramp => {
+  const emitSmoothMerge = (byFace: SurfacesByFace, loser: number, into: number, s: number, sharedWithInto: number[], zFoot: number, zMerge: number, key: string, lowerOf?: (a: number, b: number, c: number) => number): Ramp => {
     triangulate(loser, s);
     // The winner's earlier ids inside the transition: it may have been re-emitted meanwhile.
     const members = [into];
@@ -367,7 +383,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       levels.unshift(faceStartZ(faces[g]!));
       members.unshift(replaced!.get(g)!);
     }
-    const ramp = emitTilted(byFace, tris, loser, into, s, sharedWithInto, zFoot, zMerge, key, 'merge', { members, levels });
+    const ramp = emitTilted(byFace, tris, loser, into, s, sharedWithInto, zFoot, zMerge, key, 'merge', { members, levels }, lowerOf);
     if (ramp.zStart < zMerge) stats.tiltedMerges++;
     return ramp;
   };
@@ -407,7 +423,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
    */
   const emitTilted = (
     byFace: SurfacesByFace, area: number[], loser: number, into: number, s: number, sharedWithInto: number[], zFoot: number, zMerge: number, key: string, kind: 'merge' | 'split',
-    winner: WinnerIds = { members: [into], levels: [] },
+    winner: WinnerIds = { members: [into], levels: [] }, lowerOf: (a: number, b: number, c: number) => number = () => loser,
   ): Ramp => {
     // A vertex of the shared boundary may start once the winner lies beside it.
     const shared = new Map<number, number>();
@@ -443,14 +459,16 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     const group: number[] = [];
     for (let i = 0; i < own.length; i += 3) {
       const a = own[i]!, b = own[i + 1]!, c = own[i + 2]!;
+      const lower = lowerOf(a, b, c);
       if (z) {
         const lo = Math.min(zOf(a), zOf(b), zOf(c));
         const g = levels.filter((l) => l <= lo).length;
         group.push(g);
-        out.addTilted(a, b, c, zOf(a), zOf(b), zOf(c), members[g]!, loser, g === members.length - 1 ? key : `${key}:${g}`); // a piece has one upper face
+        // A piece has one upper and one lower face.
+        out.addTilted(a, b, c, zOf(a), zOf(b), zOf(c), members[g]!, lower, `${key}${g === members.length - 1 ? '' : `:${g}`}${lower === loser ? '' : `/${lower}`}`);
         zLow = Math.min(zLow, lo);
       } else {
-        out.add(a, b, c, zMerge, into, loser);
+        out.add(a, b, c, zMerge, into, lower);
       }
     }
     const end = out.count;
@@ -517,6 +535,28 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     if (out.count > first) origins.push({ kind, step, face, into, first, end: out.count });
   };
 
+  /**
+   * Cascades that would send an area back to its class (smooth cubes): a loser of class A whose
+   * winner, of another class, merges into a face of class A within a transition's reach. Its
+   * area would show A, then the winner's class, then A again (flicker); instead the loser stays
+   * until the winner's own ramp carries its area on, so that its pixels keep class A throughout.
+   * Per face, the faces held back in its area; per face held back, the merge that carried it on.
+   */
+  const held = new Map<number, Held[]>();
+  const carried = new Map<number, { step: number; into: number }>();
+  /** The z up to which the loser's merge into `into` at step k is held back (undefined: not held). */
+  const holdUntil = (loser: number, into: number, k: number): number | undefined => {
+    const w = faces[into]!;
+    if (!(w.endPhase === 0 && w.mergedInto > 0 && w.stepHigh <= steps)) return undefined;
+    const cl = faces[loser]!.classIndex;
+    if (w.classIndex === cl || faces[w.mergedInto]!.classIndex !== cl) return undefined;
+    const zOn = phaseZ(w.stepHigh, 0);
+    // Held back no longer than a transition may reach, for the loser and the faces held in it.
+    let zFirst = phaseZ(k, 0);
+    for (const h of held.get(loser) ?? []) zFirst = Math.min(zFirst, h.transition.zMerge);
+    return reachBack(zOn) <= zFirst ? zOn : undefined;
+  };
+
   for (const e of born[0]!) if (edges[e]!.stepHigh > 0) attach(e, 0);
   for (let f = 1; f < faces.length; f++) {
     if (faces[f]!.stepLow === 0 && faces[f]!.stepHigh > 0) {
@@ -539,19 +579,48 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         const first = out.count;
         let ramp: Ramp = { zStart: z0, end: first, zFront: z0 };
         const zFoot = byFace ? Math.max(SURFACE_GAP, reachBack(z0)) : z0;
+        const zOn = byFace ? holdUntil(e.loser, e.into, k) : undefined;
+        if (byFace && zOn !== undefined) {
+          // The loser's area keeps showing it until the winner's own merge carries it on.
+          const inLoser = held.get(e.loser) ?? [];
+          held.delete(e.loser);
+          triangulate(e.loser, k - 1);
+          const transition: MergeTransition = { step: k, loser: e.loser, into: e.into, zStart: z0, zMerge: z0, zFoot, zFront: z0, tilted: false, held: true, first, end: first };
+          transitions.push(transition);
+          inLoser.push({ face: e.loser, area: new AreaIndex(tris, xs, ys), transition });
+          // Innermost first: a face held earlier lies in the area of one held later.
+          held.set(e.into, [...(held.get(e.into) ?? []), ...inLoser].sort((a, b) => a.transition.zMerge - b.transition.zMerge));
+          byFace.hand(e.loser, e.into);
+          // No merge into the winner may start from the loser's boundary: the loser is still there.
+          relabel(e.loser, zOn, before);
+          handOn.push([e.loser, e.into]);
+          continue;
+        }
         if (byFace) {
           // No further back than reachBackZ (the winner's re-emits meanwhile are handled there).
-          ramp = emitSmoothMerge(byFace, e.loser, e.into, k - 1, shared, zFoot, z0, `m${ev}`);
+          const inLoser = held.get(e.loser);
+          // Under the ramp lies the loser, or a face held back in its area.
+          const lowerOf = inLoser ? (a: number, b: number, c: number): number => {
+            const x = (out.xs[a]! + out.xs[b]! + out.xs[c]!) / 3, y = (out.ys[a]! + out.ys[b]! + out.ys[c]!) / 3;
+            return inLoser.find((h) => h.area.contains(x, y))?.face ?? e.loser;
+          } : undefined;
+          ramp = emitSmoothMerge(byFace, e.loser, e.into, k - 1, shared, zFoot, z0, `m${ev}`, lowerOf);
+          for (const h of inLoser ?? []) {
+            carried.set(h.face, { step: k, into: e.into });
+            Object.assign(h.transition, { zStart: ramp.zStart, zMerge: z0 });
+          }
           lieIn(e.into, first);
           byFace.hand(e.loser, e.into);
         } else {
           stats.merge += emitFace(e.loser, k - 1, z0, e.into, e.loser);
           ramp.end = out.count;
         }
-        transitions.push({ step: k, loser: e.loser, into: e.into, zStart: ramp.zStart, zMerge: z0, zFoot, zFront: ramp.zFront, tilted: ramp.zStart < z0, first, end: ramp.end });
+        const carries = held.get(e.loser)?.map((h) => h.face);
+        transitions.push({ step: k, loser: e.loser, into: e.into, zStart: ramp.zStart, zMerge: z0, zFoot, zFront: ramp.zFront, tilted: ramp.zStart < z0, first, end: ramp.end, ...(carries ? { carries } : {}) });
         origin('merge', k, e.loser, e.into, first);
         // The winner grows; the loser's neighbours now border the winner.
         relabel(e.loser, z0, before);
+        held.delete(e.loser);
         handOn.push([e.loser, e.into]);
       } else if (e.kind === EventKind.Split) {
         const tv = e.tris!, tf = e.triFaces!;
@@ -665,10 +734,15 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       lieIn(g, first);
     }
   }
+  // A face held back ends where the merge that carried it on ends it.
+  const cube: Tgap = carried.size === 0 ? t : { ...t, faces: faces.map((f, i) => {
+    const c = carried.get(i);
+    return c ? { ...f, stepHigh: c.step, mergedInto: c.into, endPhase: 0 } : f;
+  }) };
   // Each triangle matters until its upper face ends; after that newer surfaces cover it.
   for (let i = 0; i < out.count; i++) {
     const u = out.upper[i]!;
-    out.zEnd[i] = u > 0 ? Math.min(zTop, faceEndZ(faces[u]!, steps)) : zTop;
+    out.zEnd[i] = u > 0 ? Math.min(zTop, faceEndZ(cube.faces[u]!, steps)) : zTop;
   }
-  return { surfaces: out, stats, transitions, splits, origins, tgap: t };
+  return { surfaces: out, stats, transitions, splits, origins, tgap: cube };
 }

@@ -1,0 +1,34 @@
+// An area given as triangles, asked whether it holds a point: which face held back in a
+// cascade lies under a ramp triangle (surfaces.ts names it the triangle's lower face).
+import { orient } from '../geom/predicates.js';
+
+export class AreaIndex {
+  /** x0 y0 x1 y1 x2 y2 per triangle. */
+  private readonly corners: Float64Array;
+  private readonly box: [number, number, number, number] = [Infinity, Infinity, -Infinity, -Infinity];
+
+  /** `tris`: vertex ids, 3 per triangle, counterclockwise, into xs and ys. */
+  constructor(tris: readonly number[], xs: ArrayLike<number>, ys: ArrayLike<number>) {
+    this.corners = new Float64Array(2 * tris.length);
+    tris.forEach((v, i) => {
+      const x = xs[v]!, y = ys[v]!;
+      this.corners[2 * i] = x;
+      this.corners[2 * i + 1] = y;
+      this.box[0] = Math.min(this.box[0], x);
+      this.box[1] = Math.min(this.box[1], y);
+      this.box[2] = Math.max(this.box[2], x);
+      this.box[3] = Math.max(this.box[3], y);
+    });
+  }
+
+  /** Whether (x, y) lies in one of the triangles (their edges included). */
+  contains(x: number, y: number): boolean {
+    const [x0, y0, x1, y1] = this.box;
+    if (x < x0 || x > x1 || y < y0 || y > y1) return false;
+    const c = this.corners;
+    for (let i = 0; i < c.length; i += 6) {
+      if (orient(c[i]!, c[i + 1]!, c[i + 2]!, c[i + 3]!, x, y) >= 0 && orient(c[i + 2]!, c[i + 3]!, c[i + 4]!, c[i + 5]!, x, y) >= 0 && orient(c[i + 4]!, c[i + 5]!, c[i]!, c[i + 1]!, x, y) >= 0) return true;
+    }
+    return false;
+  }
+}
