@@ -41,7 +41,7 @@ if (!size) throw new Error(`--size takes WxH, e.g. 640x360 (got ${values.size})`
 const width = Number(size[1]), height = Number(size[2]);
 const worstN = Number(values.worst), topN = Number(values.top);
 if (!(Number.isInteger(worstN) && worstN > 0 && Number.isInteger(topN) && topN > 0)) throw new Error('--worst and --top take whole numbers > 0');
-const sets = datasets(positionals[0], ['bgt_otterlo_1800m', 'nlcd_zion']);
+const sets = datasets(positionals[0], ['bgt_otterlo_400m', 'bgt_otterlo_1800m', 'nlcd_zion']);
 if (values.tgap && sets.length > 1) throw new Error('--tgap names one tGAP: give a dataset filter that matches one dataset');
 
 /** Slices `s` at z over the view; each pixel's id is its triangle + 1 (0: none). */

@@ -145,6 +145,8 @@ export interface SurfaceStats extends TriangulateStats {
   tiltedSplits: number;
   /** Triangles added by splitting chords between shared-boundary vertices (smooth merges). */
   chordSplits: number;
+  /** Merges held back (a cascade that would send the loser's area back to its class). */
+  heldMerges: number;
 }
 
 /** What made a run of surface triangles (bench/explain-frames.ts attributes a frame's changes to it). */
@@ -184,6 +186,23 @@ export const MAX_TRANSITION_RATIO = 2;
  * still differs in float32 up to about 2^17 steps, so the two never tie in depth.
  */
 export const SURFACE_GAP = 1 / 32;
+
+/**
+ * How long a merge may be held back (a cascade that would send its area back to its class): its
+ * loser may stay until at most this factor in scale after its own merge (two zoom levels).
+ * Measured on bgt_otterlo_1800m (bench:explain, sliced at 1280x720): one zoom level left 5,550
+ * pixels of flicker, two 3,028 (with the split rule below 1,931), three the same; the worst frame
+ * 0.757%, 0.726%, (0.694%).
+ */
+export const MAX_HOLD_RATIO = 4;
+
+/**
+ * A merge into a face that is then split is held back when more than this share of the split's
+ * area over the loser goes to faces of the loser's class (its other pixels change once, not
+ * twice). Measured on bgt_otterlo_1800m: all of it (a share of 1) left 3,028 pixels of flicker,
+ * half 1,931.
+ */
+export const HOLD_SPLIT_SHARE = 0.5;
 
 /** Rounds of holding up a ramp where it would dip under an older surface, before the corner rule. */
 const EXACT_ROUNDS = 6;
@@ -269,6 +288,8 @@ export interface SplitTransition {
   loser: number;
   zStart: number;
   zSplit: number;
+  /** The faces held back in the split face's area that its parts carry on (their lower face under them). */
+  carries?: number[];
 }
 
 /**
@@ -294,7 +315,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   const steps = t.meta.steps;
   const zTop = steps + 1;
   const out = new Surfaces(t.xs, t.ys);
-  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0 };
+  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0, heldMerges: 0 };
   const { xs, ys, faces, edges } = t;
   // Edges by the state they start and end in.
   const born: number[][] = Array.from({ length: steps + 2 }, () => []);
@@ -537,24 +558,63 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
 
   /**
    * Cascades that would send an area back to its class (smooth cubes): a loser of class A whose
-   * winner, of another class, merges into a face of class A within a transition's reach. Its
-   * area would show A, then the winner's class, then A again (flicker); instead the loser stays
-   * until the winner's own ramp carries its area on, so that its pixels keep class A throughout.
+   * winner, of another class, soon merges into a face of class A (or is split, most of the
+   * loser's area going to faces of class A). Its area would show A, then the winner's class, then
+   * A again (flicker); instead the loser stays until the winner's own ramp carries its area on,
+   * so that its pixels keep class A throughout.
    * Per face, the faces held back in its area; per face held back, the merge that carried it on.
    */
   const held = new Map<number, Held[]>();
+  const splitOf = new Map(t.events.filter((e) => e.kind === EventKind.Split).map((e) => [e.loser, e]));
   const carried = new Map<number, { step: number; into: number }>();
   /** The z up to which the loser's merge into `into` at step k is held back (undefined: not held). */
   const holdUntil = (loser: number, into: number, k: number): number | undefined => {
     const w = faces[into]!;
-    if (!(w.endPhase === 0 && w.mergedInto > 0 && w.stepHigh <= steps)) return undefined;
     const cl = faces[loser]!.classIndex;
-    if (w.classIndex === cl || faces[w.mergedInto]!.classIndex !== cl) return undefined;
+    if (!(w.endPhase === 0 && w.stepHigh <= steps) || w.classIndex === cl) return undefined;
+    if (w.mergedInto > 0) {
+      if (faces[w.mergedInto]!.classIndex !== cl) return undefined;
+    } else {
+      // Split: most of what it gives away over the loser's area goes to faces of the loser's class.
+      const split = splitOf.get(into);
+      if (!split) return undefined;
+      triangulate(loser, k - 1);
+      const area = new AreaIndex(tris, xs, ys);
+      const tv = split.tris!, tf = split.triFaces!;
+      let over = 0, back = 0;
+      for (let i = 0; i < tf.length; i++) {
+        const [a, b, c] = [tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!];
+        if (!area.contains((xs[a]! + xs[b]! + xs[c]!) / 3, (ys[a]! + ys[b]! + ys[c]!) / 3)) continue;
+        const w2 = Math.abs(orient(xs[a]!, ys[a]!, xs[b]!, ys[b]!, xs[c]!, ys[c]!));
+        over += w2;
+        if (faces[tf[i]!]!.classIndex === cl) back += w2;
+      }
+      if (!(back > HOLD_SPLIT_SHARE * over)) return undefined;
+    }
     const zOn = phaseZ(w.stepHigh, 0);
-    // Held back no longer than a transition may reach, for the loser and the faces held in it.
+    // Held back no longer than MAX_HOLD_RATIO in scale, for the loser and the faces held in it.
     let zFirst = phaseZ(k, 0);
     for (const h of held.get(loser) ?? []) zFirst = Math.min(zFirst, h.transition.zMerge);
-    return reachBack(zOn) <= zFirst ? zOn : undefined;
+    return scaleAtZ(scaleInfo, zOn) <= MAX_HOLD_RATIO * scaleAtZ(scaleInfo, zFirst) ? zOn : undefined;
+  };
+  /** Under a ramp over the loser's area lies the loser, or a face held back in it (undefined: none held). */
+  const lowerUnder = (loser: number): ((a: number, b: number, c: number) => number) | undefined => {
+    const inLoser = held.get(loser);
+    if (!inLoser) return undefined;
+    return (a, b, c) => {
+      const x = (out.xs[a]! + out.xs[b]! + out.xs[c]!) / 3, y = (out.ys[a]! + out.ys[b]! + out.ys[c]!) / 3;
+      return inLoser.find((h) => h.area.contains(x, y))?.face ?? loser;
+    };
+  };
+  /** The faces held back in the loser's area end with it at step k (into: the winner, -1 for a split), over its transition. */
+  const carryOn = (loser: number, k: number, into: number, zStart: number, zEnd: number): number[] | undefined => {
+    const inLoser = held.get(loser);
+    held.delete(loser);
+    for (const h of inLoser ?? []) {
+      carried.set(h.face, { step: k, into });
+      Object.assign(h.transition, { zStart, zMerge: zEnd });
+    }
+    return inLoser?.map((h) => h.face);
   };
 
   for (const e of born[0]!) if (edges[e]!.stepHigh > 0) attach(e, 0);
@@ -578,6 +638,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         const shared = sharedEdges(e.loser, e.into, k - 1);
         const first = out.count;
         let ramp: Ramp = { zStart: z0, end: first, zFront: z0 };
+        let carries: number[] | undefined;
         const zFoot = byFace ? Math.max(SURFACE_GAP, reachBack(z0)) : z0;
         const zOn = byFace ? holdUntil(e.loser, e.into, k) : undefined;
         if (byFace && zOn !== undefined) {
@@ -587,6 +648,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
           triangulate(e.loser, k - 1);
           const transition: MergeTransition = { step: k, loser: e.loser, into: e.into, zStart: z0, zMerge: z0, zFoot, zFront: z0, tilted: false, held: true, first, end: first };
           transitions.push(transition);
+          stats.heldMerges++;
           inLoser.push({ face: e.loser, area: new AreaIndex(tris, xs, ys), transition });
           // Innermost first: a face held earlier lies in the area of one held later.
           held.set(e.into, [...(held.get(e.into) ?? []), ...inLoser].sort((a, b) => a.transition.zMerge - b.transition.zMerge));
@@ -598,29 +660,18 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         }
         if (byFace) {
           // No further back than reachBackZ (the winner's re-emits meanwhile are handled there).
-          const inLoser = held.get(e.loser);
-          // Under the ramp lies the loser, or a face held back in its area.
-          const lowerOf = inLoser ? (a: number, b: number, c: number): number => {
-            const x = (out.xs[a]! + out.xs[b]! + out.xs[c]!) / 3, y = (out.ys[a]! + out.ys[b]! + out.ys[c]!) / 3;
-            return inLoser.find((h) => h.area.contains(x, y))?.face ?? e.loser;
-          } : undefined;
-          ramp = emitSmoothMerge(byFace, e.loser, e.into, k - 1, shared, zFoot, z0, `m${ev}`, lowerOf);
-          for (const h of inLoser ?? []) {
-            carried.set(h.face, { step: k, into: e.into });
-            Object.assign(h.transition, { zStart: ramp.zStart, zMerge: z0 });
-          }
+          ramp = emitSmoothMerge(byFace, e.loser, e.into, k - 1, shared, zFoot, z0, `m${ev}`, lowerUnder(e.loser));
+          carries = carryOn(e.loser, k, e.into, ramp.zStart, z0);
           lieIn(e.into, first);
           byFace.hand(e.loser, e.into);
         } else {
           stats.merge += emitFace(e.loser, k - 1, z0, e.into, e.loser);
           ramp.end = out.count;
         }
-        const carries = held.get(e.loser)?.map((h) => h.face);
         transitions.push({ step: k, loser: e.loser, into: e.into, zStart: ramp.zStart, zMerge: z0, zFoot, zFront: ramp.zFront, tilted: ramp.zStart < z0, first, end: ramp.end, ...(carries ? { carries } : {}) });
         origin('merge', k, e.loser, e.into, first);
         // The winner grows; the loser's neighbours now border the winner.
         relabel(e.loser, z0, before);
-        held.delete(e.loser);
         handOn.push([e.loser, e.into]);
       } else if (e.kind === EventKind.Split) {
         const tv = e.tris!, tf = e.triFaces!;
@@ -634,16 +685,18 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
             l.push(tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!);
           }
           let zStart = z0;
+          const lowerOf = lowerUnder(e.loser);
           for (const [into, area] of [...byInto].sort((p, q) => p[0] - q[0])) {
             const first = out.count;
             const zFoot = Math.max(SURFACE_GAP, reachBack(z0), faceStartZ(faces[into]!) + SURFACE_GAP);
-            const part = emitTilted(byFace, area, e.loser, into, k - 1, sharedEdges(e.loser, into, k - 1), zFoot, z0, `p${ev}:${into}`, 'split');
+            const part = emitTilted(byFace, area, e.loser, into, k - 1, sharedEdges(e.loser, into, k - 1), zFoot, z0, `p${ev}:${into}`, 'split', undefined, lowerOf);
             if (part.zStart < z0) stats.tiltedSplits++;
             zStart = Math.min(zStart, part.zStart);
             lieIn(into, first);
             origin('split', k, e.loser, into, first);
           }
-          splits.push({ step: k, loser: e.loser, zStart, zSplit: z0 });
+          const carries = carryOn(e.loser, k, -1, zStart, z0);
+          splits.push({ step: k, loser: e.loser, zStart, zSplit: z0, ...(carries ? { carries } : {}) });
         } else {
           const first = out.count;
           for (let i = 0; i < tf.length; i++) out.add(tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!, z0, tf[i]!, e.loser);
