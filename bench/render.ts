@@ -41,6 +41,7 @@ interface PageEngine {
   off(t: 'render', f: (s: Stats) => void): void;
   neededChunks(): { visible: string[]; margin: string[] };
   setWholeChunks(whole: boolean): void;
+  stats(): { gpuBytes: number };
 }
 interface Stats { triangles: number; segments: number; queryMs: number }
 declare const map: PageMap;
@@ -61,7 +62,7 @@ async function main(): Promise<void> {
   const filter = process.argv[2];
   const sets = datasets(filter, ['bgt_otterlo_1800m', 'nlcd_zion']);
   const browser = await launchChromium();
-  const rows: string[][] = [['dataset', 'view', 'scale', 'first map ms', 'frame ms median', 'frame ms p95', 'no lines ms', 'whole chunks ms', 'triangles/frame', 'whole chunks', 'needed in view', 'at 5 places', 'segments/frame', 'line vertices in view', 'query ms/frame', 'chunks', 'MB', 'line MB', 'long tasks load', 'long tasks frames']];
+  const rows: string[][] = [['dataset', 'view', 'scale', 'first map ms', 'frame ms median', 'frame ms p95', 'no lines ms', 'whole chunks ms', 'triangles/frame', 'whole chunks', 'needed in view', 'ID fragments/px', 'GPU MB', 'at 5 places', 'segments/frame', 'line vertices in view', 'query ms/frame', 'chunks', 'MB', 'line MB', 'long tasks load', 'long tasks frames']];
   const ratios: string[] = [];
   try {
     for (const d of sets) {
@@ -102,6 +103,8 @@ async function main(): Promise<void> {
             await page.waitForFunction(() => typeof map !== 'undefined' && map.getMetadata() !== null);
             await page.evaluate(() => map.whenIdle());
             const firstMs = await page.evaluate(() => engine.firstCompleteAt);
+            // The chunks on the GPU once the view is complete (with its margin and what lies ahead).
+            const gpuMb = (await page.evaluate(() => engine.stats().gpuBytes)) / 1e6;
             const longLoad = await page.evaluate(() => (globalThis as unknown as { longTasks: number[] }).longTasks.splice(0));
             const needed = await page.evaluate(() => engine.neededChunks());
             const files = [...needed.visible, ...needed.margin];
@@ -169,7 +172,7 @@ async function main(): Promise<void> {
             }
             triangleMeans.push(placed.reduce((a, b) => a + b, 0) / placed.length);
             const lineVertices = await linesInView(path.join(dir, 'cube'), index, scale, centre);
-            const neededTriangles = await neededIn(scale, centre);
+            const { triangles: neededTriangles, fragmentsPerPixel } = await neededIn(scale, centre);
             const drawn = median(kept.map((s) => s.triangles));
             ratios.push(`${d.name} ${name}: triangles drawn / needed in view: ${(drawn / Math.max(1, neededTriangles)).toFixed(2)}`);
             rows.push([
@@ -177,6 +180,7 @@ async function main(): Promise<void> {
               firstMs === null ? 'never' : firstMs.toFixed(0),
               median(frameMs).toFixed(1), p95(frameMs).toFixed(1), median(noLinesMs).toFixed(1), median(wholeMs).toFixed(1),
               Math.round(drawn).toString(), Math.round(median(wholeStats.map((s) => s.triangles))).toString(), String(neededTriangles),
+              fragmentsPerPixel.toFixed(2), gpuMb.toFixed(1),
               Math.round(triangleMeans[triangleMeans.length - 1]!).toString(),
               Math.round(median(kept.map((s) => s.segments))).toString(), String(lineVertices),
               median(kept.map((s) => s.queryMs)).toFixed(2),

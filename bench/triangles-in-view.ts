@@ -3,15 +3,27 @@
 // upper face not yet ended: docs/FORMAT.md, "Surfaces"; a face's end from the face table pages,
 // taken as its stepHigh, at or just above its true end) whose ground box meets the view. A frame
 // that draws exactly these draws no triangle in vain; the renderer's count is set against it.
+// Beside it the ID pass's overdraw (issue 13): the chunks the view queries sliced by the CPU
+// reference slicer, counting per pixel every triangle over its centre at or below the slice,
+// which the GPU's ID pass shades and keeps (it discards only what lies above the slice), per
+// pixel with a face. One fragment per pixel is the floor.
 import { readFile } from 'node:fs/promises';
 import path from 'node:path';
 import { decodeFacePage, faceRecord } from '../format/face-page.js';
 import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
 import { zAtScale } from '../format/scale.js';
+import { CpuSlicer, sliceChunk } from '../preprocess/ssc/cpu-slicer.js';
 import { CubeReader } from '../preprocess/ssc/read-cube.js';
 
-/** Triangles a view needs, for views of one cube: its index and face pages are read once. */
-export type TrianglesInView = (scale: number, centre: [number, number], width?: number, height?: number) => Promise<number>;
+export interface ViewNeeds {
+  /** Triangles the view needs. */
+  triangles: number;
+  /** Fragments the ID pass keeps per pixel with a face (1: no overdraw). */
+  fragmentsPerPixel: number;
+}
+
+/** What a view needs, for views of one cube: its index and face pages are read once. */
+export type TrianglesInView = (scale: number, centre: [number, number], width?: number, height?: number) => Promise<ViewNeeds>;
 
 /** The counter of triangles needed by a `width` x `height` px view at 1:scale centred on `centre`. */
 export async function trianglesInView(cubeDir: string): Promise<TrianglesInView> {
@@ -35,8 +47,10 @@ export async function trianglesInView(cubeDir: string): Promise<TrianglesInView>
     const res = (scale * PIXEL_SIZE_MM) / 1000;
     const [x0, y0, x1, y1] = [centre[0] - (width / 2) * res, centre[1] - (height / 2) * res, centre[0] + (width / 2) * res, centre[1] + (height / 2) * res];
     let n = 0;
+    const sl = new CpuSlicer({ width, height, bbox: [x0, y0, x1, y1] }, () => z, true);
     for (const leaf of await cube.query({ ground: [x0, y0, x1, y1], zMin: z, zMax: z })) {
       const c = await cube.chunk(leaf);
+      sliceChunk(sl, c);
       const P = c.positions, I = c.indices;
       for (let t = 0; t < c.triangleCount; t++) {
         const a = I[3 * t]!, b = I[3 * t + 1]!, d = I[3 * t + 2]!;
@@ -46,6 +60,11 @@ export async function trianglesInView(cubeDir: string): Promise<TrianglesInView>
         if (tx1 >= x0 && tx0 <= x1 && ty1 >= y0 && ty0 <= y1) n++;
       }
     }
-    return n;
+    let fragments = 0, covered = 0;
+    sl.fragments!.forEach((f, p) => {
+      fragments += f;
+      if (sl.ids[p] !== 0) covered++;
+    });
+    return { triangles: n, fragmentsPerPixel: covered === 0 ? 0 : fragments / covered };
   };
 }

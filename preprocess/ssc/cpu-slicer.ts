@@ -14,11 +14,17 @@ export class CpuSlicer {
   readonly classes: Uint16Array;
   /** z of the slicing surface at each pixel centre. */
   readonly zs: Float64Array;
+  /**
+   * With `countFragments`: per pixel, the triangles over its centre at or below the slicing
+   * surface, the fragments the GPU's ID pass keeps there (its overdraw, bench/triangles-in-view.ts).
+   */
+  readonly fragments: Uint32Array | null;
   private readonly px: number;
   private readonly py: number;
 
-  constructor(readonly view: View, zAt: (x: number, y: number) => number) {
+  constructor(readonly view: View, zAt: (x: number, y: number) => number, countFragments = false) {
     const { width: W, height: H, bbox } = view;
+    this.fragments = countFragments ? new Uint32Array(W * H) : null;
     this.ids = new Uint32Array(W * H);
     this.lower = new Uint32Array(W * H);
     this.classes = new Uint16Array(W * H);
@@ -54,6 +60,7 @@ export class CpuSlicer {
     const j1 = Math.min(H - 1, Math.floor((bbox[3] - Math.min(ay, by, cy)) / this.py - 0.5));
     if (i0 > i1 || j0 > j1) return;
     const flat = az === bz && bz === cz;
+    const fragments = this.fragments;
     for (let j = j0; j <= j1; j++) {
       const y = this.cy(j);
       for (let i = i0; i <= i1; i++) {
@@ -66,7 +73,9 @@ export class CpuSlicer {
         if (w2 < 0 || (w2 === 0 && !owns(ax, ay, bx, by))) continue;
         const p = j * W + i;
         const z = flat ? az : (w0 * az + w1 * bz + w2 * cz) / area;
-        if (z <= this.zs[p]! && z > this.depth[p]!) {
+        if (!(z <= this.zs[p]!)) continue;
+        if (fragments) fragments[p]!++;
+        if (z > this.depth[p]!) {
           this.depth[p] = z;
           this.ids[p] = upper;
           this.lower[p] = lower;
