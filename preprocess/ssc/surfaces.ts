@@ -567,35 +567,34 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   const held = new Map<number, Held[]>();
   const splitOf = new Map(t.events.filter((e) => e.kind === EventKind.Split).map((e) => [e.loser, e]));
   const carried = new Map<number, { step: number; into: number }>();
-  /** The z up to which the loser's merge into `into` at step k is held back (undefined: not held). */
-  const holdUntil = (loser: number, into: number, k: number): number | undefined => {
+  /**
+   * The z up to which the loser's merge into `into` at step k is held back (undefined: not
+   * held); `loserArea` gives the loser's area, triangulated only when a split needs it.
+   */
+  const holdUntil = (loser: number, into: number, k: number, loserArea: () => AreaIndex): number | undefined => {
     const w = faces[into]!;
     const cl = faces[loser]!.classIndex;
     if (!(w.endPhase === 0 && w.stepHigh <= steps) || w.classIndex === cl) return undefined;
-    if (w.mergedInto > 0) {
-      if (faces[w.mergedInto]!.classIndex !== cl) return undefined;
-    } else {
-      // Split: most of what it gives away over the loser's area goes to faces of the loser's class.
-      const split = splitOf.get(into);
-      if (!split) return undefined;
-      triangulate(loser, k - 1);
-      const area = new AreaIndex(tris, xs, ys);
-      const tv = split.tris!, tf = split.triFaces!;
-      let over = 0, back = 0;
-      for (let i = 0; i < tf.length; i++) {
-        const [a, b, c] = [tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!];
-        if (!area.contains((xs[a]! + xs[b]! + xs[c]!) / 3, (ys[a]! + ys[b]! + ys[c]!) / 3)) continue;
-        const w2 = Math.abs(orient(xs[a]!, ys[a]!, xs[b]!, ys[b]!, xs[c]!, ys[c]!));
-        over += w2;
-        if (faces[tf[i]!]!.classIndex === cl) back += w2;
-      }
-      if (!(back > HOLD_SPLIT_SHARE * over)) return undefined;
-    }
     const zOn = phaseZ(w.stepHigh, 0);
     // Held back no longer than MAX_HOLD_RATIO in scale, for the loser and the faces held in it.
     let zFirst = phaseZ(k, 0);
     for (const h of held.get(loser) ?? []) zFirst = Math.min(zFirst, h.transition.zMerge);
-    return scaleAtZ(scaleInfo, zOn) <= MAX_HOLD_RATIO * scaleAtZ(scaleInfo, zFirst) ? zOn : undefined;
+    if (scaleAtZ(scaleInfo, zOn) > MAX_HOLD_RATIO * scaleAtZ(scaleInfo, zFirst)) return undefined;
+    if (w.mergedInto > 0) return faces[w.mergedInto]!.classIndex === cl ? zOn : undefined;
+    // Split: most of what it gives away over the loser's area goes to faces of the loser's class.
+    const split = splitOf.get(into);
+    if (!split) return undefined;
+    const area = loserArea();
+    const tv = split.tris!, tf = split.triFaces!;
+    let over = 0, back = 0;
+    for (let i = 0; i < tf.length; i++) {
+      const [a, b, c] = [tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!];
+      if (!area.contains((xs[a]! + xs[b]! + xs[c]!) / 3, (ys[a]! + ys[b]! + ys[c]!) / 3)) continue;
+      const w2 = Math.abs(orient(xs[a]!, ys[a]!, xs[b]!, ys[b]!, xs[c]!, ys[c]!));
+      over += w2;
+      if (faces[tf[i]!]!.classIndex === cl) back += w2;
+    }
+    return back > HOLD_SPLIT_SHARE * over ? zOn : undefined;
   };
   /** Under a ramp over the loser's area lies the loser, or a face held back in it (undefined: none held). */
   const lowerUnder = (loser: number): ((a: number, b: number, c: number) => number) | undefined => {
@@ -640,16 +639,24 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         let ramp: Ramp = { zStart: z0, end: first, zFront: z0 };
         let carries: number[] | undefined;
         const zFoot = byFace ? Math.max(SURFACE_GAP, reachBack(z0)) : z0;
-        const zOn = byFace ? holdUntil(e.loser, e.into, k) : undefined;
+        // The loser's area as it is before the merge, triangulated once if a hold needs it.
+        let area: AreaIndex | undefined;
+        const loserArea = (): AreaIndex => {
+          if (!area) {
+            triangulate(e.loser, k - 1);
+            area = new AreaIndex(tris, xs, ys);
+          }
+          return area;
+        };
+        const zOn = byFace ? holdUntil(e.loser, e.into, k, loserArea) : undefined;
         if (byFace && zOn !== undefined) {
           // The loser's area keeps showing it until the winner's own merge carries it on.
           const inLoser = held.get(e.loser) ?? [];
           held.delete(e.loser);
-          triangulate(e.loser, k - 1);
           const transition: MergeTransition = { step: k, loser: e.loser, into: e.into, zStart: z0, zMerge: z0, zFoot, zFront: z0, tilted: false, held: true, first, end: first };
           transitions.push(transition);
           stats.heldMerges++;
-          inLoser.push({ face: e.loser, area: new AreaIndex(tris, xs, ys), transition });
+          inLoser.push({ face: e.loser, area: loserArea(), transition });
           // Innermost first: a face held earlier lies in the area of one held later.
           held.set(e.into, [...(held.get(e.into) ?? []), ...inLoser].sort((a, b) => a.transition.zMerge - b.transition.zMerge));
           byFace.hand(e.loser, e.into);
