@@ -323,11 +323,11 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
     // The tGAP sends some areas back to a class (a face merged into one of another class that
     // soon merges into a face of the first); the smooth cube holds those merges back
     // (surfaces.ts, MAX_HOLD_RATIO; on bgt_otterlo_1800m 15,237 px -> 1,931 at 1280x720).
-    // Measured here: 31 px of the 230,400, with or without the holds (two buildings' merges into
-    // bare terrain that had taken a road's corner, and a road's split), the classic cube 4 (its
-    // flat steps fall between frames).
+    // Measured here: 4 px of the 230,400, as many as the classic cube (one road corner the tGAP
+    // itself hands back and forth). Before the fronts were paced in zoom time and slivers handed
+    // back were left out (surfaces.ts givesBack), 31 px.
     const domain = smooth(view, 0).ids.reduce((n, f) => n + (f > 0 ? 1 : 0), 0);
-    assert.ok(s.flickering <= 0.0005 * domain, `smooth ${s.flickering} px of ${domain}`);
+    assert.ok(s.flickering <= c.flickering + 0.0001 * domain, `smooth ${s.flickering} px of ${domain}, classic ${c.flickering}`);
   });
 
   await t.test('in every merge the share of the loser\'s area the winner has not taken falls monotonically from all to none, and what it took is attached to it', (t) => {
@@ -433,9 +433,13 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
       if (stray.some((n) => n > 0)) {
         // Looked at 4x finer: a gain joined to the winner by a needle thinner than a pixel is
         // attached there; one still apart is reported.
+        // Fronts paced in zoom time move slowest near the shared boundary, where the first
+        // gains are strips along it: those still apart at 4x are looked at 16x finer too.
         const fine = viewOf(256);
         const again = strayAt(fine, zs.map((z) => smooth(fine, z).ids));
-        if (again.some((n) => n > 0)) detached.push(`${m.loser}: ${stray.join(' ')} (at 4x: ${again.join(' ')})`);
+        const finer = again.some((n) => n > 0) ? viewOf(1024) : undefined;
+        const third = finer ? strayAt(finer, zs.map((z) => smooth(finer, z).ids)) : [];
+        if (third.some((n) => n > 0)) detached.push(`${m.loser}: ${stray.join(' ')} (at 4x: ${again.join(' ')}; at 16x: ${third.join(' ')})`);
         else needles++;
       }
       if (shares.slice(1, 7).some((x) => x > 0 && x < 1)) partWay++;
@@ -445,11 +449,10 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
     t.diagnostic(`${partWay} of ${picks.length} merges show part-way at 6 z inside the transition`);
     assert.ok(partWay >= 0.8 * picks.length, `only ${partWay} of ${picks.length} merges show part-way`);
     t.diagnostic(`${needles} merges with gained pixels joined to the winner only below a pixel; ${detached.length} with gained pixels apart from it at 4x too (loser: pixels at the 8 z): ${detached.join('; ')}`);
-    // Measured: 14 of 337 at 64 px, mostly a few pixels of 4096, of which 12 are attached at
-    // 256 px: the gain reaches the winner through a needle thinner than a pixel (a sliver along
-    // a boundary with a third face, or beside a chord's midpoint). The 2 left are a few dozen
-    // of 65,536 pixels at some of the 8 z (merge 402 into 249 beside a third face, 401, that
-    // loses area to 249 meanwhile; not explained further). Geometrically every part is attached
+    // Measured: 14 of 336 at 64 px, mostly a few pixels of 4096, of which 13 are attached at
+    // 256 or 1024 px: the gain reaches the winner through a needle thinner than a pixel (a
+    // sliver along a boundary with a third face, or beside a chord's midpoint). The one left is
+    // 6 of 1,048,576 pixels at 3 of the 8 z (merge 240; not explained further). Geometrically every part is attached
     // to the shared boundary: merge-connectivity.test.ts checks that exactly on every merge here.
     assert.ok(detached.length <= 0.01 * picks.length, `${detached.length} merges with gained pixels apart from the winner: ${detached.join('; ')}`);
   });

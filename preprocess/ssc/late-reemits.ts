@@ -5,7 +5,7 @@
 // transition could start no earlier than the re-emit and was squeezed into the steps between.
 // On bgt_otterlo_1800m such transitions held three quarters of the merged area. When the face
 // ends within a transition's reach of its re-emit, it keeps its old id until it ends instead.
-import { EventKind, faceEndZ, faceStartZ, REEMIT_PHASE, type Tgap, type TgapFace } from '../../format/tgap-model.js';
+import { EventKind, faceEndZ, faceStartZ, phaseZ, REEMIT_PHASE, type Tgap, type TgapFace } from '../../format/tgap-model.js';
 
 /**
  * The tGAP with those re-emits taken out: the replaced face lives on until the new one would
@@ -19,13 +19,17 @@ export function skipLateReemits(t: Tgap, earliest: (z: number) => number): { tga
   const replacedBy = (f: TgapFace): number => (f.endPhase === REEMIT_PHASE && f.mergedInto > 0 ? f.mergedInto : -1);
   const alias = Int32Array.from({ length: faces.length }, (_, i) => i);
   let skipped = 0;
+  // Per face, the earliest start of a transition of a merge into it.
+  const intoReach = new Float64Array(faces.length).fill(Infinity);
+  for (const e of events) if (e.kind === EventKind.Merge) intoReach[e.into] = Math.min(intoReach[e.into]!, earliest(phaseZ(e.step, 0)));
   for (const e of events) {
     if (e.kind !== EventKind.Reemit) continue;
     // The face's last id: where its area finally merges, is split or lives to the top.
     let last = e.into;
     while (replacedBy(faces[last]!) > 0) last = replacedBy(faces[last]!);
     const end = faceEndZ(faces[last]!, steps);
-    if (end === Infinity || earliest(end) >= faceStartZ(faces[e.into]!)) continue;
+    const start = faceStartZ(faces[e.into]!);
+    if ((end === Infinity || earliest(end) >= start) && !(intoReach[e.into]! < start)) continue;
     alias[e.into] = alias[e.loser]!;
     skipped++;
   }

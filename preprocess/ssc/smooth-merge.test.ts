@@ -12,7 +12,7 @@
 // Vertex 5 is 2 sqrt 2 from (2,1) in a straight line: the distance goes round the corner.
 import test from 'node:test';
 import assert from 'node:assert/strict';
-import { meshDistances, smoothMergeZ } from './smooth-merge.js';
+import { areaShare, meshDistances, smoothMergeZ } from './smooth-merge.js';
 
 const xs = Float64Array.of(0, 2, 2, 1, 1, 0, 5, 6, 5);
 const ys = Float64Array.of(0, 0, 1, 1, 3, 3, 0, 0, 1);
@@ -74,4 +74,26 @@ test('without a shared boundary or room in z it does not tilt', () => {
   assert.equal(smoothMergeZ(TRIS, xs, ys, new Map(), { zFoot: 0, zMerge: 16 }), null);
   assert.equal(smoothMergeZ(TRIS, xs, ys, at([1, 2], 0), { zFoot: 16, zMerge: 16 }), null);
   assert.equal(smoothMergeZ(TRIS, xs, ys, at([1, 2], 16), { zFoot: 0, zMerge: 16 }), null);
+});
+
+test('areaShare: the share of the area a front has passed, and its inverse', () => {
+  // Square (0,0)-(2,2) as two triangles, distances from the left side x = 0: d = x.
+  const sx = Float64Array.of(0, 2, 2, 0), sy = Float64Array.of(0, 0, 2, 2);
+  const d = new Map([[0, 0], [1, 2], [2, 2], [3, 0]]);
+  const share = areaShare([0, 1, 2, 0, 2, 3], sx, sy, d, 2);
+  // Each triangle's area is spread evenly over x in [0, 2]: half the area by x = 1.
+  assert.ok(Math.abs(share.at(0.5) - 0.5) < 1e-12);
+  assert.equal(share.at(0), 0);
+  assert.equal(share.at(1), 1);
+  for (const x of [0.1, 0.37, 0.9]) assert.ok(Math.abs(share.inverse(share.at(x)) - x) < 1e-12);
+});
+
+test('areaShare: each triangle\'s area is spread between its nearest and farthest corner, mixed with distance', () => {
+  // (0,0) (0,4) (1,2) (4,2); sources 0 and 1 (x = 0). Triangle 0 1 2 has area 2 over d 0..1,
+  // triangle 0 2 3 area 3 over d 0..4. Passed by d = 1: 2 + 3 / 4 = 2.75 of 5 = 0.55; mixed 3:1
+  // with the distance share 1/4: 0.75 * 0.55 + 0.25 * 0.25 = 0.475. The front gets more time
+  // where more area lies (0.475 of it for the first quarter of the distance).
+  const wedge = areaShare([0, 1, 2, 0, 2, 3], Float64Array.of(0, 0, 1, 4), Float64Array.of(0, 4, 2, 2), new Map([[0, 0], [1, 0], [2, 1], [3, 4]]), 4);
+  assert.ok(Math.abs(wedge.at(0.25) - 0.475) < 1e-12, `${wedge.at(0.25)}`);
+  assert.ok(Math.abs(wedge.inverse(0.475) - 0.25) < 1e-12);
 });

@@ -90,6 +90,13 @@ export interface RampBounds {
   zMerge: number;
   /** Per vertex, the lowest z it may take: above the older surfaces in its triangles' area. */
   lowest?: ReadonlyMap<number, number>;
+  /**
+   * The time in which the front advances evenly (zoom-time.ts: u, the log of the scale), as
+   * increasing maps from z and back; without it, z itself.
+   */
+  time?: { u(z: number): number; z(u: number): number };
+  /** Pace the front by the share of the area it has passed (areaShare), so that it takes about as much in each moment. */
+  evenArea?: boolean;
 }
 
 /**
@@ -104,6 +111,21 @@ export interface RampBounds {
  * stays attached to the winner. null when it cannot tilt: no room in z, or no shared boundary.
  */
 export function smoothMergeZ(
+  tris: ArrayLike<number>, xs: Float64Array, ys: Float64Array, shared: ReadonlyMap<number, number>, b: RampBounds,
+): Map<number, number> | null {
+  const time = b.time;
+  if (!time) return evenFront(tris, xs, ys, shared, b);
+  // The same front, even in u: every bound mapped to u, every arrival back to z.
+  const toU = (m: ReadonlyMap<number, number>): Map<number, number> => new Map([...m].map(([v, z]) => [v, time.u(z)]));
+  const u = evenFront(tris, xs, ys, toU(shared), { ...b, zFoot: time.u(b.zFoot), zMerge: time.u(b.zMerge), ...(b.lowest ? { lowest: toU(b.lowest) } : {}) });
+  if (!u) return null;
+  const z = new Map<number, number>();
+  // Rounding on the way back must not carry a vertex past the merge or below its wait.
+  for (const [v, uv] of u) z.set(v, Math.min(b.zMerge, Math.max(time.z(uv), b.lowest?.get(v) ?? -Infinity)));
+  return z;
+}
+
+function evenFront(
   tris: ArrayLike<number>, xs: Float64Array, ys: Float64Array, shared: ReadonlyMap<number, number>, b: RampBounds,
 ): Map<number, number> | null {
   const { zFoot, zMerge } = b;
@@ -130,10 +152,37 @@ export function smoothMergeZ(
   let first = Infinity;
   for (const [, z] of sources) first = Math.min(first, z);
   if (!(first < zMerge)) return null;
+  let z: Map<number, number> | null;
+  if (b.evenArea) {
+    // Paced in the share of the area the front has passed (areaShare), not in distance: time
+    // tau in [0, dMax] is the distance at which that share is passed without waits.
+    const share = areaShare(tris, xs, ys, d, dMax);
+    const toTau = (x: number): number => dMax * share.inverse((x - first) / (zMerge - first));
+    const fromTau = (tau: number): number => first + (zMerge - first) * share.at(tau / dMax);
+    const tauLowest = lowest && new Map([...lowest].map(([v, x]) => [v, toTau(x)]));
+    const tau = paced(graph, xs, ys, sources.map(([v, x]) => [v, toTau(x)]), tauLowest, 0, dMax, dMax);
+    if (!tau) return null;
+    z = new Map();
+    for (const [v, t] of tau) z.set(v, Math.max(fromTau(t), lowest?.get(v) ?? -Infinity));
+  } else {
+    z = paced(graph, xs, ys, sources, lowest, first, zMerge, dMax);
+  }
+  if (!z) return null;
+  for (const [v, zv] of z) if (zv > zMerge) z.set(v, zMerge);
+  fillUnreached(graph, z, zMerge);
+  return z;
+}
+
+/**
+ * Arrivals of a front leaving `sources` at their starts at one pace: the slowest at which the
+ * last vertex is reached by zMerge (`first`: the earliest start; dMax: the farthest distance).
+ * null when even standing still a wait or a start lies past zMerge.
+ */
+function paced(graph: MeshGraph, xs: Float64Array, ys: Float64Array, sources: [number, number][], lowest: ReadonlyMap<number, number> | undefined, first: number, zMerge: number, dMax: number): Map<number, number> | null {
   const slowest = (zMerge - first) / dMax; // z per unit of distance
   const reach = (perUnit: number): Map<number, number> => graph.arrivals(xs, ys, sources, perUnit, lowest);
   // Rounding may carry the farthest vertex a hair past zMerge: not a wait.
-  const late = (at: Map<number, number>): boolean => largest(at)[1] > zMerge + 1e-9 * Math.max(1, zMerge);
+  const late = (at: Map<number, number>): boolean => largest(at)[1] > zMerge + 1e-9 * Math.max(1, Math.abs(zMerge));
   let z = reach(slowest);
   if (late(z)) {
     // Waits made the front late: the slowest pace that still arrives everywhere by zMerge.
@@ -147,7 +196,63 @@ export function smoothMergeZ(
     // Even standing still, a wait past zMerge or a source starting after it leaves no room.
     if (late(z)) return null;
   }
-  for (const [v, zv] of z) if (zv > zMerge) z.set(v, zMerge);
-  fillUnreached(graph, z, zMerge);
   return z;
+}
+
+/** Of the share of time, this much stays even in distance, so that the map stays strictly increasing. */
+const EVEN_DISTANCE_SHARE = 0.25;
+
+/**
+ * The share of the area of `tris` that a front has passed at each distance (d: per vertex,
+ * from the sources), each triangle's area spread evenly between its nearest and farthest
+ * corner, mixed with the share of the distance (EVEN_DISTANCE_SHARE): an increasing
+ * piecewise-linear map of [0, 1] (distance / dMax) onto [0, 1], and its inverse.
+ */
+export function areaShare(tris: ArrayLike<number>, xs: Float64Array, ys: Float64Array, d: ReadonlyMap<number, number>, dMax: number): { at(x: number): number; inverse(y: number): number } {
+  const knots = [...new Set([0, ...[...d.values()].map((x) => Math.min(1, x / dMax)), 1])].sort((a, b) => a - b);
+  const index = new Map(knots.map((k, i) => [k, i]));
+  const n = knots.length;
+  const density = new Float64Array(n), mass = new Float64Array(n);
+  let total = 0;
+  for (let i = 0; i + 2 < tris.length; i += 3) {
+    const a = tris[i]!, b = tris[i + 1]!, c = tris[i + 2]!;
+    const area = Math.abs((xs[b]! - xs[a]!) * (ys[c]! - ys[a]!) - (xs[c]! - xs[a]!) * (ys[b]! - ys[a]!)) / 2;
+    const ds = [a, b, c].map((v) => Math.min(1, (d.get(v) ?? dMax) / dMax));
+    const lo = Math.min(...ds), hi = Math.max(...ds);
+    total += area;
+    if (hi > lo) {
+      density[index.get(lo)!]! += area / (hi - lo);
+      density[index.get(hi)!]! -= area / (hi - lo);
+    } else {
+      mass[index.get(lo)!]! += area;
+    }
+  }
+  // Cumulative share at each knot.
+  const ys2 = new Float64Array(n);
+  let acc = 0, rho = 0;
+  for (let i = 0; i < n; i++) {
+    if (i > 0) acc += rho * (knots[i]! - knots[i - 1]!);
+    acc += mass[i]!;
+    rho += density[i]!;
+    ys2[i] = acc;
+  }
+  const k = EVEN_DISTANCE_SHARE;
+  for (let i = 0; i < n; i++) ys2[i] = (1 - k) * (total > 0 ? ys2[i]! / acc : knots[i]!) + k * knots[i]!;
+  const xs2 = Float64Array.from(knots);
+  return { at: (x) => interpolate(xs2, ys2, x), inverse: (y) => interpolate(ys2, xs2, y) };
+}
+
+/** Piecewise-linear through (xs[i], ys[i]) (xs increasing), extended by the end segments' slope... or 1 beyond them. */
+function interpolate(xk: Float64Array, yk: Float64Array, x: number): number {
+  const n = xk.length;
+  if (x <= xk[0]!) return yk[0]! + (x - xk[0]!);
+  if (x >= xk[n - 1]!) return yk[n - 1]! + (x - xk[n - 1]!);
+  let lo = 0, hi = n - 1;
+  while (hi - lo > 1) {
+    const mid = (lo + hi) >> 1;
+    if (xk[mid]! <= x) lo = mid;
+    else hi = mid;
+  }
+  const t = (x - xk[lo]!) / (xk[hi]! - xk[lo]!);
+  return yk[lo]! + t * (yk[hi]! - yk[lo]!);
 }

@@ -17,7 +17,7 @@ import test from 'node:test';
 import assert from 'node:assert/strict';
 import { decodeChunk } from '../../format/chunk.js';
 import { scaleAtZ, zAtScale } from '../../format/scale.js';
-import { EventKind, faceEndZ, faceStartZ, phaseZ, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
+import { EventKind, faceEndZ, faceStartZ, phaseZ, replacedFaces, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
 import { fixtureTgap, rect, type FixtureFace } from '../../testing/planar-fixtures.js';
 import { fitView, type View } from '../map/rasterize.js';
 import { assembleChunk } from './assemble-chunk.js';
@@ -132,8 +132,15 @@ test('a smooth cube is a partition at every z and equals the classic one at the 
     }
   }
   const classic = await slicer(t, buildSurfaces(t).surfaces, view);
+  // A re-emit the smooth cube skips leaves the face its old id (never-alive new id).
+  const previous = replacedFaces(t.faces);
+  const root = (f: number): number => {
+    let g = f;
+    while (cubeFaces[g]!.stepLow === cubeFaces[g]!.stepHigh && previous.has(g)) g = previous.get(g)!;
+    return g;
+  };
   assert.deepEqual(slice(0), classic(0));
-  assert.deepEqual(slice(zMax), classic(zMax));
+  assert.deepEqual(slice(zMax), classic(zMax).map(root));
 });
 
 // A cascade that would send an area back to its class:

@@ -21,6 +21,8 @@ import { skipLateReemits } from './late-reemits.js';
 import { removalHeights } from './removal-heights.js';
 import { SurfacesByFace } from './surfaces-by-face.js';
 import { triangulateFace, type FaceEdge, type TriangulateStats } from './triangulate-face.js';
+import { ZoomTime } from './zoom-time.js';
+import { cutAtLevels } from './level-cuts.js';
 import { AreaIndex } from './area-index.js';
 
 export class Surfaces {
@@ -147,6 +149,8 @@ export interface SurfaceStats extends TriangulateStats {
   chordSplits: number;
   /** Merges held back (a cascade that would send the loser's area back to its class). */
   heldMerges: number;
+  /** Removals left out of a smooth cube: a sliver handed to a face that soon merges back into its giver. */
+  skippedRemovals: number;
 }
 
 /** What made a run of surface triangles (bench/explain-frames.ts attributes a frame's changes to it). */
@@ -206,9 +210,6 @@ export const HOLD_SPLIT_SHARE = 0.5;
 
 /** Rounds of holding up a ramp where it would dip under an older surface, before the corner rule. */
 const EXACT_ROUNDS = 6;
-
-/** Rounds of keeping a merge's ramp off the winner's re-emit levels before giving up on them. */
-const LEVEL_ROUNDS = 8;
 
 /** Where a merge's (or a split part's) transition starts, and where its ramp triangles end in the surfaces. */
 interface Ramp {
@@ -315,7 +316,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   const steps = t.meta.steps;
   const zTop = steps + 1;
   const out = new Surfaces(t.xs, t.ys);
-  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0, heldMerges: 0 };
+  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0, heldMerges: 0, skippedRemovals: 0 };
   const { xs, ys, faces, edges } = t;
   // Edges by the state they start and end in.
   const born: number[][] = Array.from({ length: steps + 2 }, () => []);
@@ -364,6 +365,10 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   /** The face each re-emitted face replaced (smooth merges run on through a winner's re-emits). */
   const replaced = opts.smooth ? replacedFaces(faces) : undefined;
   const reachBack = (z: number): number => reachBackZ(scaleInfo, z);
+  /** Fronts advance evenly in zoom, not in z (zoom-time.ts). */
+  const time = new ZoomTime(scaleInfo);
+  /** and by the share of the loser's area they have passed (smooth-merge.ts areaShare). */
+  const evenArea = true;
   const byFace = opts.smooth ? new SurfacesByFace(out) : undefined;
   /** Surfaces from `from` up to the last one added lie in `face`'s area (smooth cubes only). */
   const lieIn = (face: number, from: number): void => {
@@ -459,77 +464,70 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     stats[kind] += own.length / 3;
     stats.chordSplits += (own.length - area.length) / 3;
     const pairs = byFace.overlapping(loser, own, zFoot, SURFACE_GAP, reachBack(zMerge));
-    let { members, levels } = winner;
-    const solve = (waits: ReadonlyMap<number, number>): Map<number, number> | null => {
-      const z = smoothMergeZ(own, out.xs, out.ys, shared, { zFoot, zMerge, lowest: waits });
-      return z && levels.length > 0 ? keepOffLevels(own, shared, zFoot, zMerge, waits, levels, z) : z;
-    };
-    let z = exactRamp(own, pairs, zMerge, solve) ?? solve(byFace.waitsAbove(own, pairs, SURFACE_GAP));
-    if (levels.length > 0) {
-      if (!z) {
-        // No way round the winner's re-emits: start after the last, as its id is then one.
-        members = [into];
-        levels = [];
-        const after = Math.max(zFoot, faceStartZ(faces[into]!) + SURFACE_GAP);
-        z = smoothMergeZ(own, out.xs, out.ys, shared, { zFoot: after, zMerge, lowest: byFace.lowestZ(loser, own, after, SURFACE_GAP, reachBack(zMerge)) });
-      }
-    }
+    const { members, levels } = winner;
+    const solve = (waits: ReadonlyMap<number, number>): Map<number, number> | null => smoothMergeZ(own, out.xs, out.ys, shared, { zFoot, zMerge, lowest: waits, time, evenArea });
+    const z = exactRamp(own, pairs, zMerge, solve) ?? solve(byFace.waitsAbove(own, pairs, SURFACE_GAP));
     const zOf = (v: number): number => z?.get(v) ?? zMerge;
     let zLow = zMerge;
-    /** Per ramp triangle, how many of the winner's re-emits lie at or below it (its upper id). */
-    const group: number[] = [];
+    // Where an edge crosses one of the winner's re-emit levels: one vertex for both triangles beside it.
+    const cuts = new Map<string, number>();
+    const cut = (p: number, q: number, level: number): number => {
+      const [u, w] = p < q ? [p, q] : [q, p];
+      const key = `${u}:${w}:${level}`;
+      let id = cuts.get(key);
+      if (id === undefined) {
+        const t = (level - zOf(u)) / (zOf(w) - zOf(u));
+        id = out.addVertex(out.xs[u]! + t * (out.xs[w]! - out.xs[u]!), out.ys[u]! + t * (out.ys[w]! - out.ys[u]!));
+        cuts.set(key, id);
+      }
+      return id;
+    };
+    const hasArea = (o: readonly number[]): boolean => {
+      let twice = 0;
+      for (let i = 0; i < o.length; i++) {
+        const p = o[i]!, q = o[(i + 1) % o.length]!;
+        twice += out.xs[p]! * out.ys[q]! - out.xs[q]! * out.ys[p]!;
+      }
+      return twice !== 0;
+    };
+    /** Per re-emit level, the outlines of what the winner has taken by then. */
+    const taken: number[][][] = levels.map(() => []);
     for (let i = 0; i < own.length; i += 3) {
       const a = own[i]!, b = own[i + 1]!, c = own[i + 2]!;
       const lower = lowerOf(a, b, c);
-      if (z) {
-        const lo = Math.min(zOf(a), zOf(b), zOf(c));
-        const g = levels.filter((l) => l <= lo).length;
-        group.push(g);
-        // A piece has one upper and one lower face.
-        out.addTilted(a, b, c, zOf(a), zOf(b), zOf(c), members[g]!, lower, `${key}${g === members.length - 1 ? '' : `:${g}`}${lower === loser ? '' : `/${lower}`}`);
-        zLow = Math.min(zLow, lo);
-      } else {
+      if (!z) {
         out.add(a, b, c, zMerge, into, lower);
+        continue;
       }
+      const zs = [zOf(a), zOf(b), zOf(c)];
+      zLow = Math.min(zLow, ...zs);
+      if (levels.length === 0) {
+        out.addTilted(a, b, c, zs[0]!, zs[1]!, zs[2]!, into, lower, `${key}${lower === loser ? '' : `/${lower}`}`);
+        continue;
+      }
+      // Each part between the winner's re-emits shows the id the winner has there (a piece has one upper and one lower face).
+      const { parts, below } = cutAtLevels([a, b, c], zs, levels, cut, hasArea);
+      for (const { verts, zs: pz, group: g } of parts) {
+        for (let j = 1; j + 1 < verts.length; j++) {
+          if (!hasArea([verts[0]!, verts[j]!, verts[j + 1]!])) continue;
+          out.addTilted(verts[0]!, verts[j]!, verts[j + 1]!, pz[0]!, pz[j]!, pz[j + 1]!, members[g]!, lower, `${key}${g === members.length - 1 ? '' : `:${g}`}${lower === loser ? '' : `/${lower}`}`);
+        }
+      }
+      below.forEach((o, li) => {
+        if (o) taken[li]!.push(o);
+      });
     }
     const end = out.count;
     // At each re-emit inside the transition, what the winner has taken so far is drawn again
     // with its new id, as the re-emit draws the rest of it.
     levels.forEach((level, i) => {
-      for (let t = 0; t < group.length; t++) {
-        if (group[t]! <= i) out.add(own[3 * t]!, own[3 * t + 1]!, own[3 * t + 2]!, level, members[i + 1]!, members[i]!);
+      for (const o of taken[i]!) {
+        for (let j = 1; j + 1 < o.length; j++) if (hasArea([o[0]!, o[j]!, o[j + 1]!])) out.add(o[0]!, o[j]!, o[j + 1]!, level, members[i + 1]!, members[i]!);
       }
     });
     let zFront = Infinity;
     for (const t of shared.values()) zFront = Math.min(zFront, Math.max(t, zFoot));
     return { zStart: z ? zLow - SURFACE_GAP / 2 : zMerge, end, zFront: Math.min(zFront, zMerge) };
-  };
-  /**
-   * The ramp `z` changed so that no triangle crosses one of the winner's re-emit levels: the
-   * part below a level shows the winner's id before it, the part above the one after. Vertices
-   * of a crossing triangle below the level wait there, and the front is run again (a few times
-   * at most); null when it does not settle.
-   */
-  const keepOffLevels = (
-    own: number[], shared: ReadonlyMap<number, number>, zFoot: number, zMerge: number, lowest: ReadonlyMap<number, number>, levels: readonly number[], first: Map<number, number>,
-  ): Map<number, number> | null => {
-    const waits = new Map(lowest);
-    let z: Map<number, number> | null = first;
-    for (let round = 0; round < LEVEL_ROUNDS && z; round++) {
-      let crossed = false;
-      for (let i = 0; i < own.length; i += 3) {
-        const zs = [z.get(own[i]!) ?? zMerge, z.get(own[i + 1]!) ?? zMerge, z.get(own[i + 2]!) ?? zMerge];
-        const lo = Math.min(...zs), hi = Math.max(...zs);
-        for (const level of levels) {
-          if (!(lo < level && level < hi)) continue;
-          crossed = true;
-          for (let k = 0; k < 3; k++) if (zs[k]! < level) waits.set(own[i + k]!, Math.max(waits.get(own[i + k]!) ?? -Infinity, level));
-        }
-      }
-      if (!crossed) return z;
-      z = smoothMergeZ(own, out.xs, out.ys, shared, { zFoot, zMerge, lowest: waits });
-    }
-    return null;
   };
   /**
    * Where a smooth removal's corner starts to recede: the triangle (a, v, b) tilts from its
@@ -548,6 +546,25 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     for (const w of byFace.lowestZ(lower, tri, start, SURFACE_GAP, zCap).values()) start = Math.max(start, w);
     return Math.min(start, z);
   };
+  /**
+   * A removal that hands `lower`'s triangle to `upper` at z, when `upper` then merges into
+   * `lower` within reach of z: in a smooth cube the sliver stays `lower`'s, as `upper`'s ramp
+   * soon takes its area to `lower` anyway. Drawn, it would change twice (lower, upper, lower),
+   * and the ramp would have to wait above it where it starts, on the shared boundary.
+   */
+  const givesBack = (upper: number, lower: number, z: number): boolean => {
+    const f = faces[upper]!;
+    if (!(f.endPhase === 0 && f.stepHigh <= steps && f.mergedInto > 0 && reachBack(phaseZ(f.stepHigh, 0)) <= z)) return false;
+    // Into `lower`, or `lower` under the id a re-emit gave it meanwhile.
+    for (let g: number | undefined = f.mergedInto; g !== undefined; g = replaced!.get(g)) if (g === lower) return true;
+    return false;
+  };
+  /**
+   * Per face, the slivers left its own (givesBack) while the face that had them in the tGAP
+   * is still there: a re-emit of the face draws them again under its new id, as it draws the
+   * rest of its area (the tGAP's area no longer holds them).
+   */
+  const slivers = new Map<number, { tri: number[]; face: number }[]>();
   const transitions: MergeTransition[] = [];
   const splits: SplitTransition[] = [];
   const origins: SurfaceOrigin[] = [];
@@ -765,8 +782,16 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       }
     }
     const heights = byFace ? removalHeights(Float64Array.from(removals.flatMap(({ tri }) => tri.flatMap((w) => [xs[w]!, ys[w]!]))), removals.map((r) => r.phase)) : undefined;
+    let lastDrawn: Removal | undefined;
     removals.forEach(({ tri, v, upper, lower, edge, side, phase }, r) => {
       const z = phaseZ(k, phase);
+      if (byFace && givesBack(upper, lower, z)) {
+        stats.skippedRemovals++;
+        let l = slivers.get(lower);
+        if (!l) slivers.set(lower, (l = []));
+        l.push({ tri, face: upper });
+        return;
+      }
       let zCorner = z, zChord = z;
       if (byFace) {
         zCorner = smoothRemovalStart(byFace, tri, upper, lower, edge, side, z);
@@ -781,14 +806,19 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       lieIn(upper, out.count - 1);
       stats.simplify++;
       // One origin per edge version and side (its removals are consecutive).
-      const prev = removals[r - 1];
-      if (prev?.edge === edge && prev.upper === upper) origins[origins.length - 1]!.end = out.count;
+      if (lastDrawn?.edge === edge && lastDrawn.upper === upper) origins[origins.length - 1]!.end = out.count;
       else origin('simplify', k, lower, upper, out.count - 1);
+      lastDrawn = removals[r];
     });
     // Replaced faces: their whole area, as it is at the end of the step, drawn again.
     for (const [f, g] of reemits) {
       const first = out.count;
       stats.reemit += emitFace(g, k, phaseZ(k, REEMIT_PHASE), g, f);
+      // Those of its slivers whose tGAP face is still there move on with it.
+      const kept = (slivers.get(f) ?? []).filter((sl) => faces[sl.face]!.stepHigh > k);
+      slivers.delete(f);
+      if (kept.length > 0) slivers.set(g, kept);
+      for (const { tri } of kept) out.add(tri[0]!, tri[1]!, tri[2]!, phaseZ(k, REEMIT_PHASE), g, f);
       origin('reemit', k, f, g, first);
       byFace?.drop(f);
       lieIn(g, first);
