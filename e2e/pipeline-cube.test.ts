@@ -349,6 +349,8 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
     let partWay = 0;
     const detached: string[] = [];
     let needles = 0;
+    // Footprint pixels (the ramp's triangles) that show the winner at the transition's start.
+    let footprintPx = 0, winnerAtStartPx = 0;
     for (const m of picks) {
       // This merge's triangles: upper the winner, lower the loser.
       // This merge's ramp (the loser's area at the merge), as the build names it; its upper face
@@ -394,7 +396,10 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
       for (let f = faces[m.into]!.mergedInto; f > 0 && !after.has(f); f = faces[f]!.mergedInto) after.add(f);
       // Where the winner still lies at the start, the tGAP gave the loser a corner of it by
       // simplification before the merge (W, L, W again in the classic cube too): not the merge's.
+      const whole = footprint.length;
       footprint = footprint.filter((p) => !after.has(at[0]![p]!));
+      footprintPx += whole;
+      winnerAtStartPx += whole - footprint.length;
       if (footprint.length === 0) continue; // smaller than a pixel at this size
       // Not yet taken: the share of the footprint that has shown none of those yet. It falls
       // monotonically, from all (the footprint is what the winner had not taken at the start)
@@ -447,6 +452,12 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
     // Measured: all 337 (chords split, split-chords.ts); before, a loser whose area lay mostly
     // in triangles with every corner on the shared boundary went at the ramp's foot.
     t.diagnostic(`${partWay} of ${picks.length} merges show part-way at 6 z inside the transition`);
+    // A ramp covers only what its loser shows: slivers of the winner the tGAP gave the loser just
+    // before are notches cut out of its area (surfaces.ts givesBack), so hardly a pixel of a ramp
+    // shows the winner at its start (those left: notches that no longer fit, and older corners
+    // beyond a transition's reach). Measured: 0 of 406,349 pixels.
+    t.diagnostic(`${winnerAtStartPx} of ${footprintPx} footprint pixels show the winner at the transition's start`);
+    assert.ok(winnerAtStartPx <= 0.0005 * footprintPx, `${winnerAtStartPx} of ${footprintPx} footprint pixels show the winner at the start`);
     assert.ok(partWay >= 0.8 * picks.length, `only ${partWay} of ${picks.length} merges show part-way`);
     t.diagnostic(`${needles} merges with gained pixels joined to the winner only below a pixel; ${detached.length} with gained pixels apart from it at 4x too (loser: pixels at the 8 z): ${detached.join('; ')}`);
     // Measured: 14 of 336 at 64 px, mostly a few pixels of 4096, of which 13 are attached at

@@ -141,11 +141,27 @@ for (const classic of [false, true]) describe(`rendering and picking (bgt_otterl
     const below = await cpuSlice(cube.dir, { step: z - c, width: W, height: H, bbox: viewBbox(view) });
     let near = 0;
     for (let k = 0; k < W * H; k++) if (atZ[k] !== below[k]) near++;
+    // Within a pixel: on a steep ramp (a front paced in zoom time crosses many steps per pixel
+    // near its start) a sub-pixel difference between GPU and CPU is a fraction of a step.
+    const nearBy = (k: number): boolean => {
+      const i = k % W, j = Math.floor(k / W);
+      for (let dj = -1; dj <= 1; dj++) for (let di = -1; di <= 1; di++) {
+        const ii = i + di, jj = j + dj;
+        if (ii >= 0 && jj >= 0 && ii < W && jj < H && atZ[jj * W + ii] !== below[jj * W + ii]) return true;
+      }
+      return false;
+    };
     let outside = 0;
-    for (const k of diff) if (atZ[k] === below[k] && !onFaceBoundary(atZ, k)) outside++;
+    const where: string[] = [];
+    for (const k of diff) {
+      if (!nearBy(k) && !onFaceBoundary(atZ, k)) {
+        outside++;
+        if (where.length < 5) where.push(`${k % W},${Math.floor(k / W)} (face ${atZ[k]})`);
+      }
+    }
     assert.ok(diff.size > 200, `${diff.size} pixels blended`);
     assert.ok(near < W * H * 0.5, 'most of the map is far from a boundary in scale');
-    assert.equal(outside, 0, `${outside} of ${diff.size} changed pixels have no boundary within ${c} steps below`);
+    assert.equal(outside, 0, `${outside} of ${diff.size} changed pixels have no boundary within ${c} steps below: ${where.join(', ')}`);
     // And the colour is the mix the definition gives: mix(colour(lower), colour(upper), d / c),
     // d the distance from the slice down to the surface at the pixel (on a tilted surface, where
     // the slice meets the plane through its vertices: the z read back, which slice-accuracy

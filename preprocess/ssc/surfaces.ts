@@ -151,6 +151,8 @@ export interface SurfaceStats extends TriangulateStats {
   heldMerges: number;
   /** Removals left out of a smooth cube: a sliver handed to a face that soon merges back into its giver. */
   skippedRemovals: number;
+  /** Faces triangulated without their slivers' notches, which no longer fit. */
+  notchFallbacks: number;
 }
 
 /** What made a run of surface triangles (bench/explain-frames.ts attributes a frame's changes to it). */
@@ -316,7 +318,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   const steps = t.meta.steps;
   const zTop = steps + 1;
   const out = new Surfaces(t.xs, t.ys);
-  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0, heldMerges: 0, skippedRemovals: 0 };
+  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0, heldMerges: 0, skippedRemovals: 0, notchFallbacks: 0 };
   const { xs, ys, faces, edges } = t;
   // Edges by the state they start and end in.
   const born: number[][] = Array.from({ length: steps + 2 }, () => []);
@@ -374,20 +376,55 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   const lieIn = (face: number, from: number): void => {
     if (byFace) for (let i = from; i < out.count; i++) byFace.add(face, i);
   };
+  /**
+   * Per face, the slivers it gained and never shows (givesBack): the vertex each removal took
+   * off a segment of its boundary, by the segment (edgeKey). Put back, they keep the slivers
+   * out of the face's area: its ramp then covers only what it shows.
+   */
+  const notches = new Map<number, Map<string, number>>();
+  /** Edge e's chain, with face f's notches put back. */
+  const chainFor = (e: number, f: number): ArrayLike<number> => {
+    const verts = edges[e]!.verts;
+    const m = notches.get(f);
+    if (!m) return verts;
+    const chain = Array.from(verts);
+    let changed = false;
+    for (let i = 0; i + 1 < chain.length; i++) {
+      const v = m.get(edgeKey(chain[i]!, chain[i + 1]!));
+      if (v === undefined || chain.includes(v)) continue;
+      // Look at the new segment chain[i]-v again: an earlier notch may lie on it.
+      chain.splice(i + 1, 0, v);
+      changed = true;
+      i--;
+    }
+    return changed ? chain : verts;
+  };
   /** Triangulates face f's area at state s into `tris`; returns the triangle count. */
   const triangulate = (f: number, s: number): number => {
     tris.length = 0;
     const set = faceEdges.get(f);
     if (!set) return 0;
     const fe: FaceEdge[] = [];
+    const plain: FaceEdge[] = [];
     for (const e of [...set].sort((a, b) => a - b)) {
       const edge = edges[e]!;
       const l = resolveFace(faces, edge.left, s);
       const r = resolveFace(faces, edge.right, s);
       if (l === f && r === f) continue;
-      fe.push({ verts: edge.verts, forward: l === f });
+      fe.push({ verts: chainFor(e, f), forward: l === f });
+      plain.push({ verts: edge.verts, forward: l === f });
     }
-    return triangulateFace(fe, xs, ys, tris, stats);
+    if (notches.has(f)) {
+      try {
+        return triangulateFace(fe, xs, ys, tris, stats);
+      } catch {
+        // A notch no longer fits (a boundary of the face has since been simplified across it):
+        // the face's area as the tGAP has it, the sliver's lower face then named approximately.
+        tris.length = 0;
+        stats.notchFallbacks++;
+      }
+    }
+    return triangulateFace(plain, xs, ys, tris, stats);
   };
   /** Triangulates face f's current area and adds it at z with the given upper and lower faces. */
   const emitFace = (f: number, s: number, z: number, upper: number, lower: number): number => {
@@ -456,9 +493,23 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     const segments = new Set<string>();
     for (const e of sharedWithInto) {
       const intoSide = resolveFace(faces, edges[e]!.left, s) === into ? Side.Left : Side.Right;
-      for (const [v, z] of sides.vertexTimes(e, intoSide)) shared.set(v, Math.max(shared.get(v) ?? -Infinity, z + SURFACE_GAP));
-      const verts = edges[e]!.verts;
-      for (let i = 0; i + 1 < verts.length; i++) segments.add(edgeKey(verts[i]!, verts[i + 1]!));
+      const times = sides.vertexTimes(e, intoSide);
+      const verts = chainFor(e, loser);
+      /** The time of the nearest vertex of the edge itself from i, going by `step`. */
+      const near = (i: number, step: number): number => {
+        for (let j = i; j >= 0 && j < verts.length; j += step) {
+          const z = times.get(verts[j]!);
+          if (z !== undefined) return z;
+        }
+        return -Infinity;
+      };
+      for (let i = 0; i < verts.length; i++) {
+        // A notch's vertex lies beside the winner since the edge's vertices either side of it do, at the latest.
+        const z = times.get(verts[i]!) ?? Math.max(near(i, -1), near(i, 1));
+        shared.set(verts[i]!, Math.max(shared.get(verts[i]!) ?? -Infinity, z + SURFACE_GAP));
+      }
+      // With the notches, and without (if they no longer fit, the triangulation has the plain chain).
+      for (const chain of [verts, edges[e]!.verts]) for (let i = 0; i + 1 < chain.length; i++) segments.add(edgeKey(chain[i]!, chain[i + 1]!));
     }
     const own = splitChords(area, out.xs, out.ys, (v) => shared.has(v), (a, b) => segments.has(edgeKey(a, b)), (x, y) => out.addVertex(x, y));
     stats[kind] += own.length / 3;
@@ -790,6 +841,10 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         let l = slivers.get(lower);
         if (!l) slivers.set(lower, (l = []));
         l.push({ tri, face: upper });
+        let m = notches.get(upper);
+        if (!m) notches.set(upper, (m = new Map()));
+        const [a, b] = tri.filter((w) => w !== v);
+        m.set(edgeKey(a!, b!), v);
         return;
       }
       let zCorner = z, zChord = z;
