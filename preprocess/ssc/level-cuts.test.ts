@@ -5,16 +5,17 @@ import test from 'node:test';
 import assert from 'node:assert/strict';
 import { cutAtLevels } from './level-cuts.js';
 
-// Right triangle (0,0) (4,0) (0,4) with z = x: z 0, 4, 0.
-const xs = [0, 4, 0], ys = [0, 0, 4];
+// Right triangle (0,0) (4,0) (0,4) with z = x: z 0, 4, 0; vertex 3 at (4,4), z 4.
 const zOfXY = (x: number): number => x;
 
-function setup(): { cut: (p: number, q: number, l: number) => number; hasArea: (o: readonly number[]) => boolean; area: (o: readonly number[]) => number } {
+function setup(): { xs: number[]; ys: number[]; cut: (p: number, q: number, l: number) => number; hasArea: (o: readonly number[]) => boolean; area: (o: readonly number[]) => number } {
+  const xs = [0, 4, 0, 4], ys = [0, 0, 4, 4];
   const made = new Map<string, number>();
+  // As surfaces.ts does: one vertex per edge and level, where z = level along the edge.
   const cut = (p: number, q: number, l: number): number => {
-    const key = `${Math.min(p, q)}:${Math.max(p, q)}:${l}`;
+    const [u, w] = p < q ? [p, q] : [q, p];
+    const key = `${u}:${w}:${l}`;
     if (!made.has(key)) {
-      const [u, w] = p < q ? [p, q] : [q, p];
       const t = (l - zOfXY(xs[u]!)) / (zOfXY(xs[w]!) - zOfXY(xs[u]!));
       xs.push(xs[u]! + t * (xs[w]! - xs[u]!));
       ys.push(ys[u]! + t * (ys[w]! - ys[u]!));
@@ -27,11 +28,11 @@ function setup(): { cut: (p: number, q: number, l: number) => number; hasArea: (
     for (let i = 0; i < o.length; i++) twice += xs[o[i]!]! * ys[o[(i + 1) % o.length]!]! - xs[o[(i + 1) % o.length]!]! * ys[o[i]!]!;
     return twice / 2;
   };
-  return { cut, hasArea: (o) => area(o) !== 0, area };
+  return { xs, ys, cut, hasArea: (o) => area(o) !== 0, area };
 }
 
 test('parts between levels cover the triangle, each with the id group of the levels below it', () => {
-  const { cut, hasArea, area } = setup();
+  const { xs, cut, hasArea, area } = setup();
   const { parts, below } = cutAtLevels([0, 1, 2], [0, 4, 0], [1, 3], cut, hasArea);
   assert.deepEqual(parts.map((p) => p.group), [0, 1, 2]);
   // Area with x <= t in this triangle: 8 - (4 - t)^2 / 2.
@@ -62,12 +63,16 @@ test('a triangle off the levels is one part; touching a level from above counts 
   assert.deepEqual(under.below, [[0, 1, 2]]);
 });
 
-test('two triangles sharing an edge get the same cut vertex on it', () => {
-  const { cut, hasArea } = setup();
-  xs.push(4); ys.push(4); // vertex 3: (4,4), z 4
+test('two triangles sharing an edge are cut at the same point of it, where z is the level', () => {
+  const { xs, ys, cut, hasArea } = setup();
+  // Triangles 0 1 2 and 1 3 2 share edge 1-2, from (4,0) z 4 to (0,4) z 0: z 2 at (2,2).
   const a = cutAtLevels([0, 1, 2], [0, 4, 0], [2], cut, hasArea);
   const b = cutAtLevels([1, 3, 2], [4, 4, 0], [2], cut, hasArea);
-  const onEdge = (r: typeof a): number[] => r.parts.flatMap((p) => p.verts).filter((v) => v > 3);
-  const shared = onEdge(a).filter((v) => onEdge(b).includes(v));
-  assert.equal(new Set(shared).size, 1, 'edge 1-2 is cut once, at (2,2)');
+  const onEdge = (r: typeof a): number[] => [...new Set(r.parts.flatMap((p) => p.verts).filter((v) => v > 3 && Math.abs(xs[v]! + ys[v]! - 4) < 1e-12))];
+  assert.deepEqual(onEdge(a), onEdge(b));
+  assert.equal(onEdge(a).length, 1);
+  const v = onEdge(a)[0]!;
+  assert.deepEqual([xs[v], ys[v]], [2, 2]);
+  // In the second triangle z is not x: its parts still meet the level at their cut vertices.
+  for (const p of b.parts) p.verts.forEach((w, i) => { if (w > 3) assert.equal(p.zs[i], 2); });
 });

@@ -236,13 +236,16 @@ export function areaShare(tris: ArrayLike<number>, xs: Float64Array, ys: Float64
     rho += density[i]!;
     ys2[i] = acc;
   }
+  // Area at distance 0 (a triangle with every corner on the sources) is passed at the start:
+  // the share starts at 0 there, so that the front still starts at the earliest source's time.
   const k = EVEN_DISTANCE_SHARE;
-  for (let i = 0; i < n; i++) ys2[i] = (1 - k) * (total > 0 ? ys2[i]! / acc : knots[i]!) + k * knots[i]!;
+  const at0 = ys2[0]!;
+  for (let i = 0; i < n; i++) ys2[i] = (1 - k) * (total > 0 && acc > at0 ? (ys2[i]! - at0) / (acc - at0) : knots[i]!) + k * knots[i]!;
   const xs2 = Float64Array.from(knots);
   return { at: (x) => interpolate(xs2, ys2, x), inverse: (y) => interpolate(ys2, xs2, y) };
 }
 
-/** Piecewise-linear through (xs[i], ys[i]) (xs increasing), extended by the end segments' slope... or 1 beyond them. */
+/** Piecewise-linear through (xk[i], yk[i]) (xk increasing), extended with slope 1 beyond the ends. */
 function interpolate(xk: Float64Array, yk: Float64Array, x: number): number {
   const n = xk.length;
   if (x <= xk[0]!) return yk[0]! + (x - xk[0]!);

@@ -415,8 +415,14 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       plain.push({ verts: edge.verts, forward: l === f });
     }
     if (notches.has(f)) {
+      // Counted only if it holds: a failed try is not a failed triangulation.
+      const trial: TriangulateStats = { earcut: 0, fallback: 0, failed: 0 };
       try {
-        return triangulateFace(fe, xs, ys, tris, stats);
+        const n = triangulateFace(fe, xs, ys, tris, trial);
+        stats.earcut += trial.earcut;
+        stats.fallback += trial.fallback;
+        stats.failed += trial.failed;
+        return n;
       } catch {
         // A notch no longer fits (a boundary of the face has since been simplified across it):
         // the face's area as the tGAP has it, the sliver's lower face then named approximately.
@@ -615,7 +621,15 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
    * is still there: a re-emit of the face draws them again under its new id, as it draws the
    * rest of its area (the tGAP's area no longer holds them).
    */
-  const slivers = new Map<number, { tri: number[]; face: number }[]>();
+  const slivers = new Map<number, { tri: number[]; v: number; face: number }[]>();
+  /** Whether a and b follow each other on one of face f's edges (a sliver's chord is still its boundary). */
+  const onBoundary = (f: number, a: number, b: number): boolean => {
+    for (const e of faceEdges.get(f) ?? []) {
+      const verts = edges[e]!.verts;
+      for (let i = 0; i + 1 < verts.length; i++) if (edgeKey(verts[i]!, verts[i + 1]!) === edgeKey(a, b)) return true;
+    }
+    return false;
+  };
   const transitions: MergeTransition[] = [];
   const splits: SplitTransition[] = [];
   const origins: SurfaceOrigin[] = [];
@@ -832,15 +846,21 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         removals.push({ tri: o > 0 ? [a, b, v] : [a, v, b], v, upper, lower, edge: e, side: o > 0 ? Side.Left : Side.Right, phase: edge.removedPhase[r]! });
       }
     }
-    const heights = byFace ? removalHeights(Float64Array.from(removals.flatMap(({ tri }) => tri.flatMap((w) => [xs[w]!, ys[w]!]))), removals.map((r) => r.phase)) : undefined;
+    // Left out (givesBack): they are not drawn, so they take no share of the step's time either.
+    const skip = removals.map(({ upper, lower, phase }) => byFace !== undefined && givesBack(upper, lower, phaseZ(k, phase)));
+    const drawn = removals.filter((_, r) => !skip[r]);
+    const drawnHeights = byFace ? removalHeights(Float64Array.from(drawn.flatMap(({ tri }) => tri.flatMap((w) => [xs[w]!, ys[w]!]))), drawn.map((r) => r.phase)) : undefined;
+    const heights: number[] = [];
+    let nd = 0;
+    for (let r = 0; r < removals.length; r++) heights.push(skip[r] ? 0 : drawnHeights?.[nd++] ?? 0);
     let lastDrawn: Removal | undefined;
     removals.forEach(({ tri, v, upper, lower, edge, side, phase }, r) => {
       const z = phaseZ(k, phase);
-      if (byFace && givesBack(upper, lower, z)) {
+      if (skip[r]) {
         stats.skippedRemovals++;
         let l = slivers.get(lower);
         if (!l) slivers.set(lower, (l = []));
-        l.push({ tri, face: upper });
+        l.push({ tri, v, face: upper });
         let m = notches.get(upper);
         if (!m) notches.set(upper, (m = new Map()));
         const [a, b] = tri.filter((w) => w !== v);
@@ -850,7 +870,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       let zCorner = z, zChord = z;
       if (byFace) {
         zCorner = smoothRemovalStart(byFace, tri, upper, lower, edge, side, z);
-        zChord = zCorner + (z - zCorner) / (heights![r]! + 1);
+        zChord = zCorner + (z - zCorner) / (heights[r]! + 1);
       }
       if (zCorner < zChord) {
         out.addTilted(tri[0]!, tri[1]!, tri[2]!, tri[0] === v ? zCorner : zChord, tri[1] === v ? zCorner : zChord, tri[2] === v ? zCorner : zChord, upper, lower, `s${out.count}`);
@@ -869,8 +889,12 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     for (const [f, g] of reemits) {
       const first = out.count;
       stats.reemit += emitFace(g, k, phaseZ(k, REEMIT_PHASE), g, f);
-      // Those of its slivers whose tGAP face is still there move on with it.
-      const kept = (slivers.get(f) ?? []).filter((sl) => faces[sl.face]!.stepHigh > k);
+      // Those of its slivers whose tGAP face is still there, the chord still its boundary (no later
+      // removal has handed part of the sliver on to a third face), move on with it.
+      const kept = (slivers.get(f) ?? []).filter((sl) => {
+        const [a, b] = sl.tri.filter((w) => w !== sl.v);
+        return faces[sl.face]!.stepHigh > k && onBoundary(sl.face, a!, b!);
+      });
       slivers.delete(f);
       if (kept.length > 0) slivers.set(g, kept);
       for (const { tri } of kept) out.add(tri[0]!, tri[1]!, tri[2]!, phaseZ(k, REEMIT_PHASE), g, f);

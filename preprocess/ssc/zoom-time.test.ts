@@ -26,7 +26,8 @@ test('z(u) inverts u(z), also where the number of faces alive stays the same', (
 });
 
 test('a frame of a geometric zoom spans more z at the start of a transition than at its end', () => {
-  // Two equal steps of u: the first spans four times the z of the second (faces fall 4x per x2).
+  // Two equal steps of u (half a zoom level each): the first spans twice the z of the second
+  // (faces fall 2x per half level, so the second half of the level has half as many to lose).
   const z0 = 0, zMid = time.z(time.u(0) + Math.log(2) / 2), z1 = time.z(time.u(0) + Math.log(2));
   assert.ok(Math.abs((zMid - z0) / (z1 - zMid) - 2) < 1e-9, `${zMid - z0} vs ${z1 - zMid}`);
 });
