@@ -5,6 +5,8 @@
 // transition could start no earlier than the re-emit and was squeezed into the steps between.
 // On bgt_otterlo_1800m such transitions held three quarters of the merged area. When the face
 // ends within a transition's reach of its re-emit, it keeps its old id until it ends instead.
+// So it does when a merge into the new id reaches back across the re-emit: the merge's ramp
+// would have to be cut at the re-emit's z and the part taken by then drawn again.
 import { EventKind, faceEndZ, faceStartZ, phaseZ, REEMIT_PHASE, type Tgap, type TgapFace } from '../../format/tgap-model.js';
 
 /**

@@ -367,10 +367,8 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   /** The face each re-emitted face replaced (smooth merges run on through a winner's re-emits). */
   const replaced = opts.smooth ? replacedFaces(faces) : undefined;
   const reachBack = (z: number): number => reachBackZ(scaleInfo, z);
-  /** Fronts advance evenly in zoom, not in z (zoom-time.ts). */
+  /** Fronts advance evenly in zoom, not in z (zoom-time.ts), and by the share of the area passed (evenArea). */
   const time = new ZoomTime(scaleInfo);
-  /** and by the share of the loser's area they have passed (smooth-merge.ts areaShare). */
-  const evenArea = true;
   const byFace = opts.smooth ? new SurfacesByFace(out) : undefined;
   /** Surfaces from `from` up to the last one added lie in `face`'s area (smooth cubes only). */
   const lieIn = (face: number, from: number): void => {
@@ -522,7 +520,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     stats.chordSplits += (own.length - area.length) / 3;
     const pairs = byFace.overlapping(loser, own, zFoot, SURFACE_GAP, reachBack(zMerge));
     const { members, levels } = winner;
-    const solve = (waits: ReadonlyMap<number, number>): Map<number, number> | null => smoothMergeZ(own, out.xs, out.ys, shared, { zFoot, zMerge, lowest: waits, time, evenArea });
+    const solve = (waits: ReadonlyMap<number, number>): Map<number, number> | null => smoothMergeZ(own, out.xs, out.ys, shared, { zFoot, zMerge, lowest: waits, time, evenArea: true });
     const z = exactRamp(own, pairs, zMerge, solve) ?? solve(byFace.waitsAbove(own, pairs, SURFACE_GAP));
     const zOf = (v: number): number => z?.get(v) ?? zMerge;
     let zLow = zMerge;
