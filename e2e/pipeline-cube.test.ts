@@ -323,7 +323,7 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
     // The tGAP sends some areas back to a class (a face merged into one of another class that
     // soon merges into a face of the first); the smooth cube holds those merges back
     // (surfaces.ts, MAX_HOLD_RATIO; on bgt_otterlo_1800m 15,237 px -> 1,931 at 1280x720).
-    // Measured here: 4 px of the 230,400, as many as the classic cube (one road corner the tGAP
+    // Measured here: 6 px of the 230,400, the classic cube 4 (both show a road corner the tGAP
     // itself hands back and forth). Before the fronts were paced in zoom time and slivers handed
     // back were left out (surfaces.ts givesBack), 31 px.
     const domain = smooth(view, 0).ids.reduce((n, f) => n + (f > 0 ? 1 : 0), 0);
