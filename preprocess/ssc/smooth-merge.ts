@@ -4,6 +4,8 @@
 // where an older surface still lies in the loser's area the front waits above it. The winner
 // thus takes the loser's area from that boundary outwards, and what it takes stays attached.
 import FlatQueue from 'flatqueue';
+import { orient } from '../geom/predicates.js';
+import { knotBefore } from './knot-before.js';
 
 /** The vertices of a triangulation and their neighbours along its edges. */
 class MeshGraph {
@@ -216,7 +218,7 @@ export function areaShare(tris: ArrayLike<number>, xs: Float64Array, ys: Float64
   let total = 0;
   for (let i = 0; i + 2 < tris.length; i += 3) {
     const a = tris[i]!, b = tris[i + 1]!, c = tris[i + 2]!;
-    const area = Math.abs((xs[b]! - xs[a]!) * (ys[c]! - ys[a]!) - (xs[c]! - xs[a]!) * (ys[b]! - ys[a]!)) / 2;
+    const area = Math.abs(orient(xs[a]!, ys[a]!, xs[b]!, ys[b]!, xs[c]!, ys[c]!)) / 2;
     const ds = [a, b, c].map((v) => Math.min(1, (d.get(v) ?? dMax) / dMax));
     const lo = Math.min(...ds), hi = Math.max(...ds);
     total += area;
@@ -250,12 +252,7 @@ function interpolate(xk: Float64Array, yk: Float64Array, x: number): number {
   const n = xk.length;
   if (x <= xk[0]!) return yk[0]! + (x - xk[0]!);
   if (x >= xk[n - 1]!) return yk[n - 1]! + (x - xk[n - 1]!);
-  let lo = 0, hi = n - 1;
-  while (hi - lo > 1) {
-    const mid = (lo + hi) >> 1;
-    if (xk[mid]! <= x) lo = mid;
-    else hi = mid;
-  }
+  const lo = knotBefore(xk, x), hi = lo + 1;
   const t = (x - xk[lo]!) / (xk[hi]! - xk[lo]!);
   return yk[lo]! + t * (yk[hi]! - yk[lo]!);
 }

@@ -4,6 +4,7 @@
 // level long, a frame at its start spans 4x the z of one at its end. A front that advances
 // evenly in u, not in z, changes about as much of the map in each frame of such a zoom.
 import type { ScaleInfo } from '../../format/scale.js';
+import { knotBefore } from './knot-before.js';
 
 export class ZoomTime {
   /** Knots: z, faces alive, and u at the knot. */
@@ -52,15 +53,4 @@ export class ZoomTime {
     const f = f0 * Math.exp(-2 * (u - us[lo]!));
     return zs[lo]! + ((f0 - f) / (f0 - f1)) * (zs[hi]! - zs[lo]!);
   }
-}
-
-/** The last knot at or before x, strictly inside the table (knots[0] <= x < knots[n - 1]). */
-function knotBefore(knots: Float64Array, x: number): number {
-  let lo = 0, hi = knots.length - 1;
-  while (hi - lo > 1) {
-    const mid = (lo + hi) >> 1;
-    if (knots[mid]! <= x) lo = mid;
-    else hi = mid;
-  }
-  return lo;
 }
