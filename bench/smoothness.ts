@@ -15,7 +15,7 @@ import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { parseArgs } from 'node:util';
 import { readTgap } from '../format/tgap.js';
-import { scaleInfoOf, type Tgap } from '../format/tgap-model.js';
+import { scaleInfoOf } from '../format/tgap-model.js';
 import { fitView, type View } from '../preprocess/map/rasterize.js';
 import { CHANGE_KINDS, horizontalChanges } from '../preprocess/ssc/horizontal-changes.js';
 import { CubeReader } from '../preprocess/ssc/read-cube.js';
@@ -132,9 +132,9 @@ const lengthsRow = (d: Dataset, cube: string, ts: Transition[], info: ReturnType
   const t = transitionLengths(scaleRatios(ts, info));
   return [d.name, cube, String(t.events), t.median.toFixed(5), t.p10.toFixed(5), t.framesAtMedian.toPrecision(3)];
 };
-/** The horizontal class changes of surfaces the build makes from `tgap`. */
-const horizontalRow = (d: Dataset, cube: string, tgap: Tgap, built: ReturnType<typeof buildSurfaces>): string[] => {
-  const h = horizontalChanges(tgap, built.surfaces, built.transitions);
+/** The horizontal class changes of the surfaces of a build. */
+const horizontalRow = (d: Dataset, cube: string, built: ReturnType<typeof buildSurfaces>): string[] => {
+  const h = horizontalChanges(built.surfaces, built.origins, (f) => built.tgap.faces[f]!.classIndex);
   return [d.name, cube, String(h.total), ...CHANGE_KINDS.map((k) => String(h.byKind[k])), ...CHANGE_KINDS.map((k) => h.areaByKind[k].toExponential(2))];
 };
 try {
@@ -145,7 +145,7 @@ try {
     if (g.code !== 0) throw new Error(`ssc generalize ${d.name} failed (exit ${g.code}): ${g.stderr}`);
     const tgap = await readTgap(tgapFile);
     transitionRows.push(lengthsRow(d, 'classic', classicTransitions(tgap.events), scaleInfoOf(tgap)));
-    horizontalRows.push(horizontalRow(d, 'classic', tgap, buildSurfaces(tgap, { smooth: false })));
+    horizontalRows.push(horizontalRow(d, 'classic', buildSurfaces(tgap, { smooth: false })));
 
     const classicDir = path.join(dir, `${d.name}-classic`);
     const classicCube = buildWith(d, classicDir, '--classic', 'classic') ?? buildBenchCube(d, classicDir, { variant: 'classic', precompress: true });
@@ -168,7 +168,7 @@ try {
       // The smooth build's merge transitions, from the same tGAP as the cube.
       const built = buildSurfaces(tgap, { smooth: true });
       transitionRows.push(lengthsRow(d, 'smooth', smoothTransitions(built.tgap.events, built.transitions, built.splits), scaleInfoOf(tgap)));
-      horizontalRows.push(horizontalRow(d, 'smooth', built.tgap, built));
+      horizontalRows.push(horizontalRow(d, 'smooth', built));
       rmSync(smoothCube.dir, { recursive: true, force: true });
     }
   }
@@ -182,6 +182,6 @@ printTable(rows);
 console.log('flicker px: pixels that show a class, then another, then the first again, each time 1 px or more from a face boundary (target 0; the tGAP has some of its own); face back px: the same for a face, which only the cube can cause');
 console.log('\ntransition lengths: S(end)/S(start) per merge or split; a classic event lasts from phase 0 to the last removal phase of its step, a smooth tilted merge from its transition\'s start to the merge');
 printTable(transitionRows);
-console.log('\nno sudden changes: horizontal triangles above the floor whose upper and lower faces differ in class (target 0), by the kind of event (mergeFlat: flat triangles inside tilted merges); area in ground units squared');
+console.log('\nno sudden changes: horizontal triangles above the floor whose upper and lower faces differ in class (target 0), by the kind of event (mergeFlat, splitFlat: flat triangles inside tilted merges and split parts); area in ground units squared');
 printTable(horizontalRows);
 console.log(`\n${((performance.now() - t0) / 1000).toFixed(0)} s in all`);

@@ -27,3 +27,14 @@ test('AreaIndex: inside, on an edge, in the box but outside the triangles, outsi
 test('AreaIndex: no triangles hold nothing', () => {
   assert.equal(new AreaIndex([], xs, ys).contains(0, 0), false);
 });
+
+test('AreaIndex: an area grown by more triangles holds their points too, and its box grows with them', () => {
+  const area = new AreaIndex([0, 1, 3, 1, 4, 3], xs, ys);
+  assert.equal(area.contains(1.2, 0.5), false);
+  assert.equal(area.contains(0.2, 1.5), false);
+  area.add([1, 2, 4, 3, 4, 5], xs, ys);
+  assert.equal(area.contains(1.2, 0.5), true, 'the triangle (1,0) (2,0) (1,1)');
+  assert.equal(area.contains(0.2, 1.5), true, 'the triangle (0,1) (1,1) (0,2), above the first box');
+  assert.equal(area.contains(0.25, 0.25), true, 'the square still');
+  assert.equal(area.contains(1.8, 0.8), false);
+});

@@ -4,16 +4,25 @@ import { orient } from '../geom/predicates.js';
 
 export class AreaIndex {
   /** x0 y0 x1 y1 x2 y2 per triangle. */
-  private readonly corners: Float64Array;
+  private corners: Float64Array;
   private readonly box: [number, number, number, number] = [Infinity, Infinity, -Infinity, -Infinity];
 
   /** `tris`: vertex ids, 3 per triangle, counterclockwise, into xs and ys. */
   constructor(tris: readonly number[], xs: ArrayLike<number>, ys: ArrayLike<number>) {
-    this.corners = new Float64Array(2 * tris.length);
+    this.corners = new Float64Array(0);
+    this.add(tris, xs, ys);
+  }
+
+  /** The area grows by triangles `tris` (a part of a split given to a face held back). */
+  add(tris: readonly number[], xs: ArrayLike<number>, ys: ArrayLike<number>): void {
+    const from = this.corners.length;
+    const corners = new Float64Array(from + 2 * tris.length);
+    corners.set(this.corners);
+    this.corners = corners;
     tris.forEach((v, i) => {
       const x = xs[v]!, y = ys[v]!;
-      this.corners[2 * i] = x;
-      this.corners[2 * i + 1] = y;
+      corners[from + 2 * i] = x;
+      corners[from + 2 * i + 1] = y;
       this.box[0] = Math.min(this.box[0], x);
       this.box[1] = Math.min(this.box[1], y);
       this.box[2] = Math.max(this.box[2], x);

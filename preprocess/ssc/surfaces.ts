@@ -153,6 +153,10 @@ export interface SurfaceStats extends TriangulateStats {
   skippedRemovals: number;
   /** Faces triangulated without their slivers' notches, which no longer fit. */
   notchFallbacks: number;
+  /** Parts of splits given to a face held back in their receiving face, which shows beside them. */
+  splitPartsToHeld: number;
+  /** Removals' triangles given likewise to a face held back in their upper face. */
+  removalsToHeld: number;
 }
 
 /** What made a run of surface triangles (bench/explain-frames.ts attributes a frame's changes to it). */
@@ -318,7 +322,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   const steps = t.meta.steps;
   const zTop = steps + 1;
   const out = new Surfaces(t.xs, t.ys);
-  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0, heldMerges: 0, skippedRemovals: 0, notchFallbacks: 0 };
+  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0, heldMerges: 0, skippedRemovals: 0, notchFallbacks: 0, splitPartsToHeld: 0, removalsToHeld: 0 };
   const { xs, ys, faces, edges } = t;
   // Edges by the state they start and end in.
   const born: number[][] = Array.from({ length: steps + 2 }, () => []);
@@ -344,12 +348,18 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   // the winner's side must be the winner's, the neighbour's transition over, so that what the
   // winner gains stays attached to it).
   const sides = new EdgeSideTimes(edges);
-  /** f's side of its edges changed at z (f merged, split or was replaced; `at` resolves an edge's faces as f had them). */
-  const relabel = (f: number, z: number, at: (face: number) => number): void => {
+  /**
+   * f's side of its edges changed at z (f merged, split or was replaced; `at` resolves an edge's
+   * faces as f had them); with `hold`, f still shows there until z (its merge held back).
+   */
+  const relabel = (f: number, z: number, at: (face: number) => number, hold = false): void => {
     for (const e of faceEdges.get(f) ?? []) {
       const edge = edges[e]!;
-      if (at(edge.left) === f) sides.relabel(e, Side.Left, z);
-      if (at(edge.right) === f) sides.relabel(e, Side.Right, z);
+      for (const side of [Side.Left, Side.Right]) {
+        if (at(side === Side.Left ? edge.left : edge.right) !== f) continue;
+        if (hold) sides.hold(e, side, z);
+        else sides.relabel(e, side, z);
+      }
     }
   };
   /** The loser's edges shared with the winner at state s. */
@@ -457,11 +467,14 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   /**
    * The ramp with waits only where needed: solved without, then each triangle whose plane comes
    * within `SURFACE_GAP` of an older surface where they overlap (planeDeficit, exact) has its
-   * corners held up by the shortfall, and the front is run again. null when that does not
+   * corners held up by the shortfall, and the front is run again; a triangle whose corner that
+   * would lift past zMerge has its corners held above every older surface around them instead
+   * (`aboveAll`: those waits, flat only there, not over the whole ramp). null when that does not
    * settle within EXACT_ROUNDS (or the ramp cannot tilt).
    */
-  const exactRamp = (own: number[], pairs: readonly [number, number][], zMerge: number, solve: (waits: ReadonlyMap<number, number>) => Map<number, number> | null): Map<number, number> | null => {
+  const exactRamp = (own: number[], pairs: readonly [number, number][], zMerge: number, solve: (waits: ReadonlyMap<number, number>) => Map<number, number> | null, aboveAll: () => ReadonlyMap<number, number>): Map<number, number> | null => {
     const waits = new Map<number, number>();
+    let above: ReadonlyMap<number, number> | undefined;
     const a = new Float64Array(6), b = new Float64Array(6), za = new Float64Array(3), zb = new Float64Array(3);
     for (let round = 0; round < EXACT_ROUNDS; round++) {
       const z = solve(waits);
@@ -476,28 +489,38 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         const deficit = planeDeficit(a, za, b, zb, SURFACE_GAP);
         if (!(deficit > 0)) continue;
         short++;
-        // A margin on top, so that rounding does not leave it a hair short again.
-        for (let k = 0; k < 3; k++) waits.set(own[i + k]!, Math.max(waits.get(own[i + k]!) ?? -Infinity, za[k]! + deficit + SURFACE_GAP / 8));
+        // A margin on top, so that rounding does not leave it a hair short again. Where that
+        // would lift a corner past zMerge, the corners wait above everything older around them instead.
+        const lift = Math.max(za[0]!, za[1]!, za[2]!) + deficit + SURFACE_GAP / 8 > zMerge;
+        if (lift) above ??= aboveAll();
+        for (let k = 0; k < 3; k++) {
+          const w = own[i + k]!;
+          waits.set(w, Math.max(waits.get(w) ?? -Infinity, lift ? above!.get(w) ?? -Infinity : za[k]! + deficit + SURFACE_GAP / 8));
+        }
       }
       if (short === 0) return z;
     }
     return null;
   };
+  /** Which side of edge e face f has at state s. */
+  const sideOf = (e: number, f: number, s: number): Side => (resolveFace(faces, edges[e]!.left, s) === f ? Side.Left : Side.Right);
   /**
    * Part of the loser's area (`area`, triangles of state s) given to `into` at zMerge, tilted as
    * a smooth merge is (a front from their shared boundary); or flat at zMerge when it cannot
-   * tilt. Returns where its transition starts (zMerge: flat) and where its ramp's triangles end.
+   * tilt. Its upper face is the winner's id of the time (`winner`: into's, or a face held back in
+   * into that shows where the part lies; `holds` false then: a vertex may start once that face
+   * lies beside it). Returns where its transition starts (zMerge: flat) and where its ramp's
+   * triangles end.
    */
   const emitTilted = (
     byFace: SurfacesByFace, area: number[], loser: number, into: number, s: number, sharedWithInto: number[], zFoot: number, zMerge: number, key: string, kind: 'merge' | 'split',
-    winner: WinnerIds = { members: [into], levels: [] }, lowerOf: (a: number, b: number, c: number) => number = () => loser,
+    winner: WinnerIds = { members: [into], levels: [] }, lowerOf: (a: number, b: number, c: number) => number = () => loser, holds = true,
   ): Ramp => {
     // A vertex of the shared boundary may start once the winner lies beside it.
     const shared = new Map<number, number>();
     const segments = new Set<string>();
     for (const e of sharedWithInto) {
-      const intoSide = resolveFace(faces, edges[e]!.left, s) === into ? Side.Left : Side.Right;
-      const times = sides.vertexTimes(e, intoSide);
+      const times = sides.vertexTimes(e, sideOf(e, into, s), holds);
       const verts = chainFor(e, loser);
       /** The time of the nearest vertex of the edge itself from i, going by `step`. */
       const near = (i: number, step: number): number => {
@@ -520,8 +543,10 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     stats.chordSplits += (own.length - area.length) / 3;
     const pairs = byFace.overlapping(loser, own, zFoot, SURFACE_GAP, reachBack(zMerge));
     const { members, levels } = winner;
+    const upper = members[members.length - 1]!;
     const solve = (waits: ReadonlyMap<number, number>): Map<number, number> | null => smoothMergeZ(own, out.xs, out.ys, shared, { zFoot, zMerge, lowest: waits, time, evenArea: true });
-    const z = exactRamp(own, pairs, zMerge, solve) ?? solve(byFace.waitsAbove(own, pairs, SURFACE_GAP));
+    const aboveAll = (): ReadonlyMap<number, number> => byFace.waitsAbove(own, pairs, SURFACE_GAP);
+    const z = exactRamp(own, pairs, zMerge, solve, aboveAll) ?? solve(aboveAll());
     const zOf = (v: number): number => z?.get(v) ?? zMerge;
     let zLow = zMerge;
     // Where an edge crosses one of the winner's re-emit levels: one vertex for both triangles beside it.
@@ -551,13 +576,13 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       const a = own[i]!, b = own[i + 1]!, c = own[i + 2]!;
       const lower = lowerOf(a, b, c);
       if (!z) {
-        out.add(a, b, c, zMerge, into, lower);
+        out.add(a, b, c, zMerge, upper, lower);
         continue;
       }
       const zs = [zOf(a), zOf(b), zOf(c)];
       zLow = Math.min(zLow, ...zs);
       if (levels.length === 0) {
-        out.addTilted(a, b, c, zs[0]!, zs[1]!, zs[2]!, into, lower, `${key}${lower === loser ? '' : `/${lower}`}`);
+        out.addTilted(a, b, c, zs[0]!, zs[1]!, zs[2]!, upper, lower, `${key}${lower === loser ? '' : `/${lower}`}`);
         continue;
       }
       // Each part between the winner's re-emits shows the id the winner has there (a piece has one upper and one lower face).
@@ -589,13 +614,13 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
    * corner v (the receding vertex) up to its chord, at the removal's z or before it when later
    * removals of the step overlap it (removal-heights.ts), so the upper face takes
    * it from the corner, beside which it lies. No further back than reachBackZ, nor before
-   * the upper face was created or lay beside the corner (its side of the parent chain), and
-   * above every older surface in the losing face's area.
+   * the upper face was created or lay beside the corner (its side of the parent chain; with
+   * `holds` false, a face held back there), and above every older surface in the losing face's area.
    */
-  const smoothRemovalStart = (byFace: SurfacesByFace, tri: number[], upper: number, lower: number, edge: number, side: Side, z: number): number => {
+  const smoothRemovalStart = (byFace: SurfacesByFace, tri: number[], upper: number, lower: number, edge: number, side: Side, z: number, holds: boolean): number => {
     const zCap = reachBack(z);
     let start = Math.max(SURFACE_GAP, zCap, faceStartZ(faces[upper]!) + SURFACE_GAP);
-    const times = sides.parentTimes(edge, side);
+    const times = sides.parentTimes(edge, side, holds);
     for (const w of tri) start = Math.max(start, (times.get(w) ?? z) + SURFACE_GAP);
     // Above the older surfaces it overlaps in the losing face's area.
     for (const w of byFace.lowestZ(lower, tri, start, SURFACE_GAP, zCap).values()) start = Math.max(start, w);
@@ -685,6 +710,42 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       return inLoser.find((h) => h.area.contains(x, y))?.face ?? loser;
     };
   };
+  /**
+   * The face held back in `into` that shows beside segments p-q (vertex pairs) on their left
+   * (`toward` 1) or right (-1), if one face does: what `into` gains there goes to that face,
+   * whose class the hold keeps, and not to a face not yet shown beside it. Found by the point a
+   * millionth of each segment's length off its middle.
+   */
+  const heldBeside = (into: number, segments: readonly number[], toward: 1 | -1): Held | undefined => {
+    const inInto = held.get(into);
+    if (!inInto) return undefined;
+    const found = new Set<Held>();
+    for (let i = 0; i + 1 < segments.length; i += 2) {
+      const p = segments[i]!, q = segments[i + 1]!;
+      const dx = xs[q]! - xs[p]!, dy = ys[q]! - ys[p]!;
+      // Left of p -> q is (-dy, dx).
+      const x = (xs[p]! + xs[q]!) / 2 - toward * dy * 1e-6, y = (ys[p]! + ys[q]!) / 2 + toward * dx * 1e-6;
+      const h = inInto.find((c) => c.area.contains(x, y));
+      if (h) found.add(h);
+    }
+    return found.size === 1 ? [...found][0] : undefined;
+  };
+  /**
+   * The face held back in `into` that shows along all of a split's part's boundary `shared`
+   * with `into` at zMerge (every vertex's face there held back until after it), if one does.
+   */
+  const heldAlong = (into: number, shared: readonly number[], s: number, zMerge: number): Held | undefined => {
+    if (!held.has(into) || shared.length === 0) return undefined;
+    const left: number[] = [], right: number[] = [];
+    for (const e of shared) {
+      const side = sideOf(e, into, s);
+      for (const z of sides.vertexTimes(e, side).values()) if (z < zMerge) return undefined;
+      const verts = edges[e]!.verts;
+      for (let i = 0; i + 1 < verts.length; i++) (side === Side.Left ? left : right).push(verts[i]!, verts[i + 1]!);
+    }
+    const l = left.length > 0 ? heldBeside(into, left, 1) : undefined, r = right.length > 0 ? heldBeside(into, right, -1) : undefined;
+    return (l && r && l !== r) || !(l ?? r) ? undefined : (l ?? r);
+  };
   /** The faces held back in the loser's area end with it at step k (into: the winner, -1 for a split), over its transition. */
   const carryOn = (loser: number, k: number, into: number, zStart: number, zEnd: number): number[] | undefined => {
     const inLoser = held.get(loser);
@@ -741,7 +802,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
           held.set(e.into, [...(held.get(e.into) ?? []), ...inLoser].sort((a, b) => a.transition.zMerge - b.transition.zMerge));
           byFace.hand(e.loser, e.into);
           // No merge into the winner may start from the loser's boundary: the loser is still there.
-          relabel(e.loser, zOn, before);
+          relabel(e.loser, zOn, before, true);
           handOn.push([e.loser, e.into]);
           continue;
         }
@@ -775,12 +836,20 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
           const lowerOf = lowerUnder(e.loser);
           for (const [into, area] of [...byInto].sort((p, q) => p[0] - q[0])) {
             const first = out.count;
-            const zFoot = Math.max(SURFACE_GAP, reachBack(z0), faceStartZ(faces[into]!) + SURFACE_GAP);
-            const part = emitTilted(byFace, area, e.loser, into, k - 1, sharedEdges(e.loser, into, k - 1), zFoot, z0, `p${ev}:${into}`, 'split', undefined, lowerOf);
+            const shared = sharedEdges(e.loser, into, k - 1);
+            // Beside a face held back in `into` only: the part goes to that face, and moves on with it.
+            const h = heldAlong(into, shared, k - 1, z0);
+            const shownAs = h?.face ?? into;
+            const zFoot = Math.max(SURFACE_GAP, reachBack(z0), faceStartZ(faces[shownAs]!) + SURFACE_GAP);
+            const part = emitTilted(byFace, area, e.loser, into, k - 1, shared, zFoot, z0, `p${ev}:${shownAs}`, 'split', { members: [shownAs], levels: [] }, lowerOf, !h);
             if (part.zStart < z0) stats.tiltedSplits++;
+            if (h) {
+              h.area.add(area, xs, ys);
+              stats.splitPartsToHeld++;
+            }
             zStart = Math.min(zStart, part.zStart);
             lieIn(into, first);
-            origin('split', k, e.loser, into, first);
+            origin('split', k, e.loser, shownAs, first);
           }
           const carries = carryOn(e.loser, k, -1, zStart, z0);
           splits.push({ step: k, loser: e.loser, zStart, zSplit: z0, ...(carries ? { carries } : {}) });
@@ -866,21 +935,29 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         return;
       }
       let zCorner = z, zChord = z;
+      // Beside a face held back in `upper` (across the triangle's two sides at v, outside it: on
+      // the right of its counterclockwise edges), the corner goes to that face.
+      const h = byFace && heldBeside(upper, [0, 1, 2].flatMap((j) => (tri[j] === v || tri[(j + 1) % 3] === v ? [tri[j]!, tri[(j + 1) % 3]!] : [])), -1);
+      const shownAs = h ? h.face : upper;
       if (byFace) {
-        zCorner = smoothRemovalStart(byFace, tri, upper, lower, edge, side, z);
+        zCorner = smoothRemovalStart(byFace, tri, shownAs, lower, edge, side, z, !h);
         zChord = zCorner + (z - zCorner) / (heights[r]! + 1);
       }
+      if (h) {
+        h.area.add(tri, xs, ys);
+        stats.removalsToHeld++;
+      }
       if (zCorner < zChord) {
-        out.addTilted(tri[0]!, tri[1]!, tri[2]!, tri[0] === v ? zCorner : zChord, tri[1] === v ? zCorner : zChord, tri[2] === v ? zCorner : zChord, upper, lower, `s${out.count}`);
+        out.addTilted(tri[0]!, tri[1]!, tri[2]!, tri[0] === v ? zCorner : zChord, tri[1] === v ? zCorner : zChord, tri[2] === v ? zCorner : zChord, shownAs, lower, `s${out.count}`);
         stats.tiltedRemovals++;
       } else {
-        out.add(tri[0]!, tri[1]!, tri[2]!, z, upper, lower);
+        out.add(tri[0]!, tri[1]!, tri[2]!, z, shownAs, lower);
       }
       lieIn(upper, out.count - 1);
       stats.simplify++;
       // One origin per edge version and side (its removals are consecutive).
-      if (lastDrawn?.edge === edge && lastDrawn.upper === upper) origins[origins.length - 1]!.end = out.count;
-      else origin('simplify', k, lower, upper, out.count - 1);
+      if (lastDrawn?.edge === edge && lastDrawn.upper === upper && origins[origins.length - 1]!.into === shownAs) origins[origins.length - 1]!.end = out.count;
+      else origin('simplify', k, lower, shownAs, out.count - 1);
       lastDrawn = removals[r];
     });
     // Replaced faces: their whole area, as it is at the end of the step, drawn again.
