@@ -440,6 +440,41 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     }
     return triangulateFace(plain, xs, ys, tris, stats);
   };
+  /**
+   * A split's part (`area`, triangles of the split face f) without f's slivers (givesBack): where
+   * one's chord is a side of the part's outline, the outline goes round its notch, and the part
+   * is triangulated again. The part as it is when it has no such side, or when that fails.
+   */
+  const withoutSlivers = (f: number, area: number[]): number[] => {
+    const m = notches.get(f);
+    if (!m) return area;
+    const directed = new Set<string>();
+    for (let i = 0; i < area.length; i += 3) for (let j = 0; j < 3; j++) directed.add(`${area[i + j]}>${area[i + (j + 1) % 3]}`);
+    const outline: FaceEdge[] = [];
+    let notched = false;
+    for (let i = 0; i < area.length; i += 3) {
+      for (let j = 0; j < 3; j++) {
+        const p = area[i + j]!, q = area[i + (j + 1) % 3]!;
+        if (directed.has(`${q}>${p}`)) continue; // inside the part
+        const v = m.get(edgeKey(p, q));
+        notched ||= v !== undefined;
+        outline.push({ verts: v === undefined ? [p, q] : [p, v, q], forward: true });
+      }
+    }
+    if (!notched) return area;
+    const trial: TriangulateStats = { earcut: 0, fallback: 0, failed: 0 };
+    const out: number[] = [];
+    try {
+      triangulateFace(outline, xs, ys, out, trial);
+      stats.earcut += trial.earcut;
+      stats.fallback += trial.fallback;
+      stats.failed += trial.failed;
+      return out;
+    } catch {
+      stats.notchFallbacks++;
+      return area;
+    }
+  };
   /** Triangulates face f's current area and adds it at z with the given upper and lower faces. */
   const emitFace = (f: number, s: number, z: number, upper: number, lower: number): number => {
     const n = triangulate(f, s);
@@ -628,16 +663,42 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   };
   /**
    * A removal that hands `lower`'s triangle to `upper` at z, when `upper` then merges into
-   * `lower` within reach of z: in a smooth cube the sliver stays `lower`'s, as `upper`'s ramp
-   * soon takes its area to `lower` anyway. Drawn, it would change twice (lower, upper, lower),
-   * and the ramp would have to wait above it where it starts, on the shared boundary.
+   * `lower` within reach of z, or is split with the sliver going to `lower`: in a smooth cube
+   * the sliver stays `lower`'s, as `upper`'s ramp soon takes its area to `lower` anyway. Drawn,
+   * it would change twice (lower, upper, lower), and the ramp would have to wait above it where
+   * it starts, on the shared boundary.
    */
-  const givesBack = (upper: number, lower: number, z: number): boolean => {
+  const givesBack = (upper: number, lower: number, z: number, tri: readonly number[], v: number): boolean => {
     const f = faces[upper]!;
-    if (!(f.endPhase === 0 && f.stepHigh <= steps && f.mergedInto > 0 && reachBack(phaseZ(f.stepHigh, 0)) <= z)) return false;
-    // Into `lower`, or `lower` under the id a re-emit gave it meanwhile.
-    for (let g: number | undefined = f.mergedInto; g !== undefined; g = replaced!.get(g)) if (g === lower) return true;
-    return false;
+    if (!(f.endPhase === 0 && f.stepHigh <= steps && reachBack(phaseZ(f.stepHigh, 0)) <= z)) return false;
+    // `lower`, or `lower` under the id a re-emit gave it meanwhile.
+    const isLower = (g0: number): boolean => {
+      for (let g: number | undefined = g0; g !== undefined; g = replaced!.get(g)) if (g === lower) return true;
+      return false;
+    };
+    if (f.mergedInto > 0) return isLower(f.mergedInto);
+    // A split: the sliver (its centre, the corner and the middles of its sides at v) lies in
+    // the split's triangles that go to `lower`, so that its part can leave the sliver out.
+    const split = splitOf.get(upper);
+    if (!split) return false;
+    const [a, b] = tri.filter((w) => w !== v) as [number, number];
+    const probes = [
+      (xs[a]! + xs[b]! + xs[v]!) / 3, (ys[a]! + ys[b]! + ys[v]!) / 3, xs[v]!, ys[v]!,
+      (xs[a]! + xs[v]!) / 2, (ys[a]! + ys[v]!) / 2, (xs[b]! + xs[v]!) / 2, (ys[b]! + ys[v]!) / 2,
+    ];
+    const tv = split.tris!, tf = split.triFaces!;
+    for (let p = 0; p < probes.length; p += 2) {
+      const x = probes[p]!, y = probes[p + 1]!;
+      let inLower = false, inOther = false;
+      for (let i = 0; i < tf.length; i++) {
+        const [p0, p1, p2] = [tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!];
+        if (orient(xs[p0]!, ys[p0]!, xs[p1]!, ys[p1]!, x, y) < 0 || orient(xs[p1]!, ys[p1]!, xs[p2]!, ys[p2]!, x, y) < 0 || orient(xs[p2]!, ys[p2]!, xs[p0]!, ys[p0]!, x, y) < 0) continue;
+        if (isLower(tf[i]!)) inLower = true;
+        else inOther = true;
+      }
+      if (!inLower || inOther) return false;
+    }
+    return true;
   };
   /**
    * Per face, the slivers left its own (givesBack) while the face that had them in the tGAP
@@ -841,7 +902,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
             const h = heldAlong(into, shared, k - 1, z0);
             const shownAs = h?.face ?? into;
             const zFoot = Math.max(SURFACE_GAP, reachBack(z0), faceStartZ(faces[shownAs]!) + SURFACE_GAP);
-            const part = emitTilted(byFace, area, e.loser, into, k - 1, shared, zFoot, z0, `p${ev}:${shownAs}`, 'split', { members: [shownAs], levels: [] }, lowerOf, !h);
+            const part = emitTilted(byFace, withoutSlivers(e.loser, area), e.loser, into, k - 1, shared, zFoot, z0, `p${ev}:${shownAs}`, 'split', { members: [shownAs], levels: [] }, lowerOf, !h);
             if (part.zStart < z0) stats.tiltedSplits++;
             if (h) {
               h.area.add(area, xs, ys);
@@ -914,7 +975,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       }
     }
     // Left out (givesBack): they are not drawn, so they take no share of the step's time either.
-    const skip = removals.map(({ upper, lower, phase }) => byFace !== undefined && givesBack(upper, lower, phaseZ(k, phase)));
+    const skip = removals.map(({ upper, lower, phase, tri, v }) => byFace !== undefined && givesBack(upper, lower, phaseZ(k, phase), tri, v));
     const drawn = removals.filter((_, r) => !skip[r]);
     const drawnHeights = byFace ? removalHeights(Float64Array.from(drawn.flatMap(({ tri }) => tri.flatMap((w) => [xs[w]!, ys[w]!]))), drawn.map((r) => r.phase)) : undefined;
     const heights: number[] = [];
