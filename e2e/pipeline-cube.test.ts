@@ -392,8 +392,10 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
       // and re-emits):
       // independent events overlap, so the winner may pass on what it took before the merge,
       // and the loser may meanwhile still absorb a face or lose a corner to a third face.
-      const after = winnerIds(replaced, m.into);
-      for (let f = faces[m.into]!.mergedInto; f > 0 && !after.has(f); f = faces[f]!.mergedInto) after.add(f);
+      // A loser given to a face held back in the winner (shownAs) is taken by that face.
+      const taker = m.shownAs ?? m.into;
+      const after = winnerIds(replaced, taker);
+      for (let f = faces[taker]!.mergedInto; f > 0 && !after.has(f); f = faces[f]!.mergedInto) after.add(f);
       // Where the winner still lies at the start, the tGAP gave the loser a corner of it by
       // simplification before the merge (W, L, W again in the classic cube too): not the merge's.
       const whole = footprint.length;

@@ -111,7 +111,7 @@ test('a flat triangle inside a tilted part of a split counts as splitFlat; a par
   near(h.areaByKind.split, sum, 'the part\'s area');
 });
 
-test('bgt_otterlo_400m: the smooth cube changes class flat over at most 0.5% of the classic cube\'s area', async (t) => {
+test('bgt_otterlo_400m: nothing in the smooth cube changes class flat', async (t) => {
   const { tgap } = await generalizedDataset(tempDir(t), 'bgt_otterlo_400m.geojson', 'bgt.json');
   const sum = (h: HorizontalChanges): number => CHANGE_KINDS.reduce((a, k) => a + h.areaByKind[k], 0);
   const classic = buildSurfaces(tgap);
@@ -119,12 +119,11 @@ test('bgt_otterlo_400m: the smooth cube changes class flat over at most 0.5% of 
   const c = changesOf(classic);
   const s = changesOf(smooth);
   t.diagnostic(`classic: ${c.total} triangles, ${sum(c).toFixed(0)} m2 ${JSON.stringify(c.byKind)}; smooth: ${s.total}, ${sum(s).toFixed(1)} m2 ${JSON.stringify(s.byKind)}`);
-  // Every merge, split and removal tilts, including the 8 removals whose corner goes to the
-  // face held back beside it (7 of them lay flat when they went to the face the tGAP names, not
-  // yet shown there). What is left are flat triangles in split parts: a split face took a
-  // neighbour's corner by a removal that its split hands back, and the part must stay above it.
-  assert.deepEqual({ ...s.byKind, splitFlat: 0 }, { merge: 0, mergeFlat: 0, split: 0, splitFlat: 0, simplify: 0, reemit: 0 });
-  // Measured: 128 m2 against 115,785 m2 (0.11%); 2,290 m2 (2.0%) before ramps that a corner
-  // lifted past their merge's z kept their exact waits elsewhere.
-  assert.ok(sum(s) <= 0.005 * sum(c), `smooth ${sum(s)} m2 against classic ${sum(c)} m2`);
+  assert.ok(c.total > 7000, `the classic cube: ${c.total}`);
+  // Every merge, split and removal tilts: among them the 8 removals whose corner goes to the
+  // face held back beside it (7 lay flat when they went to the face the tGAP names, not yet
+  // shown there), the removals a split hands back (left out: 16 flat triangles in split parts
+  // above them before), and a ramp triangle whose corners all wait at one z, which gets an apex.
+  // Before these: 32 triangles, 151 m2, against the classic cube's 7,641 and 115,785 m2.
+  assert.deepEqual(s.byKind, { merge: 0, mergeFlat: 0, split: 0, splitFlat: 0, simplify: 0, reemit: 0 });
 });

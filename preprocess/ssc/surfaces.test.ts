@@ -287,3 +287,47 @@ test('a corner that a split hands back is left its own: it never shows the road,
   for (const r of await runs(smooth)) assert.deepEqual(r, ['a', 'b']);
   assert.ok((await runs(classic)).every((r) => r.join() === 'a,r,a,b'), 'the classic cube shows the road in the corner, then W again');
 });
+
+// A face whose only neighbour is a face held back: the cascade above with a pond P (class d,
+// weighted 8, so that it goes after X) in X's middle, x 0.25..0.75, y 1.5..2.5. X merges into Y
+// (held back: Y then merges into Z, of X's class), then P into Y: all of P's boundary with Y is
+// X's, and X is what shows there until Y's ramp carries it on.
+test('a face merged into a winner beside which only a held-back face shows goes to that face, tilted, and moves on with it', async () => {
+  const hole: [number, number][] = [[0.25, 1.5], [0.25, 2.5], [0.75, 2.5], [0.75, 1.5]];
+  const faces: FixtureFace[] = [
+    { cls: 'a', rings: [rect(0, 0, 1, 4), hole] },
+    { cls: 'b', rings: [rect(1, 0, 5, 4)] },
+    { cls: 'a', rings: [rect(5, 0, 13, 4)] },
+    { cls: 'd', rings: [[...hole].reverse()] },
+  ];
+  for (let i = 0; i < 6; i++) faces.push({ cls: 'c', rings: [rect(13 + 10 * i, 0, 23 + 10 * i, 4)] });
+  for (let j = 0; j < 4; j++) faces.push({ cls: 'c', rings: [rect(73, j, 74, j + 1)] });
+  const names = ['a', 'b', 'c', 'd'];
+  const t = fixtureTgap(faces, names, fixtureStyle([{ key: 'a' }, { key: 'b' }, { key: 'c' }, { key: 'd', weight: 8 }]));
+  const X = 1, Y = 2, Z = 3, P = 4;
+  assert.deepEqual([X, P, Y].map((f) => t.events.find((e) => e.loser === f)).map((e) => [e?.step, e?.into]), [[5, Y], [6, Y], [7, Z]], 'the fixture');
+  const { surfaces: s, transitions, tgap: cube } = buildSurfaces(t, { smooth: true });
+  const x = transitions.find((m) => m.loser === X)!, p = transitions.find((m) => m.loser === P)!, y = transitions.find((m) => m.loser === Y)!;
+  assert.equal(x.held, true);
+  assert.deepEqual([p.into, p.shownAs, p.tilted], [Y, X, true]);
+  // X, and P's area with it, ends with Y's merge into Z.
+  assert.deepEqual([x.zMerge, cube.faces[X]!.stepHigh, cube.faces[X]!.mergedInto], [y.zMerge, 7, Z]);
+  for (let i = p.first; i < p.end; i++) assert.equal(s.upper[i], X, `P's ramp triangle ${i}`);
+  // Sliced at 300 z: the pond's pixels show d, then a (X, then Z); never b.
+  const view = fitView([0, 1.6, 1, 2.4], 200, 160);
+  const slice = await slicer(t, s, view);
+  const runs = new Map<number, string[]>();
+  for (let k = 0; k <= 300; k++) {
+    const row = middleRow(slice((8 * k) / 300), view);
+    row.forEach((f, c) => {
+      const xc = (c + 0.5) / 200;
+      if (xc < 0.3 || xc > 0.7) return;
+      const r = runs.get(c) ?? [];
+      const cls = names[cube.faces[f]!.classIndex]!;
+      if (r.at(-1) !== cls) r.push(cls);
+      runs.set(c, r);
+    });
+  }
+  assert.ok(runs.size > 50);
+  for (const [c, r] of runs) assert.deepEqual(r, ['d', 'a'], `column ${c}`);
+});

@@ -157,6 +157,10 @@ export interface SurfaceStats extends TriangulateStats {
   splitPartsToHeld: number;
   /** Removals' triangles given likewise to a face held back in their upper face. */
   removalsToHeld: number;
+  /** Merges whose loser goes likewise to a face held back in the winner. */
+  mergesToHeld: number;
+  /** Vertices added at the centre of ramp triangles whose corners all wait at one z. */
+  apexes: number;
 }
 
 /** What made a run of surface triangles (bench/explain-frames.ts attributes a frame's changes to it). */
@@ -278,6 +282,11 @@ export interface MergeTransition {
   /** The faces held back in the loser's area whose areas this merge's ramp carries on (their lower face under it). */
   carries?: number[];
   /**
+   * The face held back in the winner that takes the loser's area, when it shows along all of
+   * their shared boundary (its ramp's upper face; its area then moves on with that face's).
+   */
+  shownAs?: number;
+  /**
    * Its ramp's triangles in the surfaces: from `first` up to (not including) `end`; their upper
    * face is the winner, or the id it had before a re-emit during the transition (copies of the
    * part taken by then follow, at the re-emit's z).
@@ -322,7 +331,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   const steps = t.meta.steps;
   const zTop = steps + 1;
   const out = new Surfaces(t.xs, t.ys);
-  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0, heldMerges: 0, skippedRemovals: 0, notchFallbacks: 0, splitPartsToHeld: 0, removalsToHeld: 0 };
+  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0, heldMerges: 0, skippedRemovals: 0, notchFallbacks: 0, splitPartsToHeld: 0, removalsToHeld: 0, mergesToHeld: 0, apexes: 0 };
   const { xs, ys, faces, edges } = t;
   // Edges by the state they start and end in.
   const born: number[][] = Array.from({ length: steps + 2 }, () => []);
@@ -582,7 +591,9 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     const solve = (waits: ReadonlyMap<number, number>): Map<number, number> | null => smoothMergeZ(own, out.xs, out.ys, shared, { zFoot, zMerge, lowest: waits, time, evenArea: true });
     const aboveAll = (): ReadonlyMap<number, number> => byFace.waitsAbove(own, pairs, SURFACE_GAP);
     const z = exactRamp(own, pairs, zMerge, solve, aboveAll) ?? solve(aboveAll());
-    const zOf = (v: number): number => z?.get(v) ?? zMerge;
+    /** The apexes added to triangles that would lie flat below zMerge (below), and their z. */
+    const apexes = new Map<number, number>();
+    const zOf = (v: number): number => apexes.get(v) ?? z?.get(v) ?? zMerge;
     let zLow = zMerge;
     // Where an edge crosses one of the winner's re-emit levels: one vertex for both triangles beside it.
     const cuts = new Map<string, number>();
@@ -607,18 +618,12 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     };
     /** Per re-emit level, the outlines of what the winner has taken by then. */
     const taken: number[][][] = levels.map(() => []);
-    for (let i = 0; i < own.length; i += 3) {
-      const a = own[i]!, b = own[i + 1]!, c = own[i + 2]!;
-      const lower = lowerOf(a, b, c);
-      if (!z) {
-        out.add(a, b, c, zMerge, upper, lower);
-        continue;
-      }
+    const emitRamp = (a: number, b: number, c: number, lower: number): void => {
       const zs = [zOf(a), zOf(b), zOf(c)];
       zLow = Math.min(zLow, ...zs);
       if (levels.length === 0) {
         out.addTilted(a, b, c, zs[0]!, zs[1]!, zs[2]!, upper, lower, `${key}${lower === loser ? '' : `/${lower}`}`);
-        continue;
+        return;
       }
       // Each part between the winner's re-emits shows the id the winner has there (a piece has one upper and one lower face).
       const { parts, below } = cutAtLevels([a, b, c], zs, levels, cut, hasArea);
@@ -631,6 +636,28 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       below.forEach((o, li) => {
         if (o) taken[li]!.push(o);
       });
+    };
+    for (let i = 0; i < own.length; i += 3) {
+      const a = own[i]!, b = own[i + 1]!, c = own[i + 2]!;
+      const lower = lowerOf(a, b, c);
+      if (!z) {
+        out.add(a, b, c, zMerge, upper, lower);
+        continue;
+      }
+      const za = zOf(a);
+      if (za === zOf(b) && za === zOf(c) && za < zMerge && faces[lower]!.classIndex !== faces[upper]!.classIndex) {
+        // All three corners wait at one z (above an older surface): flat, its area would change
+        // class at once. An apex at its centre, half way to zMerge, makes it recede from its
+        // sides to the centre instead; above the corners, it stays above what they wait for.
+        const m = out.addVertex((out.xs[a]! + out.xs[b]! + out.xs[c]!) / 3, (out.ys[a]! + out.ys[b]! + out.ys[c]!) / 3);
+        apexes.set(m, za + (zMerge - za) / 2);
+        stats.apexes++;
+        emitRamp(a, b, m, lower);
+        emitRamp(b, c, m, lower);
+        emitRamp(c, a, m, lower);
+      } else {
+        emitRamp(a, b, c, lower);
+      }
     }
     const end = out.count;
     // At each re-emit inside the transition, what the winner has taken so far is drawn again
@@ -840,6 +867,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         const first = out.count;
         let ramp: Ramp = { zStart: z0, end: first, zFront: z0 };
         let carries: number[] | undefined;
+        let shownAs: number | undefined;
         const zFoot = byFace ? Math.max(SURFACE_GAP, reachBack(z0)) : z0;
         // The loser's area as it is before the merge, triangulated once if a hold needs it.
         let area: AreaIndex | undefined;
@@ -868,8 +896,19 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
           continue;
         }
         if (byFace) {
-          // No further back than reachBackZ (the winner's re-emits meanwhile are handled there).
-          ramp = emitSmoothMerge(byFace, e.loser, e.into, k - 1, shared, zFoot, z0, `m${ev}`, lowerUnder(e.loser));
+          // Beside a face held back in the winner only: the loser goes to that face, and moves on with it.
+          const h = heldAlong(e.into, shared, k - 1, z0);
+          if (h) {
+            triangulate(e.loser, k - 1);
+            ramp = emitTilted(byFace, tris, e.loser, e.into, k - 1, shared, Math.max(zFoot, faceStartZ(faces[h.face]!) + SURFACE_GAP), z0, `m${ev}`, 'merge', { members: [h.face], levels: [] }, lowerUnder(e.loser), false);
+            if (ramp.zStart < z0) stats.tiltedMerges++;
+            h.area.add(tris, xs, ys);
+            stats.mergesToHeld++;
+            shownAs = h.face;
+          } else {
+            // No further back than reachBackZ (the winner's re-emits meanwhile are handled there).
+            ramp = emitSmoothMerge(byFace, e.loser, e.into, k - 1, shared, zFoot, z0, `m${ev}`, lowerUnder(e.loser));
+          }
           carries = carryOn(e.loser, k, e.into, ramp.zStart, z0);
           lieIn(e.into, first);
           byFace.hand(e.loser, e.into);
@@ -877,8 +916,8 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
           stats.merge += emitFace(e.loser, k - 1, z0, e.into, e.loser);
           ramp.end = out.count;
         }
-        transitions.push({ step: k, loser: e.loser, into: e.into, zStart: ramp.zStart, zMerge: z0, zFoot, zFront: ramp.zFront, tilted: ramp.zStart < z0, first, end: ramp.end, ...(carries ? { carries } : {}) });
-        origin('merge', k, e.loser, e.into, first);
+        transitions.push({ step: k, loser: e.loser, into: e.into, zStart: ramp.zStart, zMerge: z0, zFoot, zFront: ramp.zFront, tilted: ramp.zStart < z0, first, end: ramp.end, ...(carries ? { carries } : {}), ...(shownAs ? { shownAs } : {}) });
+        origin('merge', k, e.loser, shownAs ?? e.into, first);
         // The winner grows; the loser's neighbours now border the winner.
         relabel(e.loser, z0, before);
         handOn.push([e.loser, e.into]);
