@@ -560,7 +560,19 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     byFace: SurfacesByFace, area: number[], loser: number, into: number, s: number, sharedWithInto: number[], zFoot: number, zMerge: number, key: string, kind: 'merge' | 'split',
     winner: WinnerIds = { members: [into], levels: [] }, lowerOf: (a: number, b: number, c: number) => number = () => loser, holds = true,
   ): Ramp => {
-    // A vertex of the shared boundary may start once the winner lies beside it.
+    // A vertex of the shared boundary may start once the winner lies beside it; where faces
+    // held back in the winner show along all of it (more than one, or beside another part of
+    // the winner), once they do: else the ramp could not leave it before zMerge and lay flat.
+    let shared = sharedTimes(sharedWithInto, loser, into, s, holds);
+    if (holds && held.has(into) && Math.min(...shared.times.values()) >= zMerge) shared = sharedTimes(sharedWithInto, loser, into, s, false);
+    const { segments } = shared;
+    return emitRamp(byFace, area, loser, shared.times, segments, zFoot, zMerge, key, kind, winner, lowerOf);
+  };
+  /**
+   * Per vertex of the loser's boundary with `into` (edges `sharedWithInto`, state s, with the
+   * loser's notches), the z from which its front may leave it; and that boundary's segments.
+   */
+  const sharedTimes = (sharedWithInto: number[], loser: number, into: number, s: number, holds: boolean): { times: Map<number, number>; segments: Set<string> } => {
     const shared = new Map<number, number>();
     const segments = new Set<string>();
     for (const e of sharedWithInto) {
@@ -582,6 +594,13 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       // With the notches, and without (if they no longer fit, the triangulation has the plain chain).
       for (const chain of [verts, edges[e]!.verts]) for (let i = 0; i + 1 < chain.length; i++) segments.add(edgeKey(chain[i]!, chain[i + 1]!));
     }
+    return { times: shared, segments };
+  };
+  /** emitTilted's ramp, from the shared boundary's times. */
+  const emitRamp = (
+    byFace: SurfacesByFace, area: number[], loser: number, shared: ReadonlyMap<number, number>, segments: ReadonlySet<string>, zFoot: number, zMerge: number, key: string, kind: 'merge' | 'split',
+    winner: WinnerIds, lowerOf: (a: number, b: number, c: number) => number,
+  ): Ramp => {
     const own = splitChords(area, out.xs, out.ys, (v) => shared.has(v), (a, b) => segments.has(edgeKey(a, b)), (x, y) => out.addVertex(x, y));
     stats[kind] += own.length / 3;
     stats.chordSplits += (own.length - area.length) / 3;
@@ -618,7 +637,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     };
     /** Per re-emit level, the outlines of what the winner has taken by then. */
     const taken: number[][][] = levels.map(() => []);
-    const emitRamp = (a: number, b: number, c: number, lower: number): void => {
+    const emitOne = (a: number, b: number, c: number, lower: number): void => {
       const zs = [zOf(a), zOf(b), zOf(c)];
       zLow = Math.min(zLow, ...zs);
       if (levels.length === 0) {
@@ -652,11 +671,11 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         const m = out.addVertex((out.xs[a]! + out.xs[b]! + out.xs[c]!) / 3, (out.ys[a]! + out.ys[b]! + out.ys[c]!) / 3);
         apexes.set(m, za + (zMerge - za) / 2);
         stats.apexes++;
-        emitRamp(a, b, m, lower);
-        emitRamp(b, c, m, lower);
-        emitRamp(c, a, m, lower);
+        emitOne(a, b, m, lower);
+        emitOne(b, c, m, lower);
+        emitOne(c, a, m, lower);
       } else {
-        emitRamp(a, b, c, lower);
+        emitOne(a, b, c, lower);
       }
     }
     const end = out.count;
@@ -1040,7 +1059,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       const h = byFace && heldBeside(upper, [0, 1, 2].flatMap((j) => (tri[j] === v || tri[(j + 1) % 3] === v ? [tri[j]!, tri[(j + 1) % 3]!] : [])), -1);
       const shownAs = h ? h.face : upper;
       if (byFace) {
-        zCorner = smoothRemovalStart(byFace, tri, shownAs, lower, edge, side, z, !h);
+        zCorner = smoothRemovalStart(byFace, tri, shownAs, lower, edge, side, z, false);
         zChord = zCorner + (z - zCorner) / (heights[r]! + 1);
       }
       if (h) {
