@@ -13,7 +13,7 @@ export class AreaIndex {
     this.add(tris, xs, ys);
   }
 
-  /** The area grows by triangles `tris` (a part of a split given to a face held back). */
+  /** The area grows by triangles `tris` (what a face held back takes: a loser, a split's part, a removal's corner). */
   add(tris: readonly number[], xs: ArrayLike<number>, ys: ArrayLike<number>): void {
     const from = this.corners.length;
     const corners = new Float64Array(from + 2 * tris.length);

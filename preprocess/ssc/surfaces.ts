@@ -246,6 +246,8 @@ interface Held {
   face: number;
   area: AreaIndex;
   transition: MergeTransition;
+  /** The z until which it shows (its winner's own end), as far as known when it was last held. */
+  until: number;
 }
 
 /** The winner's ids over a transition: members[i] until levels[i], where members[i + 1] takes over. */
@@ -288,8 +290,8 @@ export interface MergeTransition {
   shownAs?: number;
   /**
    * Its ramp's triangles in the surfaces: from `first` up to (not including) `end`; their upper
-   * face is the winner, or the id it had before a re-emit during the transition (copies of the
-   * part taken by then follow, at the re-emit's z).
+   * face is the winner (`shownAs` when set), or the id it had before a re-emit during the
+   * transition (copies of the part taken by then follow, at the re-emit's z).
    */
   first: number;
   end: number;
@@ -511,8 +513,8 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   /**
    * The ramp with waits only where needed: solved without, then each triangle whose plane comes
    * within `SURFACE_GAP` of an older surface where they overlap (planeDeficit, exact) has its
-   * corners held up by the shortfall, and the front is run again; a triangle whose corner that
-   * would lift past zMerge has its corners held above every older surface around them instead
+   * corners held up by the shortfall, and the front is run again; a triangle that this would
+   * lift past zMerge at a corner has its corners held above every older surface around them instead
    * (`aboveAll`: those waits, flat only there, not over the whole ramp). null when that does not
    * settle within EXACT_ROUNDS (or the ramp cannot tilt).
    */
@@ -564,7 +566,9 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     // held back in the winner show along all of it (more than one, or beside another part of
     // the winner), once they do: else the ramp could not leave it before zMerge and lay flat.
     let shared = sharedTimes(sharedWithInto, loser, into, s, holds);
-    if (holds && held.has(into) && Math.min(...shared.times.values()) >= zMerge) shared = sharedTimes(sharedWithInto, loser, into, s, false);
+    let first = Infinity;
+    for (const z of shared.times.values()) first = Math.min(first, z);
+    if (holds && held.has(into) && first >= zMerge) shared = sharedTimes(sharedWithInto, loser, into, s, false);
     const { segments } = shared;
     return emitRamp(byFace, area, loser, shared.times, segments, zFoot, zMerge, key, kind, winner, lowerOf);
   };
@@ -695,13 +699,14 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
    * corner v (the receding vertex) up to its chord, at the removal's z or before it when later
    * removals of the step overlap it (removal-heights.ts), so the upper face takes
    * it from the corner, beside which it lies. No further back than reachBackZ, nor before
-   * the upper face was created or lay beside the corner (its side of the parent chain; with
-   * `holds` false, a face held back there), and above every older surface in the losing face's area.
+   * the upper face was created or lay beside the corner (its side of the parent chain; a face
+   * held back there counts from its own time: that side shows it until the corner recedes), and
+   * above every older surface in the losing face's area.
    */
-  const smoothRemovalStart = (byFace: SurfacesByFace, tri: number[], upper: number, lower: number, edge: number, side: Side, z: number, holds: boolean): number => {
+  const smoothRemovalStart = (byFace: SurfacesByFace, tri: number[], upper: number, lower: number, edge: number, side: Side, z: number): number => {
     const zCap = reachBack(z);
     let start = Math.max(SURFACE_GAP, zCap, faceStartZ(faces[upper]!) + SURFACE_GAP);
-    const times = sides.parentTimes(edge, side, holds);
+    const times = sides.parentTimes(edge, side, false);
     for (const w of tri) start = Math.max(start, (times.get(w) ?? z) + SURFACE_GAP);
     // Above the older surfaces it overlaps in the losing face's area.
     for (const w of byFace.lowestZ(lower, tri, start, SURFACE_GAP, zCap).values()) start = Math.max(start, w);
@@ -728,9 +733,12 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     const split = splitOf.get(upper);
     if (!split) return false;
     const [a, b] = tri.filter((w) => w !== v) as [number, number];
+    // And just inside the middle of the chord, where a split triangle on the chord holds only a thin strip of it.
+    const mx = (xs[a]! + xs[b]!) / 2, my = (ys[a]! + ys[b]!) / 2;
     const probes = [
       (xs[a]! + xs[b]! + xs[v]!) / 3, (ys[a]! + ys[b]! + ys[v]!) / 3, xs[v]!, ys[v]!,
       (xs[a]! + xs[v]!) / 2, (ys[a]! + ys[v]!) / 2, (xs[b]! + xs[v]!) / 2, (ys[b]! + ys[v]!) / 2,
+      mx + (xs[v]! - mx) * 1e-6, my + (ys[v]! - my) * 1e-6,
     ];
     const tv = split.tris!, tf = split.triFaces!;
     for (let p = 0; p < probes.length; p += 2) {
@@ -819,9 +827,10 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   };
   /**
    * The face held back in `into` that shows beside segments p-q (vertex pairs) on their left
-   * (`toward` 1) or right (-1), if one face does: what `into` gains there goes to that face,
-   * whose class the hold keeps, and not to a face not yet shown beside it. Found by the point a
-   * millionth of each segment's length off its middle.
+   * (`toward` 1) or right (-1), if exactly one held face shows beside any of them (the others
+   * may show `into` itself): what `into` gains there goes to that face, whose class the hold
+   * keeps, and not to a face not yet shown beside it. Found by the point a millionth of each
+   * segment's length off its middle.
    */
   const heldBeside = (into: number, segments: readonly number[], toward: 1 | -1): Held | undefined => {
     const inInto = held.get(into);
@@ -838,8 +847,9 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     return found.size === 1 ? [...found][0] : undefined;
   };
   /**
-   * The face held back in `into` that shows along all of a split's part's boundary `shared`
-   * with `into` at zMerge (every vertex's face there held back until after it), if one does.
+   * The face held back in `into` that shows along all of a loser's (or a split's part's)
+   * boundary `shared` with `into` at zMerge (every vertex's face there held back until after
+   * it), if one face does.
    */
   const heldAlong = (into: number, shared: readonly number[], s: number, zMerge: number): Held | undefined => {
     if (!held.has(into) || shared.length === 0) return undefined;
@@ -886,7 +896,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         const first = out.count;
         let ramp: Ramp = { zStart: z0, end: first, zFront: z0 };
         let carries: number[] | undefined;
-        let shownAs: number | undefined;
+        let shownAs: Held | undefined;
         const zFoot = byFace ? Math.max(SURFACE_GAP, reachBack(z0)) : z0;
         // The loser's area as it is before the merge, triangulated once if a hold needs it.
         let area: AreaIndex | undefined;
@@ -905,7 +915,8 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
           const transition: MergeTransition = { step: k, loser: e.loser, into: e.into, zStart: z0, zMerge: z0, zFoot, zFront: z0, tilted: false, held: true, first, end: first };
           transitions.push(transition);
           stats.heldMerges++;
-          inLoser.push({ face: e.loser, area: loserArea(), transition });
+          for (const h of inLoser) h.until = zOn;
+          inLoser.push({ face: e.loser, area: loserArea(), transition, until: zOn });
           // Innermost first: a face held earlier lies in the area of one held later.
           held.set(e.into, [...(held.get(e.into) ?? []), ...inLoser].sort((a, b) => a.transition.zMerge - b.transition.zMerge));
           byFace.hand(e.loser, e.into);
@@ -923,7 +934,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
             if (ramp.zStart < z0) stats.tiltedMerges++;
             h.area.add(tris, xs, ys);
             stats.mergesToHeld++;
-            shownAs = h.face;
+            shownAs = h;
           } else {
             // No further back than reachBackZ (the winner's re-emits meanwhile are handled there).
             ramp = emitSmoothMerge(byFace, e.loser, e.into, k - 1, shared, zFoot, z0, `m${ev}`, lowerUnder(e.loser));
@@ -935,10 +946,11 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
           stats.merge += emitFace(e.loser, k - 1, z0, e.into, e.loser);
           ramp.end = out.count;
         }
-        transitions.push({ step: k, loser: e.loser, into: e.into, zStart: ramp.zStart, zMerge: z0, zFoot, zFront: ramp.zFront, tilted: ramp.zStart < z0, first, end: ramp.end, ...(carries ? { carries } : {}), ...(shownAs ? { shownAs } : {}) });
-        origin('merge', k, e.loser, shownAs ?? e.into, first);
-        // The winner grows; the loser's neighbours now border the winner.
+        transitions.push({ step: k, loser: e.loser, into: e.into, zStart: ramp.zStart, zMerge: z0, zFoot, zFront: ramp.zFront, tilted: ramp.zStart < z0, first, end: ramp.end, ...(carries ? { carries } : {}), ...(shownAs ? { shownAs: shownAs.face } : {}) });
+        origin('merge', k, e.loser, shownAs?.face ?? e.into, first);
+        // The winner grows; the loser's neighbours now border the winner (or the held face that took it, until its hold ends).
         relabel(e.loser, z0, before);
+        if (shownAs) relabel(e.loser, shownAs.until, before, true);
         handOn.push([e.loser, e.into]);
       } else if (e.kind === EventKind.Split) {
         const tv = e.tris!, tf = e.triFaces!;
@@ -960,10 +972,11 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
             const h = heldAlong(into, shared, k - 1, z0);
             const shownAs = h?.face ?? into;
             const zFoot = Math.max(SURFACE_GAP, reachBack(z0), faceStartZ(faces[shownAs]!) + SURFACE_GAP);
-            const part = emitTilted(byFace, withoutSlivers(e.loser, area), e.loser, into, k - 1, shared, zFoot, z0, `p${ev}:${shownAs}`, 'split', { members: [shownAs], levels: [] }, lowerOf, !h);
+            const shown = withoutSlivers(e.loser, area);
+            const part = emitTilted(byFace, shown, e.loser, into, k - 1, shared, zFoot, z0, `p${ev}:${shownAs}`, 'split', { members: [shownAs], levels: [] }, lowerOf, !h);
             if (part.zStart < z0) stats.tiltedSplits++;
             if (h) {
-              h.area.add(area, xs, ys);
+              h.area.add(shown, xs, ys);
               stats.splitPartsToHeld++;
             }
             zStart = Math.min(zStart, part.zStart);
@@ -1059,7 +1072,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       const h = byFace && heldBeside(upper, [0, 1, 2].flatMap((j) => (tri[j] === v || tri[(j + 1) % 3] === v ? [tri[j]!, tri[(j + 1) % 3]!] : [])), -1);
       const shownAs = h ? h.face : upper;
       if (byFace) {
-        zCorner = smoothRemovalStart(byFace, tri, shownAs, lower, edge, side, z, false);
+        zCorner = smoothRemovalStart(byFace, tri, shownAs, lower, edge, side, z);
         zChord = zCorner + (z - zCorner) / (heights[r]! + 1);
       }
       if (h) {
