@@ -1,6 +1,7 @@
 // No sudden changes (issue 11): apart from the floor, no horizontal surface should change the
 // class of what is shown, for a horizontal triangle swaps its whole area at one z. Counted per
 // kind of event the triangle comes from, so the count says what is left to make smooth.
+import { orient } from '../geom/predicates.js';
 import type { OriginKind, SurfaceOrigin, Surfaces } from './surfaces.js';
 
 /**
@@ -42,7 +43,7 @@ export function horizontalChanges(s: Surfaces, origins: readonly SurfaceOrigin[]
       byKind[kind]++;
       total++;
       const a = s.v[3 * i]!, b = s.v[3 * i + 1]!, c = s.v[3 * i + 2]!;
-      areaByKind[kind] += Math.abs((xs[b]! - xs[a]!) * (ys[c]! - ys[a]!) - (xs[c]! - xs[a]!) * (ys[b]! - ys[a]!)) / 2;
+      areaByKind[kind] += Math.abs(orient(xs[a]!, ys[a]!, xs[b]!, ys[b]!, xs[c]!, ys[c]!)) / 2;
     }
   }
   return { total, byKind, areaByKind };

@@ -433,23 +433,30 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       fe.push({ verts: chainFor(e, f), forward: l === f });
       plain.push({ verts: edge.verts, forward: l === f });
     }
-    if (notches.has(f)) {
-      // Counted only if it holds: a failed try is not a failed triangulation.
-      const trial: TriangulateStats = { earcut: 0, fallback: 0, failed: 0 };
-      try {
-        const n = triangulateFace(fe, xs, ys, tris, trial);
-        stats.earcut += trial.earcut;
-        stats.fallback += trial.fallback;
-        stats.failed += trial.failed;
-        return n;
-      } catch {
-        // A notch no longer fits (a boundary of the face has since been simplified across it):
-        // the face's area as the tGAP has it, the sliver's lower face then named approximately.
-        tris.length = 0;
-        stats.notchFallbacks++;
-      }
-    }
+    // A notch that no longer fits (a boundary of the face has since been simplified across it):
+    // the face's area as the tGAP has it, the sliver's lower face then named approximately.
+    if (notches.has(f) && triangulateNotched(fe, tris)) return tris.length / 3;
     return triangulateFace(plain, xs, ys, tris, stats);
+  };
+  /**
+   * Triangulates an outline with notches into `into`; false (nothing added, a notch fallback
+   * counted) when the notches no longer fit. Counted only if it holds: a failed try is not a
+   * failed triangulation.
+   */
+  const triangulateNotched = (outline: FaceEdge[], into: number[]): boolean => {
+    const trial: TriangulateStats = { earcut: 0, fallback: 0, failed: 0 };
+    const before = into.length;
+    try {
+      triangulateFace(outline, xs, ys, into, trial);
+    } catch {
+      into.length = before;
+      stats.notchFallbacks++;
+      return false;
+    }
+    stats.earcut += trial.earcut;
+    stats.fallback += trial.fallback;
+    stats.failed += trial.failed;
+    return true;
   };
   /**
    * A split's part (`area`, triangles of the split face f) without f's slivers (givesBack): where
@@ -473,18 +480,8 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       }
     }
     if (!notched) return area;
-    const trial: TriangulateStats = { earcut: 0, fallback: 0, failed: 0 };
     const out: number[] = [];
-    try {
-      triangulateFace(outline, xs, ys, out, trial);
-      stats.earcut += trial.earcut;
-      stats.fallback += trial.fallback;
-      stats.failed += trial.failed;
-      return out;
-    } catch {
-      stats.notchFallbacks++;
-      return area;
-    }
+    return triangulateNotched(outline, out) ? out : area;
   };
   /** Triangulates face f's current area and adds it at z with the given upper and lower faces. */
   const emitFace = (f: number, s: number, z: number, upper: number, lower: number): number => {
@@ -741,16 +738,11 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       mx + (xs[v]! - mx) * 1e-6, my + (ys[v]! - my) * 1e-6,
     ];
     const tv = split.tris!, tf = split.triFaces!;
+    const toLower: number[] = [], toOthers: number[] = [];
+    for (let i = 0; i < tf.length; i++) (isLower(tf[i]!) ? toLower : toOthers).push(tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!);
+    const lowerArea = new AreaIndex(toLower, xs, ys), otherArea = new AreaIndex(toOthers, xs, ys);
     for (let p = 0; p < probes.length; p += 2) {
-      const x = probes[p]!, y = probes[p + 1]!;
-      let inLower = false, inOther = false;
-      for (let i = 0; i < tf.length; i++) {
-        const [p0, p1, p2] = [tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!];
-        if (orient(xs[p0]!, ys[p0]!, xs[p1]!, ys[p1]!, x, y) < 0 || orient(xs[p1]!, ys[p1]!, xs[p2]!, ys[p2]!, x, y) < 0 || orient(xs[p2]!, ys[p2]!, xs[p0]!, ys[p0]!, x, y) < 0) continue;
-        if (isLower(tf[i]!)) inLower = true;
-        else inOther = true;
-      }
-      if (!inLower || inOther) return false;
+      if (!lowerArea.contains(probes[p]!, probes[p + 1]!) || otherArea.contains(probes[p]!, probes[p + 1]!)) return false;
     }
     return true;
   };
