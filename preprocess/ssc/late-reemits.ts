@@ -13,9 +13,10 @@ import { EventKind, faceEndZ, faceStartZ, phaseZ, REEMIT_PHASE, type Tgap, type 
  * The tGAP with those re-emits taken out: the replaced face lives on until the new one would
  * have ended, every reference to the new face names the old one, and the new face's record is
  * left never alive (stepLow = stepHigh). `earliest(z)`: how far back a transition ending at z
- * may start. The input is not changed.
+ * may start; `also`: new faces whose re-emits are skipped as well (a merge held back across
+ * them, hold-line.ts). The input is not changed.
  */
-export function skipLateReemits(t: Tgap, earliest: (z: number) => number): { tgap: Tgap; skipped: number } {
+export function skipLateReemits(t: Tgap, earliest: (z: number) => number, also: ReadonlySet<number> = new Set()): { tgap: Tgap; skipped: number } {
   const { faces, events } = t;
   const steps = t.meta.steps;
   const replacedBy = (f: TgapFace): number => (f.endPhase === REEMIT_PHASE && f.mergedInto > 0 ? f.mergedInto : -1);
@@ -31,7 +32,7 @@ export function skipLateReemits(t: Tgap, earliest: (z: number) => number): { tga
     while (replacedBy(faces[last]!) > 0) last = replacedBy(faces[last]!);
     const end = faceEndZ(faces[last]!, steps);
     const start = faceStartZ(faces[e.into]!);
-    if ((end === Infinity || earliest(end) >= start) && !(intoReach[e.into]! < start)) continue;
+    if ((end === Infinity || earliest(end) >= start) && !(intoReach[e.into]! < start) && !also.has(e.into)) continue;
     alias[e.into] = alias[e.loser]!;
     skipped++;
   }

@@ -134,7 +134,8 @@ function evenFront(
   let lowest = b.lowest;
   if (!(zFoot < zMerge) || tris.length === 0) return null;
   const graph = new MeshGraph(tris);
-  let sources: [number, number][] = [...shared].filter(([v]) => graph.nbrs.has(v)).map(([v, z]) => [v, Math.max(z, zFoot)]);
+  // A vertex beside the winner only from zMerge on (a face held back shows there) cannot lead the front.
+  let sources: [number, number][] = [...shared].filter(([v, z]) => graph.nbrs.has(v) && z < zMerge).map(([v, z]) => [v, Math.max(z, zFoot)]);
   if (sources.length === 0) return null;
   let d = graph.arrivals(xs, ys, sources.map(([v]): [number, number] => [v, 0]), 1);
   let [, dMax] = largest(d);

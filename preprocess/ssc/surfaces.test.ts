@@ -209,6 +209,55 @@ test('a cascade that does not come back to the loser\'s class is not held back: 
   assert.deepEqual([...seen].sort(), [X, Y, Z]);
 });
 
+//   +--+--------+----------------+---- ... ----+--- ... ---+-+   X = [0,1]   class a, area 4
+//   |a |   b    |   b or d       |      a      |  c ...    |c|   Y = [1,5]   class b, area 16
+//   |  |        |                |             |           |c|   Z = [5,13]  class b or d, 32
+//   +--+--------+----------------+---- ... ----+--- ... ---+-+   V = [13,53] class a, 160
+//                                                                6 fillers of 60, 4 squares of 1
+//
+// X merges into Y (step 5), Y into Z (step 6), Z into V (step 7): X's area would show a, b, (d,)
+// a. The winner's line, Y then Z, comes back to X's class only at Z's merge: X waits until then,
+// and so does Y, which holds X (Y's area shows b, then a: it changes once).
+function longCascade(zClass: string): Tgap {
+  const faces: FixtureFace[] = [
+    { cls: 'a', rings: [rect(0, 0, 1, 4)] },
+    { cls: 'b', rings: [rect(1, 0, 5, 4)] },
+    { cls: zClass, rings: [rect(5, 0, 13, 4)] },
+    { cls: 'a', rings: [rect(13, 0, 53, 4)] },
+  ];
+  for (let i = 0; i < 6; i++) faces.push({ cls: 'c', rings: [rect(53 + 15 * i, 0, 68 + 15 * i, 4)] });
+  for (let j = 0; j < 4; j++) faces.push({ cls: 'c', rings: [rect(143, j, 144, j + 1)] });
+  return fixtureTgap(faces, ['a', 'b', 'c', 'd']);
+}
+
+for (const zClass of ['b', 'd']) {
+  test(`a merge is held back along the winner's whole line (Z of class ${zClass}) until the line comes back to its class`, async () => {
+    const t = longCascade(zClass);
+    const X = 1, Y = 2, Z = 3, V = 4;
+    assert.deepEqual([X, Y, Z].map((f) => t.events.find((e) => e.loser === f)).map((e) => [e?.step, e?.into]), [[5, Y], [6, Z], [7, V]]);
+    const { surfaces: s, transitions, tgap: cube } = buildSurfaces(t, { smooth: true });
+    const carrier = transitions.find((x) => x.loser === Z)!;
+    for (const f of [X, Y]) {
+      const m = transitions.find((x) => x.loser === f)!;
+      assert.equal(m.held, true, `face ${f} held`);
+      assert.deepEqual([m.zStart, m.zMerge], [carrier.zStart, carrier.zMerge], `face ${f} moves on with Z's ramp`);
+      assert.deepEqual([cube.faces[f]!.stepHigh, cube.faces[f]!.mergedInto], [7, V]);
+    }
+    const view = fitView(t.meta.extent, 1440, 40);
+    const slice = await slicer(t, s, view);
+    const colOf = (x: number): number => Math.floor((x - view.bbox[0]) / ((view.bbox[2] - view.bbox[0]) / view.width));
+    // Columns well inside X and inside Y (a pixel away from their sides), over 400 z past Z's merge.
+    const shown = [new Set<number>(), new Set<number>()];
+    for (let k = 0; k <= 400; k++) {
+      const row = middleRow(slice((9 * k) / 400), view);
+      for (let c = colOf(0) + 1; c < colOf(1) - 1; c++) shown[0]!.add(row[c]!);
+      for (let c = colOf(1) + 2; c < colOf(5) - 1; c++) shown[1]!.add(row[c]!);
+    }
+    assert.deepEqual([...shown[0]!].sort(), [X, V], 'X\'s pixels: a, then a again, never b or Z\'s class');
+    assert.deepEqual([...shown[1]!].sort(), [Y, V], 'Y\'s pixels: b, then a, never Z\'s class');
+  });
+}
+
 // A corner that simplification hands to a road which is then split, giving the corner back:
 //
 //   +--------+----+--------+-- ... --+-+    W = [0,4] x [0,4], class a, with a spike into R:

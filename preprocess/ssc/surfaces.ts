@@ -18,6 +18,7 @@ import { smoothMergeZ } from './smooth-merge.js';
 import { EdgeSideTimes, Side } from './edge-side-times.js';
 import { edgeKey, splitChords } from './split-chords.js';
 import { skipLateReemits } from './late-reemits.js';
+import { holdLimitZ, reemitsHeldAcross, returnOnLine } from './hold-line.js';
 import { removalHeights } from './removal-heights.js';
 import { SurfacesByFace } from './surfaces-by-face.js';
 import { triangulateFace, type FaceEdge, type TriangulateStats } from './triangulate-face.js';
@@ -203,20 +204,11 @@ export const SURFACE_GAP = 1 / 32;
 
 /**
  * How long a merge may be held back (a cascade that would send its area back to its class): its
- * loser may stay until at most this factor in scale after its own merge (two zoom levels).
- * Measured on bgt_otterlo_1800m (bench:explain, sliced at 1280x720): one zoom level left 5,550
- * pixels of flicker, two 3,028 (with the split rule below 1,931), three the same; the worst frame
- * 0.757%, 0.726%, (0.694%).
+ * loser may stay until at most this factor in scale after its own merge (three zoom levels).
+ * Measured on bgt_otterlo_1800m (bench:explain, sliced at 1280x720), holding along the winner's
+ * whole line: x4 left 84 pixels of flicker, x8 30, x16 30; the worst frame 0.453%, 0.447%, 0.439%.
  */
-export const MAX_HOLD_RATIO = 4;
-
-/**
- * A merge into a face that is then split is held back when more than this share of the split's
- * area over the loser goes to faces of the loser's class (its other pixels change once, not
- * twice). Measured on bgt_otterlo_1800m: all of it (a share of 1) left 3,028 pixels of flicker,
- * half 1,931.
- */
-export const HOLD_SPLIT_SHARE = 0.5;
+export const MAX_HOLD_RATIO = 8;
 
 /** Rounds of holding up a ramp where it would dip under an older surface, before the corner rule. */
 const EXACT_ROUNDS = 6;
@@ -329,7 +321,7 @@ export function reachBackZ(info: ScaleInfo, z: number): number {
 export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surfaces: Surfaces; stats: SurfaceStats; transitions: MergeTransition[]; splits: SplitTransition[]; origins: SurfaceOrigin[]; tgap: Tgap } {
   // The scale of every step: skipping re-emits keeps the tGAP's meta.
   const scaleInfo = scaleInfoOf(input);
-  const t = opts.smooth ? skipLateReemits(input, (z) => reachBackZ(scaleInfo, z)).tgap : input;
+  const t = opts.smooth ? skipLateReemits(input, (z) => reachBackZ(scaleInfo, z), reemitsHeldAcross(input, scaleInfo, MAX_HOLD_RATIO)).tgap : input;
   const steps = t.meta.steps;
   const zTop = steps + 1;
   const out = new Surfaces(t.xs, t.ys);
@@ -560,11 +552,13 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     winner: WinnerIds = { members: [into], levels: [] }, lowerOf: (a: number, b: number, c: number) => number = () => loser, holds = true,
   ): Ramp => {
     // A vertex of the shared boundary may start once the winner lies beside it; where faces
-    // held back in the winner show along all of it (more than one, or beside another part of
-    // the winner), once they do: else the ramp could not leave it before zMerge and lay flat.
+    // held back in the winner show along all of it that touches the area (more than one, or
+    // beside another part of the winner), once they do: else the ramp could not leave it before
+    // zMerge and lay flat.
     let shared = sharedTimes(sharedWithInto, loser, into, s, holds);
+    const corners = new Set(area);
     let first = Infinity;
-    for (const z of shared.times.values()) first = Math.min(first, z);
+    for (const [v, z] of shared.times) if (corners.has(v)) first = Math.min(first, z);
     if (holds && held.has(into) && first >= zMerge) shared = sharedTimes(sharedWithInto, loser, into, s, false);
     const { segments } = shared;
     return emitRamp(byFace, area, loser, shared.times, segments, zFoot, zMerge, key, kind, winner, lowerOf);
@@ -784,29 +778,33 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
    * held); `loserArea` gives the loser's area, triangulated only when a split needs it.
    */
   const holdUntil = (loser: number, into: number, k: number, loserArea: () => AreaIndex): number | undefined => {
-    const w = faces[into]!;
     const cl = faces[loser]!.classIndex;
-    if (!(w.endPhase === 0 && w.stepHigh <= steps) || w.classIndex === cl) return undefined;
-    const zOn = phaseZ(w.stepHigh, 0);
-    // Held back no longer than MAX_HOLD_RATIO in scale, for the loser and the faces held in it.
-    let zFirst = phaseZ(k, 0);
-    for (const h of held.get(loser) ?? []) zFirst = Math.min(zFirst, h.transition.zMerge);
-    if (scaleAtZ(scaleInfo, zOn) > MAX_HOLD_RATIO * scaleAtZ(scaleInfo, zFirst)) return undefined;
-    if (w.mergedInto > 0) return faces[w.mergedInto]!.classIndex === cl ? zOn : undefined;
-    // Split: most of what it gives away over the loser's area goes to faces of the loser's class.
-    const split = splitOf.get(into);
+    const z0 = phaseZ(k, 0);
+    // Faces held in the loser that wait for a later step down the winner's line keep it waiting
+    // with them (their area lies in its area).
+    const until = Math.max(-Infinity, ...(held.get(loser) ?? []).map((h) => h.until));
+    if (until > z0) return until;
+    const winnerClass = faces[into]!.classIndex;
+    if (winnerClass === cl) return undefined;
+    // Held back no longer than MAX_HOLD_RATIO in scale, for the loser and the faces held in it
+    // (but those of the winner's class, which then show what the tGAP shows).
+    let zFirst = z0;
+    for (const h of held.get(loser) ?? []) if (faces[h.face]!.classIndex !== cl && faces[h.face]!.classIndex !== winnerClass) zFirst = Math.min(zFirst, h.transition.zMerge);
+    const end = returnOnLine(faces, into, cl, steps, holdLimitZ(scaleInfo, zFirst, MAX_HOLD_RATIO));
+    if (end < 0) return undefined;
+    const zOn = phaseZ(faces[end]!.stepHigh, 0);
+    if (faces[end]!.mergedInto > 0) return zOn;
+    // Split: part of what it gives away over the loser's area goes to faces of the loser's class.
+    const split = splitOf.get(end);
     if (!split) return undefined;
     const area = loserArea();
     const tv = split.tris!, tf = split.triFaces!;
-    let over = 0, back = 0;
     for (let i = 0; i < tf.length; i++) {
+      if (faces[tf[i]!]!.classIndex !== cl) continue;
       const [a, b, c] = [tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!];
-      if (!area.contains((xs[a]! + xs[b]! + xs[c]!) / 3, (ys[a]! + ys[b]! + ys[c]!) / 3)) continue;
-      const w2 = Math.abs(orient(xs[a]!, ys[a]!, xs[b]!, ys[b]!, xs[c]!, ys[c]!));
-      over += w2;
-      if (faces[tf[i]!]!.classIndex === cl) back += w2;
+      if (area.contains((xs[a]! + xs[b]! + xs[c]!) / 3, (ys[a]! + ys[b]! + ys[c]!) / 3)) return zOn;
     }
-    return back > HOLD_SPLIT_SHARE * over ? zOn : undefined;
+    return undefined;
   };
   /** Under a ramp over the loser's area lies the loser, or a face held back in it (undefined: none held). */
   const lowerUnder = (loser: number): ((a: number, b: number, c: number) => number) | undefined => {
