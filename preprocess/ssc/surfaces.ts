@@ -782,7 +782,8 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     const z0 = phaseZ(k, 0);
     // Faces held in the loser that wait for a later step down the winner's line keep it waiting
     // with them (their area lies in its area).
-    const until = Math.max(-Infinity, ...(held.get(loser) ?? []).map((h) => h.until));
+    let until = -Infinity;
+    for (const h of held.get(loser) ?? []) until = Math.max(until, h.until);
     if (until > z0) return until;
     const winnerClass = faces[into]!.classIndex;
     if (winnerClass === cl) return undefined;
