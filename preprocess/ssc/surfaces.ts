@@ -25,6 +25,7 @@ import { triangulateFace, type FaceEdge, type TriangulateStats } from './triangu
 import { ZoomTime } from './zoom-time.js';
 import { cutAtLevels } from './level-cuts.js';
 import { AreaIndex } from './area-index.js';
+import { meshPieces } from './mesh-pieces.js';
 
 export class Surfaces {
   count = 0;
@@ -552,16 +553,21 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     winner: WinnerIds = { members: [into], levels: [] }, lowerOf: (a: number, b: number, c: number) => number = () => loser, holds = true,
   ): Ramp => {
     // A vertex of the shared boundary may start once the winner lies beside it; where faces
-    // held back in the winner show along all of it that touches the area (more than one, or
-    // beside another part of the winner), once they do: else the ramp could not leave it before
-    // zMerge and lay flat.
-    let shared = sharedTimes(sharedWithInto, loser, into, s, holds);
-    const corners = new Set(area);
-    let first = Infinity;
-    for (const [v, z] of shared.times) if (corners.has(v)) first = Math.min(first, z);
-    if (holds && held.has(into) && first >= zMerge) shared = sharedTimes(sharedWithInto, loser, into, s, false);
-    const { segments } = shared;
-    return emitRamp(byFace, area, loser, shared.times, segments, zFoot, zMerge, key, kind, winner, lowerOf);
+    // held back in the winner show along all of it that a piece of the area touches (more than
+    // one, or beside another part of the winner), once they do: else the piece's ramp could not
+    // leave it before zMerge and lay flat.
+    const shared = sharedTimes(sharedWithInto, loser, into, s, holds);
+    if (holds && held.has(into)) {
+      const own = sharedTimes(sharedWithInto, loser, into, s, false).times;
+      for (const piece of meshPieces(area)) {
+        if (piece.some((v) => (shared.times.get(v) ?? Infinity) < zMerge)) continue;
+        for (const v of piece) {
+          const z = own.get(v);
+          if (z !== undefined) shared.times.set(v, z);
+        }
+      }
+    }
+    return emitRamp(byFace, area, loser, shared.times, shared.segments, zFoot, zMerge, key, kind, winner, lowerOf);
   };
   /**
    * Per vertex of the loser's boundary with `into` (edges `sharedWithInto`, state s, with the
