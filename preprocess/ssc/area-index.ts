@@ -3,22 +3,27 @@
 import { orient } from '../geom/predicates.js';
 
 export class AreaIndex {
-  /** x0 y0 x1 y1 x2 y2 per triangle. */
-  private corners: Float64Array;
+  /** x0 y0 x1 y1 x2 y2 per triangle, in the first `used` entries (the rest is room to grow). */
+  private corners = new Float64Array(0);
+  private used = 0;
   private readonly box: [number, number, number, number] = [Infinity, Infinity, -Infinity, -Infinity];
 
   /** `tris`: vertex ids, 3 per triangle, counterclockwise, into xs and ys. */
   constructor(tris: readonly number[], xs: ArrayLike<number>, ys: ArrayLike<number>) {
-    this.corners = new Float64Array(0);
     this.add(tris, xs, ys);
   }
 
   /** The area grows by triangles `tris` (what a face held back takes: a loser, a split's part, a removal's corner). */
   add(tris: readonly number[], xs: ArrayLike<number>, ys: ArrayLike<number>): void {
-    const from = this.corners.length;
-    const corners = new Float64Array(from + 2 * tris.length);
-    corners.set(this.corners);
-    this.corners = corners;
+    const from = this.used;
+    this.used += 2 * tris.length;
+    if (this.used > this.corners.length) {
+      // Doubling: a face that takes many small corners one by one is not copied each time.
+      const corners = new Float64Array(Math.max(this.used, 2 * this.corners.length));
+      corners.set(this.corners.subarray(0, from));
+      this.corners = corners;
+    }
+    const corners = this.corners;
     tris.forEach((v, i) => {
       const x = xs[v]!, y = ys[v]!;
       corners[from + 2 * i] = x;
@@ -35,7 +40,7 @@ export class AreaIndex {
     const [x0, y0, x1, y1] = this.box;
     if (x < x0 || x > x1 || y < y0 || y > y1) return false;
     const c = this.corners;
-    for (let i = 0; i < c.length; i += 6) {
+    for (let i = 0; i < this.used; i += 6) {
       if (orient(c[i]!, c[i + 1]!, c[i + 2]!, c[i + 3]!, x, y) >= 0 && orient(c[i + 2]!, c[i + 3]!, c[i + 4]!, c[i + 5]!, x, y) >= 0 && orient(c[i + 4]!, c[i + 5]!, c[i]!, c[i + 1]!, x, y) >= 0) return true;
     }
     return false;
