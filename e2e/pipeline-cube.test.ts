@@ -321,8 +321,8 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
     assert.equal(s.faceReturns, 0);
     assert.equal(c.faceReturns, 0);
     // The tGAP sends some areas back to a class (a face merged into one of another class that
-    // soon merges into a face of the first); the smooth cube holds those merges back
-    // (surfaces.ts, MAX_HOLD_RATIO; on bgt_otterlo_1800m 15,237 px -> 1,931 at 1280x720).
+    // soon merges into a face of the first); the smooth cube holds those merges back along the
+    // winner's line (hold-line.ts; on bgt_otterlo_1800m 15,237 px -> 30 at 1280x720).
     // Measured here: 6 px of the 230,400, the classic cube 4 (both show a road corner the tGAP
     // itself hands back and forth). Before the fronts were paced in zoom time and slivers handed
     // back were left out (surfaces.ts givesBack), 31 px.
