@@ -70,6 +70,17 @@ test('a face all on the shared boundary is swept from one end of its longest pat
   want.forEach((w, v) => assert.ok(Math.abs((z?.get(v) ?? NaN) - w) < 1e-12, `vertex ${v}: ${z?.get(v)}, expected ${w}`));
 });
 
+test('a face all on the shared boundary with a vertex beside the winner only after zMerge is swept toward that vertex', () => {
+  // Vertex 1 lies beside the winner from z 20 only (a face held back shows there): no start.
+  // Farthest from 1 along the edges: 5 (d 5, round 2, 3, 4 or along 0). From 5: d4 = 1,
+  // d0 = 3, d3 = 3, d2 = 4, d1 = 5, the largest: z = 1 + 15 d / 5.
+  const shared = at([0, 2, 3, 4, 5], 0);
+  shared.set(1, 20);
+  const z = smoothMergeZ(TRIS, xs, ys, shared, { zFoot: 1, zMerge: 16 });
+  const want = [10, 16, 13, 10, 4, 1];
+  want.forEach((w, v) => assert.ok(Math.abs((z?.get(v) ?? NaN) - w) < 1e-12, `vertex ${v}: ${z?.get(v)}, expected ${w}`));
+});
+
 test('without a shared boundary or room in z it does not tilt', () => {
   assert.equal(smoothMergeZ(TRIS, xs, ys, new Map(), { zFoot: 0, zMerge: 16 }), null);
   assert.equal(smoothMergeZ(TRIS, xs, ys, at([1, 2], 0), { zFoot: 16, zMerge: 16 }), null);

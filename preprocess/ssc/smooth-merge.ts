@@ -134,19 +134,22 @@ function evenFront(
   let lowest = b.lowest;
   if (!(zFoot < zMerge) || tris.length === 0) return null;
   const graph = new MeshGraph(tris);
+  const onBoundary = [...shared].filter(([v]) => graph.nbrs.has(v));
   // A vertex beside the winner only from zMerge on (a face held back shows there) cannot lead the front.
-  let sources: [number, number][] = [...shared].filter(([v, z]) => graph.nbrs.has(v) && z < zMerge).map(([v, z]) => [v, Math.max(z, zFoot)]);
+  const late = onBoundary.filter(([, z]) => z >= zMerge).map(([v]): [number, number] => [v, 0]);
+  let sources: [number, number][] = onBoundary.filter(([, z]) => z < zMerge).map(([v, z]) => [v, Math.max(z, zFoot)]);
   if (sources.length === 0) return null;
   let d = graph.arrivals(xs, ys, sources.map(([v]): [number, number] => [v, 0]), 1);
   let [, dMax] = largest(d);
-  if (dMax === 0) {
-    const [end] = largest(graph.arrivals(xs, ys, [[tris[0]!, 0]], 1));
+  if (onBoundary.length === graph.nbrs.size) {
+    // Every vertex lies beside the winner, each from its own time: the front sweeps from one
+    // end (the farthest from the late vertices, which it reaches last) and waits for each.
+    const [end] = largest(graph.arrivals(xs, ys, late.length > 0 ? late : [[tris[0]!, 0]], 1));
     d = graph.arrivals(xs, ys, [[end, 0]], 1);
     [, dMax] = largest(d);
     if (dMax === 0) return null;
-    // Every vertex lies beside the winner, each from its own time: the front waits for it.
     const waits = new Map(lowest);
-    for (const [v, z] of shared) waits.set(v, Math.max(waits.get(v) ?? -Infinity, z));
+    for (const [v, z] of shared) if (z < zMerge) waits.set(v, Math.max(waits.get(v) ?? -Infinity, z));
     lowest = waits;
     sources = [[end, zFoot]];
   }

@@ -246,7 +246,7 @@ for (const zClass of ['b', 'd']) {
     const view = fitView(t.meta.extent, 1440, 40);
     const slice = await slicer(t, s, view);
     const colOf = (x: number): number => Math.floor((x - view.bbox[0]) / ((view.bbox[2] - view.bbox[0]) / view.width));
-    // Columns well inside X and inside Y (a pixel away from their sides), over 400 z past Z's merge.
+    // Columns well inside X and inside Y (a pixel away from their sides), at 401 z from 0 to past Z's merge (step 7).
     const shown = [new Set<number>(), new Set<number>()];
     for (let k = 0; k <= 400; k++) {
       const row = middleRow(slice((9 * k) / 400), view);

@@ -9,7 +9,8 @@
 //   receiving face as a merge of that part into it;
 // - simplification: each removed vertex's triangle, between the faces on either side; with
 //   `smooth`, tilted from the removed corner up to the removal. A smooth cube leaves out the
-//   re-emits of faces that end soon after (late-reemits.ts).
+//   re-emits of faces that end soon after (late-reemits.ts) and those a merge held back may
+//   cross (hold-line.ts).
 import { planeDeficit } from '../geom/plane-deficit.js';
 import { orient } from '../geom/predicates.js';
 import { scaleAtZ, zAtScale, type ScaleInfo } from '../../format/scale.js';
@@ -239,7 +240,7 @@ interface Held {
   face: number;
   area: AreaIndex;
   transition: MergeTransition;
-  /** The z until which it shows (its winner's own end), as far as known when it was last held. */
+  /** The z until which it shows (the end of the face of its winner's line that carries it on: returnOnLine), as far as known when it was last held. */
   until: number;
 }
 
@@ -270,8 +271,8 @@ export interface MergeTransition {
   tilted: boolean;
   /**
    * Held back (a smooth cube's cascade that would send the loser's area back to its class): the
-   * loser stays until its winner's own merge, whose ramp (zStart to zMerge) carries its area on
-   * to the winner's winner; it has no ramp of its own (first = end).
+   * loser stays until a merge or split further along its winner's line (hold-line.ts), whose ramp
+   * (zStart to zMerge) carries its area on; it has no ramp of its own (first = end).
    */
   held?: boolean;
   /** The faces held back in the loser's area whose areas this merge's ramp carries on (their lower face under it). */
@@ -316,8 +317,8 @@ export function reachBackZ(info: ScaleInfo, z: number): number {
 
 /**
  * The surfaces of the cube built from tGAP `input`, and the tGAP they name faces of: with
- * `smooth`, `input` without the re-emits of faces that end soon after (late-reemits.ts), whose
- * faces are the ones to write beside the surfaces.
+ * `smooth`, `input` without the re-emits of faces that end soon after (late-reemits.ts) and of
+ * those a hold may cross (hold-line.ts), whose faces are the ones to write beside the surfaces.
  */
 export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surfaces: Surfaces; stats: SurfaceStats; transitions: MergeTransition[]; splits: SplitTransition[]; origins: SurfaceOrigin[]; tgap: Tgap } {
   // The scale of every step: skipping re-emits keeps the tGAP's meta.
@@ -770,10 +771,11 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
 
   /**
    * Cascades that would send an area back to its class (smooth cubes): a loser of class A whose
-   * winner, of another class, soon merges into a face of class A (or is split, most of the
-   * loser's area going to faces of class A). Its area would show A, then the winner's class, then
-   * A again (flicker); instead the loser stays until the winner's own ramp carries its area on,
-   * so that its pixels keep class A throughout.
+   * winner, of another class, has a line (its merges and re-emits, in turn) that comes back to A
+   * within MAX_HOLD_RATIO: a face of it merges into a face of class A, or is split with some of
+   * the loser's area going to faces of class A (hold-line.ts). Its area would show A, then other
+   * classes, then A again (flicker); instead the loser stays until that face's ramp carries its
+   * area on, so that its pixels keep class A throughout.
    * Per face, the faces held back in its area; per face held back, the merge that carried it on.
    */
   const held = new Map<number, Held[]>();
@@ -906,7 +908,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         };
         const zOn = byFace ? holdUntil(e.loser, e.into, k, loserArea) : undefined;
         if (byFace && zOn !== undefined) {
-          // The loser's area keeps showing it until the winner's own merge carries it on.
+          // The loser's area keeps showing it until the face of the winner's line that brings it back carries it on.
           const inLoser = held.get(e.loser) ?? [];
           held.delete(e.loser);
           const transition: MergeTransition = { step: k, loser: e.loser, into: e.into, zStart: z0, zMerge: z0, zFoot, zFront: z0, tilted: false, held: true, first, end: first };
@@ -1091,6 +1093,9 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     });
     // Replaced faces: their whole area, as it is at the end of the step, drawn again.
     for (const [f, g] of reemits) {
+      // reemitsHeldAcross leaves out every re-emit a hold could cross: one kept would draw the
+      // face again over what is held in it.
+      if (held.has(f)) throw new Error(`smooth cube: the re-emit of face ${f} at step ${k} would cover faces held back in it (${held.get(f)!.map((h) => h.face).join(', ')})`);
       const first = out.count;
       stats.reemit += emitFace(g, k, phaseZ(k, REEMIT_PHASE), g, f);
       // Those of its slivers whose tGAP face is still there, the chord still its boundary (no later
@@ -1107,6 +1112,8 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       lieIn(g, first);
     }
   }
+  // Every hold ends at a step of its line (returnOnLine): none is left uncarried.
+  if (held.size > 0) throw new Error(`smooth cube: faces held back never carried on: ${[...held.values()].flat().map((h) => h.face).join(', ')}`);
   // A face held back ends where the merge that carried it on ends it.
   const cube: Tgap = carried.size === 0 ? t : { ...t, faces: faces.map((f, i) => {
     const c = carried.get(i);
