@@ -139,8 +139,8 @@ function evenFront(
   const late = onBoundary.filter(([, z]) => z >= zMerge).map(([v]): [number, number] => [v, 0]);
   let sources: [number, number][] = onBoundary.filter(([, z]) => z < zMerge).map(([v, z]) => [v, Math.max(z, zFoot)]);
   if (sources.length === 0) return null;
-  let d = graph.arrivals(xs, ys, sources.map(([v]): [number, number] => [v, 0]), 1);
-  let [, dMax] = largest(d);
+  let d: Map<number, number>;
+  let dMax: number;
   if (onBoundary.length === graph.nbrs.size) {
     // Every vertex lies beside the winner, each from its own time: the front sweeps from one
     // end (the farthest from the late vertices, which it reaches last) and waits for each.
@@ -152,6 +152,9 @@ function evenFront(
     for (const [v, z] of shared) if (z < zMerge) waits.set(v, Math.max(waits.get(v) ?? -Infinity, z));
     lowest = waits;
     sources = [[end, zFoot]];
+  } else {
+    d = graph.arrivals(xs, ys, sources.map(([v]): [number, number] => [v, 0]), 1);
+    [, dMax] = largest(d);
   }
   // From the earliest start across the farthest distance: without waits, and with every
   // source starting together, the farthest vertex gets zMerge exactly.

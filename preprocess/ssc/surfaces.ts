@@ -559,9 +559,10 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     // leave it before zMerge and lay flat.
     const shared = sharedTimes(sharedWithInto, loser, into, s, holds);
     if (holds && held.has(into)) {
-      const own = sharedTimes(sharedWithInto, loser, into, s, false).times;
+      let own: Map<number, number> | undefined;
       for (const piece of meshPieces(area)) {
         if (piece.some((v) => (shared.times.get(v) ?? Infinity) < zMerge)) continue;
+        own ??= sharedTimes(sharedWithInto, loser, into, s, false).times;
         for (const v of piece) {
           const z = own.get(v);
           if (z !== undefined) shared.times.set(v, z);
