@@ -306,7 +306,7 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
     for (const z of [0, zMax]) assert.deepEqual(smooth(view, z).ids, classic(view, z).ids, `z ${z}: smooth and classic differ`);
   });
 
-  await t.test('a zoom out shows no face coming back, and hardly a pixel going back to a class', (t) => {
+  await t.test('a zoom out shows no face coming back, and no pixel going back to a class', (t) => {
     // bench:smoothness's zoom over the whole extent, at 640x360.
     const view = fitView(tgap.meta.extent, 640, 360);
     const zs = zoomZs(scaleInfoOf(tgap), PIXEL_SIZE_MM, view);
@@ -321,13 +321,12 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
     assert.equal(s.faceReturns, 0);
     assert.equal(c.faceReturns, 0);
     // The tGAP sends some areas back to a class (a face merged into one of another class that
-    // soon merges into a face of the first); the smooth cube holds those merges back along the
-    // winner's line (hold-line.ts; on bgt_otterlo_1800m 15,237 px -> 30 at 1280x720).
-    // Measured here: 6 px of the 230,400, the classic cube 4 (both show a road corner the tGAP
-    // itself hands back and forth). Before the fronts were paced in zoom time and slivers handed
-    // back were left out (surfaces.ts givesBack), 31 px.
-    const domain = smooth(view, 0).ids.reduce((n, f) => n + (f > 0 ? 1 : 0), 0);
-    assert.ok(s.flickering <= c.flickering + 0.0001 * domain, `smooth ${s.flickering} px of ${domain}, classic ${c.flickering}`);
+    // soon merges into a face of the first): the classic cube shows them (4 px here). The smooth
+    // cube holds those merges back along the winner's line, and a split hands a hold on to the
+    // part whose face brings the class back (hold-line.ts, surfaces.ts followSplit; on
+    // bgt_otterlo_1800m 15,237 px -> 0 at 1280x720). Before splits handed holds on, 6 px here.
+    assert.ok(c.flickering > 0, 'the zoom meets the tGAP\'s own returns to a class');
+    assert.equal(s.flickering, 0, `smooth: ${s.examples.join('; ')}`);
   });
 
   await t.test('in every merge the share of the loser\'s area the winner has not taken falls monotonically from all to none, and what it took is attached to it', (t) => {

@@ -2,7 +2,7 @@
 import test from 'node:test';
 import assert from 'node:assert/strict';
 import { EventKind, phaseZ, REEMIT_PHASE, scaleInfoOf, type Tgap, type TgapEvent, type TgapFace } from '../../format/tgap-model.js';
-import { reemitsHeldAcross, returnOnLine } from './hold-line.js';
+import { reemitBefore, reemitsHeldAcross, returnOnLine } from './hold-line.js';
 
 const STEPS = 20;
 /** A face of class c alive from step lo to hi, then merged into `into` (-1: split or never; phase: its end phase). */
@@ -26,6 +26,12 @@ test('the line follows re-emits and merges into faces of its class to the merge 
   assert.equal(returnOnLine(LINE, 2, 0, STEPS, phaseZ(11, 0)), 4, 'just within the limit');
   assert.equal(returnOnLine(LINE, 2, 0, STEPS, phaseZ(11, 0) - 1e-9), -1, 'S ends past the limit');
   assert.equal(returnOnLine(LINE, 2, 2, STEPS, Infinity), -1, 'no face of class 2 on the line: it lives to the top');
+});
+
+test('a re-emit on the way to the face that brings the area back is seen; the returning face\'s own end is not on the way', () => {
+  assert.equal(reemitBefore(LINE, 2, 4), true, 'W is re-emitted as R');
+  assert.equal(reemitBefore(LINE, 3, 4), false, 'R merges into S');
+  assert.equal(reemitBefore(LINE, 5, 5), false, 'T itself, re-emitted after');
 });
 
 test('the line crosses other classes, and a split ends it', () => {

@@ -3,7 +3,7 @@
 // A, would show A, then B (and maybe more classes), then A again: flicker. The cube keeps the
 // loser until its area goes on to A. Where the area goes is the winner's line: the faces it is
 // merged into (or re-emitted as) in turn, until one of them merges into a face of class A, or is
-// split (which may give part of it back).
+// split (which may give part of it back, or hand it to a face whose own line comes back to A).
 import { EventKind, phaseZ, REEMIT_PHASE, type Tgap, type TgapFace } from '../../format/tgap-model.js';
 import { scaleAtZ, zAtScale, type ScaleInfo } from '../../format/scale.js';
 
@@ -22,6 +22,15 @@ export function returnOnLine(faces: readonly TgapFace[], into: number, cl: numbe
   throw new Error(`face ${into}: its line of merges and re-emits runs in a circle`);
 }
 
+/**
+ * Whether a face of `from`'s line before `end` (a face of it: returnOnLine) is re-emitted: a
+ * re-emit draws its face's whole area again, over what a hold keeps in it.
+ */
+export function reemitBefore(faces: readonly TgapFace[], from: number, end: number): boolean {
+  for (let f = from; f !== end; f = faces[f]!.mergedInto) if (faces[f]!.endPhase === REEMIT_PHASE) return true;
+  return false;
+}
+
 /** The latest z a hold that starts at z may last to: `maxRatio` times its scale. */
 export function holdLimitZ(info: ScaleInfo, z: number, maxRatio: number): number {
   return zAtScale(info, maxRatio * scaleAtZ(info, z));
@@ -36,7 +45,9 @@ export function holdLimitZ(info: ScaleInfo, z: number, maxRatio: number): number
  * (late-reemits.ts). The build's holds of this kind are among these (its split must give back
  * over the loser's area, and faces held inside the loser shorten the limit). Its other holds,
  * of a loser that holds faces still waiting, lie on the line of the hold that put them there:
- * covered too. The build throws if a kept re-emit would cover a held face.
+ * covered too. Holds that a split hands on to one of its parts (surfaces.ts, followSplit) are
+ * made only where no re-emit lies on the way (reemitBefore). The build throws if a kept
+ * re-emit would cover a held face.
  */
 export function reemitsHeldAcross(t: Tgap, info: ScaleInfo, maxRatio: number): Set<number> {
   const { faces } = t;

@@ -380,3 +380,75 @@ test('a face merged into a winner beside which only a held-back face shows goes 
   assert.ok(runs.size > 50);
   for (const [c, r] of runs) assert.deepEqual(r, ['d', 'a'], `column ${c}`);
 });
+
+//   +----- ... -----+--------+-+--+--+--------+--- ... ---+-+   V = [0,10]   class a
+//   |               |        | |  |  |        |           |b|   Y = [10,14]  class c
+//   |       V       |   Y    | |X |  |   B    |  b ...    |b|   R = [14,15]  class r (linear), with
+//   |               |        | |  |  |        |           |b|       X = [14.1,14.45] x [0.5,3.5]
+//   +----- ... -----+--------+-+--+--+--------+--- ... ---+-+       (class a) as a hole
+//                                   R                           B = [15,19]  class b; 6 fillers
+//                                                               of 60, 4 squares of 1, class b
+// X merges into the road R (step 5), R is split (step 6), the part over X going to Y (left of
+// the road's middle), and Y merges into V (step 8): X's area would show a, r, c, a. The split
+// hands X's hold on to Y, whose line brings a back; X shows until Y's ramp carries it on.
+test('a face held back in a road that is split stays, held back in the face a part goes to, when that face\'s line brings its class back', async () => {
+  const hole: [number, number][] = [[14.1, 0.5], [14.1, 3.5], [14.45, 3.5], [14.45, 0.5]];
+  const faces: FixtureFace[] = [
+    { cls: 'a', rings: [rect(0, 0, 10, 4)] },
+    { cls: 'c', rings: [rect(10, 0, 14, 4)] },
+    { cls: 'r', rings: [rect(14, 0, 15, 4), hole] },
+    { cls: 'a', rings: [[...hole].reverse()] },
+    { cls: 'b', rings: [rect(15, 0, 19, 4)] },
+  ];
+  for (let i = 0; i < 6; i++) faces.push({ cls: 'b', rings: [rect(19 + 15 * i, 0, 34 + 15 * i, 4)] });
+  for (let j = 0; j < 4; j++) faces.push({ cls: 'b', rings: [rect(109, j, 110, j + 1)] });
+  const names = ['a', 'c', 'r', 'b'];
+  // b and c go together reluctantly: B goes to the fillers, Y to V.
+  const t = fixtureTgap(faces, names, fixtureStyle([{ key: 'a' }, { key: 'c' }, { key: 'r', linear: true }, { key: 'b' }], { b: { c: 0.5 }, c: { b: 0.5 } }));
+  const V = 1, Y = 2, R = 3, X = 4;
+  const split = t.events.find((e) => e.kind === EventKind.Split)!;
+  assert.deepEqual([t.events.find((e) => e.loser === X)!.into, split.loser, t.events.find((e) => e.loser === Y)!.into], [R, R, V], 'the fixture');
+  assert.deepEqual([X, R, Y].map((f) => t.faces[f]!.stepHigh), [5, 6, 8], 'the fixture');
+  const smooth = buildSurfaces(t, { smooth: true });
+  const x = smooth.transitions.find((m) => m.loser === X)!, y = smooth.transitions.find((m) => m.loser === Y)!;
+  assert.equal(smooth.stats.splitFollows, 1);
+  assert.equal(x.held, true);
+  assert.deepEqual([x.zStart, x.zMerge, smooth.tgap.faces[X]!.stepHigh, smooth.tgap.faces[X]!.mergedInto], [y.zStart, y.zMerge, 8, V], 'X ends with Y\'s ramp, into V');
+  // Sliced at 400 z up to where V's own merge (step 9) starts: per column of the road's middle
+  // row, the classes shown in order (each run once).
+  const zEnd = smooth.transitions.find((m) => m.loser === V)!.zStart;
+  assert.ok(zEnd > y.zMerge);
+  const view = fitView([13.8, 1.6, 15.2, 2.4], 280, 160);
+  const runs = async (b: ReturnType<typeof buildSurfaces>): Promise<Map<number, string[]>> => {
+    const slice = await slicer(b.tgap, b.surfaces, view);
+    const out = new Map<number, string[]>();
+    for (let k = 0; k <= 400; k++) {
+      middleRow(slice((zEnd * k) / 400), view).forEach((f, c) => {
+        const xc = view.bbox[0] + ((c + 0.5) * (view.bbox[2] - view.bbox[0])) / view.width;
+        if (xc < 14.02 || xc > 14.98) return;
+        const r = out.get(c) ?? [];
+        const cls = names[b.tgap.faces[f]!.classIndex]!;
+        if (r.at(-1) !== cls) r.push(cls);
+        out.set(c, r);
+      });
+    }
+    return out;
+  };
+  const inX = (c: number): boolean => {
+    const xc = view.bbox[0] + ((c + 0.5) * (view.bbox[2] - view.bbox[0])) / view.width;
+    return xc > 14.12 && xc < 14.43;
+  };
+  const classic = await runs(buildSurfaces(t));
+  for (const [c, r] of classic) if (inX(c)) assert.deepEqual(r, ['a', 'r', 'c', 'a'], `classic column ${c}`);
+  let xCols = 0;
+  for (const [c, r] of await runs(smooth)) {
+    // X's pixels keep a; the road's never come back to a class they left.
+    if (inX(c)) {
+      xCols++;
+      assert.deepEqual(r, ['a'], `column ${c}, in X`);
+    } else {
+      assert.equal(new Set(r).size, r.length, `column ${c}, in the road: ${r.join(' ')}`);
+    }
+  }
+  assert.ok(xCols > 50, `${xCols} columns in X`);
+});

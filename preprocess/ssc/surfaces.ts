@@ -14,12 +14,12 @@
 import { planeDeficit } from '../geom/plane-deficit.js';
 import { orient } from '../geom/predicates.js';
 import { scaleAtZ, zAtScale, type ScaleInfo } from '../../format/scale.js';
-import { EventKind, faceEndZ, faceStartZ, LAST_REMOVAL_PHASE, phaseZ, REEMIT_PHASE, replacedFaces, resolveFace, resolveFaceAt, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
+import { EventKind, faceEndZ, faceStartZ, LAST_REMOVAL_PHASE, phaseZ, REEMIT_PHASE, replacedFaces, resolveFace, resolveFaceAt, scaleInfoOf, type Tgap, type TgapEvent } from '../../format/tgap-model.js';
 import { smoothMergeZ } from './smooth-merge.js';
 import { EdgeSideTimes, Side } from './edge-side-times.js';
 import { edgeKey, splitChords } from './split-chords.js';
 import { skipLateReemits } from './late-reemits.js';
-import { holdLimitZ, reemitsHeldAcross, returnOnLine } from './hold-line.js';
+import { holdLimitZ, reemitBefore, reemitsHeldAcross, returnOnLine } from './hold-line.js';
 import { removalHeights } from './removal-heights.js';
 import { SurfacesByFace } from './surfaces-by-face.js';
 import { triangulateFace, type FaceEdge, type TriangulateStats } from './triangulate-face.js';
@@ -158,6 +158,8 @@ export interface SurfaceStats extends TriangulateStats {
   notchFallbacks: number;
   /** Parts of splits given to a face held back in their receiving face, which shows beside them. */
   splitPartsToHeld: number;
+  /** Faces held back in a split face that stay, held back in the face a part goes to (its line brings their class back). */
+  splitFollows: number;
   /** Removals' triangles given likewise to a face held back in their upper face. */
   removalsToHeld: number;
   /** Merges whose loser goes likewise to a face held back in the winner. */
@@ -327,7 +329,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   const steps = t.meta.steps;
   const zTop = steps + 1;
   const out = new Surfaces(t.xs, t.ys);
-  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0, heldMerges: 0, skippedRemovals: 0, notchFallbacks: 0, splitPartsToHeld: 0, removalsToHeld: 0, mergesToHeld: 0, apexes: 0 };
+  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0, heldMerges: 0, skippedRemovals: 0, notchFallbacks: 0, splitPartsToHeld: 0, splitFollows: 0, removalsToHeld: 0, mergesToHeld: 0, apexes: 0 };
   const { xs, ys, faces, edges } = t;
   // Edges by the state they start and end in.
   const born: number[][] = Array.from({ length: steps + 2 }, () => []);
@@ -552,6 +554,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   const emitTilted = (
     byFace: SurfacesByFace, area: number[], loser: number, into: number, s: number, sharedWithInto: number[], zFoot: number, zMerge: number, key: string, kind: 'merge' | 'split',
     winner: WinnerIds = { members: [into], levels: [] }, lowerOf: (a: number, b: number, c: number) => number = () => loser, holds = true,
+    upperOf?: (a: number, b: number, c: number) => number | undefined,
   ): Ramp => {
     // A vertex of the shared boundary may start once the winner lies beside it; where faces
     // held back in the winner show along all of it that a piece of the area touches (more than
@@ -569,7 +572,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         }
       }
     }
-    return emitRamp(byFace, area, loser, shared.times, shared.segments, zFoot, zMerge, key, kind, winner, lowerOf);
+    return emitRamp(byFace, area, loser, shared.times, shared.segments, zFoot, zMerge, key, kind, winner, lowerOf, upperOf);
   };
   /**
    * Per vertex of the loser's boundary with `into` (edges `sharedWithInto`, state s, with the
@@ -602,8 +605,9 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   /** emitTilted's ramp, from the shared boundary's times. */
   const emitRamp = (
     byFace: SurfacesByFace, area: number[], loser: number, shared: ReadonlyMap<number, number>, segments: ReadonlySet<string>, zFoot: number, zMerge: number, key: string, kind: 'merge' | 'split',
-    winner: WinnerIds, lowerOf: (a: number, b: number, c: number) => number,
+    winner: WinnerIds, lowerOf: (a: number, b: number, c: number) => number, upperOf?: (a: number, b: number, c: number) => number | undefined,
   ): Ramp => {
+    if (upperOf && winner.levels.length > 0) throw new Error(`ramp ${key}: an upper face per triangle and the winner's re-emit levels do not go together`);
     const own = splitChords(area, out.xs, out.ys, (v) => shared.has(v), (a, b) => segments.has(edgeKey(a, b)), (x, y) => out.addVertex(x, y));
     stats[kind] += own.length / 3;
     stats.chordSplits += (own.length - area.length) / 3;
@@ -640,11 +644,11 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     };
     /** Per re-emit level, the outlines of what the winner has taken by then. */
     const taken: number[][][] = levels.map(() => []);
-    const emitOne = (a: number, b: number, c: number, lower: number): void => {
+    const emitOne = (a: number, b: number, c: number, lower: number, up: number): void => {
       const zs = [zOf(a), zOf(b), zOf(c)];
       zLow = Math.min(zLow, ...zs);
       if (levels.length === 0) {
-        out.addTilted(a, b, c, zs[0]!, zs[1]!, zs[2]!, upper, lower, `${key}${lower === loser ? '' : `/${lower}`}`);
+        out.addTilted(a, b, c, zs[0]!, zs[1]!, zs[2]!, up, lower, `${key}${lower === loser ? '' : `/${lower}`}${up === upper ? '' : `^${up}`}`);
         return;
       }
       // Each part between the winner's re-emits shows the id the winner has there (a piece has one upper and one lower face).
@@ -662,23 +666,24 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     for (let i = 0; i < own.length; i += 3) {
       const a = own[i]!, b = own[i + 1]!, c = own[i + 2]!;
       const lower = lowerOf(a, b, c);
+      const up = upperOf?.(a, b, c) ?? upper;
       if (!z) {
-        out.add(a, b, c, zMerge, upper, lower);
+        out.add(a, b, c, zMerge, up, lower);
         continue;
       }
       const za = zOf(a);
-      if (za === zOf(b) && za === zOf(c) && za < zMerge && faces[lower]!.classIndex !== faces[upper]!.classIndex) {
+      if (za === zOf(b) && za === zOf(c) && za < zMerge && faces[lower]!.classIndex !== faces[up]!.classIndex) {
         // All three corners wait at one z (above an older surface): flat, its area would change
         // class at once. An apex at its centre, half way to zMerge, makes it recede from its
         // sides to the centre instead; above the corners, it stays above what they wait for.
         const m = out.addVertex((out.xs[a]! + out.xs[b]! + out.xs[c]!) / 3, (out.ys[a]! + out.ys[b]! + out.ys[c]!) / 3);
         apexes.set(m, za + (zMerge - za) / 2);
         stats.apexes++;
-        emitOne(a, b, m, lower);
-        emitOne(b, c, m, lower);
-        emitOne(c, a, m, lower);
+        emitOne(a, b, m, lower, up);
+        emitOne(b, c, m, lower, up);
+        emitOne(c, a, m, lower, up);
       } else {
-        emitOne(a, b, c, lower);
+        emitOne(a, b, c, lower, up);
       }
     }
     const end = out.count;
@@ -782,6 +787,35 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   const held = new Map<number, Held[]>();
   const splitOf = new Map(t.events.filter((e) => e.kind === EventKind.Split).map((e) => [e.loser, e]));
   const carried = new Map<number, { step: number; into: number }>();
+  /** The centre of triangle i of a split's triangulation. */
+  const splitCentre = (split: TgapEvent, i: number): [number, number] => {
+    const tv = split.tris!;
+    const [a, b, c] = [tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!];
+    return [(xs[a]! + xs[b]! + xs[c]!) / 3, (ys[a]! + ys[b]! + ys[c]!) / 3];
+  };
+  /** Whether a split gives some of `area` (a triangle's centre in it) to a face of class cl. */
+  const givesBackTo = (split: TgapEvent, area: AreaIndex, cl: number): boolean => {
+    const tf = split.triFaces!;
+    for (let i = 0; i < tf.length; i++) if (faces[tf[i]!]!.classIndex === cl && area.contains(...splitCentre(split, i))) return true;
+    return false;
+  };
+  /**
+   * Where a split may hand on the hold of a face of class cl held back since zFirst in `area`:
+   * to the face, not of class cl, that takes most of the area whose own line brings cl back
+   * (returnOnLine) within MAX_HOLD_RATIO of zFirst, with no re-emit on the way; and until when.
+   * That part of the area would show cl, the part's class, then cl again.
+   */
+  const followSplit = (split: TgapEvent, area: AreaIndex, cl: number, zFirst: number): { into: number; until: number } | undefined => {
+    const tf = split.triFaces!;
+    const over = new Map<number, number>();
+    for (let i = 0; i < tf.length; i++) if (faces[tf[i]!]!.classIndex !== cl && area.contains(...splitCentre(split, i))) over.set(tf[i]!, (over.get(tf[i]!) ?? 0) + 1);
+    const zLast = holdLimitZ(scaleInfo, zFirst, MAX_HOLD_RATIO);
+    for (const [into] of [...over].sort((p, q) => q[1] - p[1] || p[0] - q[0])) {
+      const end = returnOnLine(faces, into, cl, steps, zLast);
+      if (end >= 0 && !reemitBefore(faces, into, end)) return { into, until: phaseZ(faces[end]!.stepHigh, 0) };
+    }
+    return undefined;
+  };
   /**
    * The z up to which the loser's merge into `into` at step k is held back (undefined: not
    * held); `loserArea` gives the loser's area, triangulated only when a split needs it.
@@ -804,17 +838,12 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     if (end < 0) return undefined;
     const zOn = phaseZ(faces[end]!.stepHigh, 0);
     if (faces[end]!.mergedInto > 0) return zOn;
-    // Split: part of what it gives away over the loser's area goes to faces of the loser's class.
+    // Split: part of what it gives away over the loser's area goes to faces of the loser's
+    // class, or the split can hand the hold on to a part whose face's line brings it back.
     const split = splitOf.get(end);
     if (!split) return undefined;
-    const area = loserArea();
-    const tv = split.tris!, tf = split.triFaces!;
-    for (let i = 0; i < tf.length; i++) {
-      if (faces[tf[i]!]!.classIndex !== cl) continue;
-      const [a, b, c] = [tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!];
-      if (area.contains((xs[a]! + xs[b]! + xs[c]!) / 3, (ys[a]! + ys[b]! + ys[c]!) / 3)) return zOn;
-    }
-    return undefined;
+    if (givesBackTo(split, loserArea(), cl)) return zOn;
+    return !reemitBefore(faces, into, end) && followSplit(split, loserArea(), cl, zFirst) ? zOn : undefined;
   };
   /** Under a ramp over the loser's area lies the loser, or a face held back in it (undefined: none held). */
   const lowerUnder = (loser: number): ((a: number, b: number, c: number) => number) | undefined => {
@@ -965,6 +994,22 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
           }
           let zStart = z0;
           const lowerOf = lowerUnder(e.loser);
+          // Faces held back in the split face that a part's face brings back to their class
+          // (followSplit) stay, held back in that face: the part's triangles over them are
+          // theirs (the road between them and the split line too, as far as those triangles go).
+          // Parts of their class carry them on where they lie, as they would without.
+          const follows = new Map<number, { h: Held; gained: number[] }[]>();
+          const inSplit = held.get(e.loser) ?? [];
+          for (const h of inSplit) {
+            const cl = faces[h.face]!.classIndex;
+            const f = followSplit(e, h.area, cl, h.transition.zMerge);
+            if (!f) continue;
+            h.until = f.until;
+            let l = follows.get(f.into);
+            if (!l) follows.set(f.into, (l = []));
+            l.push({ h, gained: [] });
+            stats.splitFollows++;
+          }
           for (const [into, area] of [...byInto].sort((p, q) => p[0] - q[0])) {
             const first = out.count;
             const shared = sharedEdges(e.loser, into, k - 1);
@@ -973,7 +1018,15 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
             const shownAs = h?.face ?? into;
             const zFoot = Math.max(SURFACE_GAP, reachBack(z0), faceStartZ(faces[shownAs]!) + SURFACE_GAP);
             const shown = withoutSlivers(e.loser, area);
-            const part = emitTilted(byFace, shown, e.loser, into, k - 1, shared, zFoot, z0, `p${ev}:${shownAs}`, 'split', { members: [shownAs], levels: [] }, lowerOf, !h);
+            const staying = follows.get(into);
+            const upperOf = staying && ((a: number, b: number, c: number): number | undefined => {
+              const x = (out.xs[a]! + out.xs[b]! + out.xs[c]!) / 3, y = (out.ys[a]! + out.ys[b]! + out.ys[c]!) / 3;
+              const f = staying.find((q) => q.h.area.contains(x, y));
+              f?.gained.push(a, b, c);
+              return f?.h.face;
+            });
+            const part = emitTilted(byFace, shown, e.loser, into, k - 1, shared, zFoot, z0, `p${ev}:${shownAs}`, 'split', { members: [shownAs], levels: [] }, lowerOf, !h, upperOf);
+            for (const f of staying ?? []) f.h.area.add(f.gained, out.xs, out.ys);
             if (part.zStart < z0) stats.tiltedSplits++;
             if (h) {
               h.area.add(shown, xs, ys);
@@ -983,6 +1036,14 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
             lieIn(into, first);
             origin('split', k, e.loser, shownAs, first);
           }
+          // The faces that stay move on to the face that took them; the others end with the split.
+          const moving = new Set([...follows.values()].flat().map((f) => f.h));
+          if (moving.size > 0) {
+            const rest = inSplit.filter((h) => !moving.has(h));
+            if (rest.length > 0) held.set(e.loser, rest);
+            else held.delete(e.loser);
+          }
+          for (const [into, l] of follows) held.set(into, [...(held.get(into) ?? []), ...l.map((f) => f.h)].sort((a, b) => a.transition.zMerge - b.transition.zMerge));
           const carries = carryOn(e.loser, k, -1, zStart, z0);
           splits.push({ step: k, loser: e.loser, zStart, zSplit: z0, ...(carries ? { carries } : {}) });
         } else {
