@@ -12,9 +12,10 @@ import type { MergeTransition, Surfaces } from './surfaces.js';
  */
 export function mergeTriangles(s: Surfaces, transitions: readonly MergeTransition[], t?: Pick<Tgap, 'faces'>): number[][] {
   const replaced = t ? replacedFaces(t.faces) : undefined;
-  return transitions.map(({ first, end, loser, into, carries }) => {
+  return transitions.map(({ first, end, loser, into, carries, shownAs }) => {
     if (!(first >= 0 && first <= end && end <= s.count)) throw new Error(`merge of ${loser} into ${into}: triangles ${first}..${end} not in the surfaces (${s.count})`);
-    const winner = replaced ? winnerIds(replaced, into) : new Set([into]);
+    // A loser given to a face held back in the winner (shownAs) is taken by that face.
+    const winner = shownAs !== undefined ? new Set([shownAs]) : replaced ? winnerIds(replaced, into) : new Set([into]);
     const out: number[] = [];
     for (let i = first; i < end; i++) {
       if ((s.lower[i] !== loser && !carries?.includes(s.lower[i]!)) || !winner.has(s.upper[i]!)) throw new Error(`merge of ${loser} into ${into}: triangle ${i} is between ${s.lower[i]} and ${s.upper[i]}`);
