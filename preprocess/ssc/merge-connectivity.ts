@@ -70,7 +70,8 @@ export interface MergeConnectivity {
 export function mergeConnectivity(t: Tgap, s: Surfaces, transitions: readonly MergeTransition[], samples = 8): MergeConnectivity[] {
   const tilted = transitions.filter((m) => m.tilted);
   const tris = mergeTriangles(s, tilted, t);
-  const shared = sharedBoundaries(t, tilted, tris, s);
+  const heldIn = new Map(transitions.filter((m) => m.held).map((m) => [m.loser, m.into]));
+  const shared = sharedBoundaries(t, tilted, tris, s, heldIn);
   return tilted.map((m, k) => {
     const mine = tris[k]!;
     if (mine.length === 0) throw new Error(`merge of face ${m.loser} into ${m.into} (step ${m.step}) is marked tilted but has no triangles between z ${m.zStart} and ${m.zMerge}`);

@@ -12,10 +12,12 @@ import type { MergeTransition, Surfaces } from './surfaces.js';
  */
 export function mergeTriangles(s: Surfaces, transitions: readonly MergeTransition[], t?: Pick<Tgap, 'faces'>): number[][] {
   const replaced = t ? replacedFaces(t.faces) : undefined;
-  return transitions.map(({ first, end, loser, into, carries, shownAs }) => {
+  return transitions.map(({ first, end, loser, into, carries, shownAs, takers }) => {
     if (!(first >= 0 && first <= end && end <= s.count)) throw new Error(`merge of ${loser} into ${into}: triangles ${first}..${end} not in the surfaces (${s.count})`);
-    // A loser given to a face held back in the winner (shownAs) is taken by that face.
+    // A loser given to a face held back in the winner (shownAs) is taken by that face, and
+    // pieces of it by `takers`.
     const winner = shownAs !== undefined ? new Set([shownAs]) : replaced ? winnerIds(replaced, into) : new Set([into]);
+    for (const f of takers ?? []) winner.add(f);
     const out: number[] = [];
     for (let i = first; i < end; i++) {
       if ((s.lower[i] !== loser && !carries?.includes(s.lower[i]!)) || !winner.has(s.upper[i]!)) throw new Error(`merge of ${loser} into ${into}: triangle ${i} is between ${s.lower[i]} and ${s.upper[i]}`);
@@ -35,8 +37,18 @@ export function winnerIds(replaced: ReadonlyMap<number, number>, into: number): 
   return ids;
 }
 
-/** Per transition, the vertices of the edges between loser and winner in the state before the merge. */
-export function sharedBoundaries(t: Tgap, transitions: readonly MergeTransition[], tris: readonly number[][], s: Surfaces): Set<number>[] {
+/**
+ * Per transition, the vertices of the edges between loser and winner in the state before the
+ * merge. In a cube's faces (`tgap` of buildSurfaces) a face held back is still there, so the
+ * edges beside it are its own: the loser's side includes the held faces its ramp carries on
+ * (`carries`), and the winner's the faces held back in it that take the loser (`shownAs`) or
+ * pieces of it (`takers`), with the faces those were held back in (`heldIn`: loser -> winner of
+ * each held merge): an edge made after a taker's merge bears the face it merged into, though the
+ * taker still shows beside it.
+ * With the vertices that simplification removed from the edge's earlier versions: a smooth cube
+ * may leave a removal out (a sliver handed back), and its corner is still on the boundary.
+ */
+export function sharedBoundaries(t: Tgap, transitions: readonly MergeTransition[], tris: readonly number[][], s: Surfaces, heldIn: ReadonlyMap<number, number> = new Map()): Set<number>[] {
   // The edges (of any state) through each vertex.
   const edgesAt = new Map<number, number[]>();
   t.edges.forEach((e, i) => {
@@ -46,8 +58,26 @@ export function sharedBoundaries(t: Tgap, transitions: readonly MergeTransition[
       if (l[l.length - 1] !== i) l.push(i);
     }
   });
+  /** Edge e's vertices, and those its earlier versions lost to simplification, into `out`. */
+  const withAncestors = (e: number, out: Set<number>): void => {
+    const seen = new Set<number>();
+    const todo = [e];
+    while (todo.length > 0) {
+      const i = todo.pop()!;
+      if (seen.has(i)) continue;
+      seen.add(i);
+      const edge = t.edges[i]!;
+      if (i === e) for (const v of edge.verts) out.add(v);
+      for (const v of edge.removed) out.add(v);
+      for (const p of edge.parents) todo.push(p >= 0 ? p : -p - 1);
+    }
+  };
   return transitions.map((m, k) => {
     const state = m.step - 1;
+    const winning = new Set([m.into]);
+    for (const f of [...(m.shownAs !== undefined ? [m.shownAs] : []), ...(m.takers ?? [])]) {
+      for (let g: number | undefined = f; g !== undefined && g !== m.into && !winning.has(g); g = heldIn.get(g)) winning.add(g);
+    }
     const shared = new Set<number>();
     const tried = new Set<number>();
     for (const i of tris[k]!) {
@@ -58,7 +88,9 @@ export function sharedBoundaries(t: Tgap, transitions: readonly MergeTransition[
           const edge = t.edges[e]!;
           if (edge.stepLow > state || edge.stepHigh <= state) continue;
           const l = resolveFace(t.faces, edge.left, state), r = resolveFace(t.faces, edge.right, state);
-          if ((l === m.loser && r === m.into) || (l === m.into && r === m.loser)) for (const v of edge.verts) shared.add(v);
+          const losing = (f: number): boolean => f === m.loser || (m.carries?.includes(f) ?? false);
+          const other = losing(l) ? r : losing(r) ? l : -1;
+          if (winning.has(other)) withAncestors(e, shared);
         }
       }
     }

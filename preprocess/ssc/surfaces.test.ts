@@ -22,6 +22,7 @@ import { fixtureStyle, fixtureTgap, rect, type FixtureFace } from '../../testing
 import { fitView, type View } from '../map/rasterize.js';
 import { assembleChunk } from './assemble-chunk.js';
 import { CpuSlicer, sliceChunk } from './cpu-slicer.js';
+import { mergeConnectivity, violates } from './merge-connectivity.js';
 import { buildSurfaces, SURFACE_GAP, type Surfaces } from './surfaces.js';
 
 const W = 1, L = 2, Z = 3;
@@ -362,6 +363,9 @@ test('a face merged into a winner beside which only a held-back face shows goes 
   // X, and P's area with it, ends with Y's merge into Z.
   assert.deepEqual([x.zMerge, cube.faces[X]!.stepHigh, cube.faces[X]!.mergedInto], [y.zMerge, 7, Z]);
   for (let i = p.first; i < p.end; i++) assert.equal(s.upper[i], X, `P's ramp triangle ${i}`);
+  // What X gains touches it at every z of the transition (the check knows the edges beside X
+  // as X's, though the tGAP names them Y's).
+  assert.deepEqual(mergeConnectivity(cube, s, transitions).filter(violates).map((c) => c.transition.loser), []);
   // Sliced at 300 z: the pond's pixels show d, then a (X, then Z); never b.
   const view = fitView([0, 1.6, 1, 2.4], 200, 160);
   const slice = await slicer(t, s, view);
@@ -451,4 +455,51 @@ test('a face held back in a road that is split stays, held back in the face a pa
     }
   }
   assert.ok(xCols > 50, `${xCols} columns in X`);
+});
+
+// The pond above between two held faces: X1 = [0,1] x [0,2] and X2 = [0,1] x [2,4] (class a),
+// each with half of the pond P = [0.25,0.75] x [1.5,2.5] (class d, weighted 8) cut out. Both
+// merge into Y (held back: Y then merges into Z, of class a), then P into Y: P's boundary with
+// Y is X1's and X2's, no one face's, and Y shows beside none of it before Y's own merge.
+test('a piece of a loser beside which only faces held back in the winner show goes to one of them, tilted, and stays attached to it', async () => {
+  const faces: FixtureFace[] = [
+    { cls: 'a', rings: [[[0, 0], [1, 0], [1, 2], [0.75, 2], [0.75, 1.5], [0.25, 1.5], [0.25, 2], [0, 2]]] },
+    { cls: 'a', rings: [[[0, 2], [0.25, 2], [0.25, 2.5], [0.75, 2.5], [0.75, 2], [1, 2], [1, 4], [0, 4]]] },
+    { cls: 'b', rings: [rect(1, 0, 5, 4)] },
+    { cls: 'a', rings: [rect(5, 0, 13, 4)] },
+    { cls: 'd', rings: [rect(0.25, 1.5, 0.75, 2.5)] },
+  ];
+  for (let i = 0; i < 6; i++) faces.push({ cls: 'c', rings: [rect(13 + 10 * i, 0, 23 + 10 * i, 4)] });
+  for (let j = 0; j < 4; j++) faces.push({ cls: 'c', rings: [rect(73, j, 74, j + 1)] });
+  const names = ['a', 'b', 'c', 'd'];
+  const t = fixtureTgap(faces, names, fixtureStyle([{ key: 'a' }, { key: 'b' }, { key: 'c' }, { key: 'd', weight: 8 }]));
+  const X1 = 1, X2 = 2, Y = 3, P = 5;
+  assert.deepEqual([X1, X2, P].map((f) => t.events.find((e) => e.loser === f)!.into), [Y, Y, Y], 'the fixture');
+  const b = buildSurfaces(t, { smooth: true });
+  const p = b.transitions.find((m) => m.loser === P)!;
+  assert.deepEqual([X1, X2].map((f) => b.transitions.find((m) => m.loser === f)!.held), [true, true]);
+  assert.equal(p.shownAs, undefined, 'no one held face shows along all of P');
+  assert.equal(p.tilted, true);
+  assert.equal(p.takers?.length, 1);
+  const taker = p.takers[0];
+  assert.ok(taker === X1 || taker === X2);
+  for (let i = p.first; i < p.end; i++) assert.equal(b.surfaces.upper[i], taker, `P's ramp triangle ${i}`);
+  // What the taker gains touches it at every z of the transition (exact, on the triangles).
+  assert.deepEqual(mergeConnectivity(b.tgap, b.surfaces, b.transitions).filter(violates).map((c) => c.transition.loser), []);
+  // Sliced at 300 z: the pond's pixels show d, then a; never Y's b.
+  const view = fitView([0, 1.6, 1, 2.4], 200, 160);
+  const slice = await slicer(t, b.surfaces, view);
+  const runs = new Map<number, string[]>();
+  for (let k = 0; k <= 300; k++) {
+    middleRow(slice((9 * k) / 300), view).forEach((f, c) => {
+      const xc = (c + 0.5) / 200;
+      if (xc < 0.3 || xc > 0.7) return;
+      const r = runs.get(c) ?? [];
+      const cls = names[b.tgap.faces[f]!.classIndex]!;
+      if (r.at(-1) !== cls) r.push(cls);
+      runs.set(c, r);
+    });
+  }
+  assert.ok(runs.size > 50);
+  for (const [c, r] of runs) assert.deepEqual(r, ['d', 'a'], `column ${c}`);
 });

@@ -158,6 +158,8 @@ export interface SurfaceStats extends TriangulateStats {
   notchFallbacks: number;
   /** Parts of splits given to a face held back in their receiving face, which shows beside them. */
   splitPartsToHeld: number;
+  /** Faces held back in a winner that took a piece of a loser's (or split part's) area that the winner lay beside nowhere. */
+  piecesToHeld: number;
   /** Faces held back in a split face that stay, held back in the face a part goes to (its line brings their class back). */
   splitFollows: number;
   /** Removals' triangles given likewise to a face held back in their upper face. */
@@ -223,6 +225,8 @@ interface Ramp {
   end: number;
   /** The earliest z its front could leave the shared boundary (zMerge: none), before any wait above older surfaces. */
   zFront: number;
+  /** Faces held back in the winner that took pieces of the area the winner lies beside nowhere (emitTilted). */
+  takers?: number[];
 }
 
 /** A removed vertex's triangle (counterclockwise), passing from `lower` to `upper` at its phase. */
@@ -284,6 +288,8 @@ export interface MergeTransition {
    * their shared boundary (its ramp's upper face; its area then moves on with that face's).
    */
   shownAs?: number;
+  /** Faces held back in the winner that took the pieces of the loser's area beside which only they lay (as shownAs takes all of it). */
+  takers?: number[];
   /**
    * Its ramp's triangles in the surfaces: from `first` up to (not including) `end`; their upper
    * face is the winner (`shownAs` when set), or the id it had before a re-emit during the
@@ -329,7 +335,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   const steps = t.meta.steps;
   const zTop = steps + 1;
   const out = new Surfaces(t.xs, t.ys);
-  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0, heldMerges: 0, skippedRemovals: 0, notchFallbacks: 0, splitPartsToHeld: 0, splitFollows: 0, removalsToHeld: 0, mergesToHeld: 0, apexes: 0 };
+  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0, heldMerges: 0, skippedRemovals: 0, notchFallbacks: 0, splitPartsToHeld: 0, splitFollows: 0, piecesToHeld: 0, removalsToHeld: 0, mergesToHeld: 0, apexes: 0 };
   const { xs, ys, faces, edges } = t;
   // Edges by the state they start and end in.
   const born: number[][] = Array.from({ length: steps + 2 }, () => []);
@@ -556,23 +562,86 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     winner: WinnerIds = { members: [into], levels: [] }, lowerOf: (a: number, b: number, c: number) => number = () => loser, holds = true,
     upperOf?: (a: number, b: number, c: number) => number | undefined,
   ): Ramp => {
-    // A vertex of the shared boundary may start once the winner lies beside it; where faces
-    // held back in the winner show along all of it that a piece of the area touches (more than
-    // one, or beside another part of the winner), once they do: else the piece's ramp could not
-    // leave it before zMerge and lay flat.
+    // A vertex of the shared boundary may start once the winner lies beside it, and only if
+    // the winner does (not only a face held back in it): what the winner takes stays attached
+    // to what shows of it.
     const shared = sharedTimes(sharedWithInto, loser, into, s, holds);
-    if (holds && held.has(into)) {
-      let own: Map<number, number> | undefined;
-      for (const piece of meshPieces(area)) {
-        if (piece.some((v) => (shared.times.get(v) ?? Infinity) < zMerge)) continue;
-        own ??= sharedTimes(sharedWithInto, loser, into, s, false).times;
-        for (const v of piece) {
-          const z = own.get(v);
-          if (z !== undefined) shared.times.set(v, z);
+    if (!held.has(into)) return emitRamp(byFace, area, loser, shared.times, shared.segments, zFoot, zMerge, key, kind, winner, lowerOf, upperOf);
+    const taker = winner.members[winner.members.length - 1]!;
+    const beside = facesBeside(sharedWithInto, loser, into, s);
+    for (const [v, fs] of beside) if (!fs.has(taker)) shared.times.set(v, Math.max(shared.times.get(v) ?? zMerge, zMerge));
+    // A piece of the area (connected) that the winner lies beside nowhere before zMerge goes to
+    // the face shown beside most of its boundary (held back in the winner), from when that face
+    // lay there; else its ramp could not leave the boundary and would lie flat. With the
+    // winner's re-emit levels (one upper face per level) it stays the winner's, from the
+    // boundary's times without the holds.
+    let own: Map<number, number> | undefined;
+    const pieceFace = new Map<number, number>();
+    for (const piece of meshPieces(area)) {
+      if (piece.some((v) => (shared.times.get(v) ?? Infinity) < zMerge)) continue;
+      const count = new Map<number, number>();
+      for (const v of piece) for (const f of beside.get(v) ?? []) if (f !== taker) count.set(f, (count.get(f) ?? 0) + 1);
+      let h = -1, most = 0;
+      for (const [f, n] of count) if (n > most || (n === most && f < h)) [h, most] = [f, n];
+      own ??= sharedTimes(sharedWithInto, loser, into, s, false).times;
+      // With no held face beside it, or with re-emit levels, the winner's (held back on the
+      // way, the times ignore the holds).
+      const keep = h < 0 || winner.levels.length > 0;
+      for (const v of piece) {
+        const z = own.get(v);
+        if (z !== undefined && (keep || beside.get(v)?.has(h))) shared.times.set(v, z);
+        if (!keep) pieceFace.set(v, h);
+      }
+    }
+    if (pieceFace.size === 0) return emitRamp(byFace, area, loser, shared.times, shared.segments, zFoot, zMerge, key, kind, winner, lowerOf, upperOf);
+    const gained = new Map<number, number[]>();
+    const ramp = emitRamp(byFace, area, loser, shared.times, shared.segments, zFoot, zMerge, key, kind, winner, lowerOf, (a, b, c) => {
+      const given = upperOf?.(a, b, c);
+      if (given !== undefined) return given;
+      const f = pieceFace.get(a) ?? pieceFace.get(b) ?? pieceFace.get(c);
+      if (f === undefined) return undefined;
+      let l = gained.get(f);
+      if (!l) gained.set(f, (l = []));
+      l.push(a, b, c);
+      return f;
+    });
+    // What they take moves on with them.
+    for (const h of held.get(into)!) {
+      const l = gained.get(h.face);
+      if (l) h.area.add(l, out.xs, out.ys);
+    }
+    stats.piecesToHeld += gained.size;
+    return { ...ramp, takers: [...gained.keys()].sort((a, b) => a - b) };
+  };
+  /**
+   * Per vertex of the loser's boundary with `into` (edges `sharedWithInto`, state s, with the
+   * loser's notches), the faces shown just beside its segments on into's side: into itself, or
+   * a face held back in it (innermost first).
+   */
+  const facesBeside = (sharedWithInto: number[], loser: number, into: number, s: number): Map<number, Set<number>> => {
+    const inInto = held.get(into) ?? [];
+    const out = new Map<number, Set<number>>();
+    for (const e of sharedWithInto) {
+      const toward = sideOf(e, into, s) === Side.Left ? 1 : -1;
+      const verts = chainFor(e, loser);
+      for (let i = 0; i + 1 < verts.length; i++) {
+        const p = verts[i]!, q = verts[i + 1]!;
+        const [x, y] = besidePoint(p, q, toward);
+        const f = inInto.find((h) => h.area.contains(x, y))?.face ?? into;
+        for (const v of [p, q]) {
+          let set = out.get(v);
+          if (!set) out.set(v, (set = new Set()));
+          set.add(f);
         }
       }
     }
-    return emitRamp(byFace, area, loser, shared.times, shared.segments, zFoot, zMerge, key, kind, winner, lowerOf, upperOf);
+    return out;
+  };
+  /** The point a millionth of segment p-q's length off its middle, on its left (`toward` 1) or right (-1). */
+  const besidePoint = (p: number, q: number, toward: 1 | -1): [number, number] => {
+    const dx = xs[q]! - xs[p]!, dy = ys[q]! - ys[p]!;
+    // Left of p -> q is (-dy, dx).
+    return [(xs[p]! + xs[q]!) / 2 - toward * dy * 1e-6, (ys[p]! + ys[q]!) / 2 + toward * dx * 1e-6];
   };
   /**
    * Per vertex of the loser's boundary with `into` (edges `sharedWithInto`, state s, with the
@@ -635,10 +704,13 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       return id;
     };
     const hasArea = (o: readonly number[]): boolean => {
+      // Relative to the first corner: a sliver a centimetre wide still has area where
+      // coordinates are in the millions.
+      const x0 = out.xs[o[0]!]!, y0 = out.ys[o[0]!]!;
       let twice = 0;
-      for (let i = 0; i < o.length; i++) {
-        const p = o[i]!, q = o[(i + 1) % o.length]!;
-        twice += out.xs[p]! * out.ys[q]! - out.xs[q]! * out.ys[p]!;
+      for (let i = 1; i + 1 < o.length; i++) {
+        const p = o[i]!, q = o[i + 1]!;
+        twice += (out.xs[p]! - x0) * (out.ys[q]! - y0) - (out.xs[q]! - x0) * (out.ys[p]! - y0);
       }
       return twice !== 0;
     };
@@ -866,10 +938,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     if (!inInto) return undefined;
     const found = new Set<Held>();
     for (let i = 0; i + 1 < segments.length; i += 2) {
-      const p = segments[i]!, q = segments[i + 1]!;
-      const dx = xs[q]! - xs[p]!, dy = ys[q]! - ys[p]!;
-      // Left of p -> q is (-dy, dx).
-      const x = (xs[p]! + xs[q]!) / 2 - toward * dy * 1e-6, y = (ys[p]! + ys[q]!) / 2 + toward * dx * 1e-6;
+      const [x, y] = besidePoint(segments[i]!, segments[i + 1]!, toward);
       const h = inInto.find((c) => c.area.contains(x, y));
       if (h) found.add(h);
     }
@@ -975,7 +1044,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
           stats.merge += emitFace(e.loser, k - 1, z0, e.into, e.loser);
           ramp.end = out.count;
         }
-        transitions.push({ step: k, loser: e.loser, into: e.into, zStart: ramp.zStart, zMerge: z0, zFoot, zFront: ramp.zFront, tilted: ramp.zStart < z0, first, end: ramp.end, ...(carries ? { carries } : {}), ...(shownAs ? { shownAs: shownAs.face } : {}) });
+        transitions.push({ step: k, loser: e.loser, into: e.into, zStart: ramp.zStart, zMerge: z0, zFoot, zFront: ramp.zFront, tilted: ramp.zStart < z0, first, end: ramp.end, ...(carries ? { carries } : {}), ...(shownAs ? { shownAs: shownAs.face } : {}), ...(ramp.takers ? { takers: ramp.takers } : {}) });
         origin('merge', k, e.loser, shownAs?.face ?? e.into, first);
         // The winner grows; the loser's neighbours now border the winner (or the held face that took it, until its hold ends).
         relabel(e.loser, z0, before);
