@@ -63,8 +63,13 @@ for (const smooth of [false, true]) describe(`GPU slicing equals the CPU referen
       if (e <= zSlack && gpu.lower[k] === cpu.lower[k]) continue;
       const [x, y] = at(k % W, Math.floor(k / W));
       if (tris.nearEdge(x, y, v.resolution / 16)) continue;
-      // The face below (blending's other colour) is the one below that surface.
+      // The face below (blending's other colour) is the one below that surface. Where the slice
+      // crosses a surface within the tolerance, the GPU may take the surface below it instead,
+      // with the same upper face (a face held back that a split hands on has a surface over its
+      // own area) and another face below.
       if (gpu.lower[k] !== cpu.lower[k]) {
+        const s = cpu.sliceZ(x, y);
+        if (tris.planesAt(x, y).some((p) => Math.abs(p.z - s) <= zTolerance(p, k, s))) continue;
         zMismatches.push(`(${k % W},${Math.floor(k / W)}) face ${cpu.ids[k]}: GPU lower face ${gpu.lower[k]}, CPU ${cpu.lower[k]}`);
         continue;
       }

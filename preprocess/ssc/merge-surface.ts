@@ -58,8 +58,9 @@ export function sharedBoundaries(t: Tgap, transitions: readonly MergeTransition[
       if (l[l.length - 1] !== i) l.push(i);
     }
   });
-  /** Edge e's vertices, and those its earlier versions lost to simplification, into `out`. */
+  /** Edge e's vertices, and those its earlier versions lost to simplification, into `out` (not kept per edge: sets along a chain of hundreds of versions would grow with its square). */
   const withAncestors = (e: number, out: Set<number>): void => {
+    for (const v of t.edges[e]!.verts) out.add(v);
     const seen = new Set<number>();
     const todo = [e];
     while (todo.length > 0) {
@@ -67,7 +68,6 @@ export function sharedBoundaries(t: Tgap, transitions: readonly MergeTransition[
       if (seen.has(i)) continue;
       seen.add(i);
       const edge = t.edges[i]!;
-      if (i === e) for (const v of edge.verts) out.add(v);
       for (const v of edge.removed) out.add(v);
       for (const p of edge.parents) todo.push(p >= 0 ? p : -p - 1);
     }

@@ -158,7 +158,7 @@ export interface SurfaceStats extends TriangulateStats {
   notchFallbacks: number;
   /** Parts of splits given to a face held back in their receiving face, which shows beside them. */
   splitPartsToHeld: number;
-  /** Faces held back in a winner that took a piece of a loser's (or split part's) area that the winner lay beside nowhere. */
+  /** Pieces of a loser's (or split part's) area that the winner lay beside nowhere, given to a face held back in it. */
   piecesToHeld: number;
   /** Faces held back in a split face that stay, held back in the face a part goes to (its line brings their class back). */
   splitFollows: number;
@@ -584,34 +584,53 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       let h = -1, most = 0;
       for (const [f, n] of count) if (n > most || (n === most && f < h)) [h, most] = [f, n];
       own ??= sharedTimes(sharedWithInto, loser, into, s, false).times;
-      // With no held face beside it, or with re-emit levels, the winner's (held back on the
-      // way, the times ignore the holds).
+      // With no held face beside it, or with re-emit levels, the winner's, from the times
+      // without the holds.
       const keep = h < 0 || winner.levels.length > 0;
       for (const v of piece) {
         const z = own.get(v);
         if (z !== undefined && (keep || beside.get(v)?.has(h))) shared.times.set(v, z);
         if (!keep) pieceFace.set(v, h);
       }
+      if (!keep) stats.piecesToHeld++;
     }
-    if (pieceFace.size === 0) return emitRamp(byFace, area, loser, shared.times, shared.segments, zFoot, zMerge, key, kind, winner, lowerOf, upperOf);
-    const gained = new Map<number, number[]>();
+    if (winner.levels.length > 0) return emitRamp(byFace, area, loser, shared.times, shared.segments, zFoot, zMerge, key, kind, winner, lowerOf, upperOf);
+    // The pieces' own areas, for a triangle of new vertices only (the middle of a triangle whose
+    // three sides are chords).
+    const pieceAreas = new Map<number, AreaIndex>();
+    for (let i = 0; i < area.length; i += 3) {
+      const f = pieceFace.get(area[i]!);
+      if (f === undefined) continue;
+      const tri = [area[i]!, area[i + 1]!, area[i + 2]!];
+      const a = pieceAreas.get(f);
+      if (a) a.add(tri, out.xs, out.ys);
+      else pieceAreas.set(f, new AreaIndex(tri, out.xs, out.ys));
+    }
+    // Each triangle's upper face: what a face held back in the winner takes joins its area and
+    // moves on with it (none of the parts or pieces others take).
+    const byUpper = new Map<number, number[]>();
     const ramp = emitRamp(byFace, area, loser, shared.times, shared.segments, zFoot, zMerge, key, kind, winner, lowerOf, (a, b, c) => {
-      const given = upperOf?.(a, b, c);
-      if (given !== undefined) return given;
-      const f = pieceFace.get(a) ?? pieceFace.get(b) ?? pieceFace.get(c);
-      if (f === undefined) return undefined;
-      let l = gained.get(f);
-      if (!l) gained.set(f, (l = []));
+      let f = upperOf?.(a, b, c) ?? pieceFace.get(a) ?? pieceFace.get(b) ?? pieceFace.get(c);
+      if (f === undefined && pieceAreas.size > 0) {
+        const x = (out.xs[a]! + out.xs[b]! + out.xs[c]!) / 3, y = (out.ys[a]! + out.ys[b]! + out.ys[c]!) / 3;
+        for (const [g, pa] of pieceAreas) {
+          if (!pa.contains(x, y)) continue;
+          f = g;
+          break;
+        }
+      }
+      f ??= taker;
+      let l = byUpper.get(f);
+      if (!l) byUpper.set(f, (l = []));
       l.push(a, b, c);
       return f;
     });
-    // What they take moves on with them.
     for (const h of held.get(into)!) {
-      const l = gained.get(h.face);
+      const l = byUpper.get(h.face);
       if (l) h.area.add(l, out.xs, out.ys);
     }
-    stats.piecesToHeld += gained.size;
-    return { ...ramp, takers: [...gained.keys()].sort((a, b) => a - b) };
+    const takers = [...pieceAreas.keys()].filter((f) => byUpper.has(f)).sort((p, q) => p - q);
+    return takers.length > 0 ? { ...ramp, takers } : ramp;
   };
   /**
    * Per vertex of the loser's boundary with `into` (edges `sharedWithInto`, state s, with the
@@ -737,8 +756,11 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     };
     for (let i = 0; i < own.length; i += 3) {
       const a = own[i]!, b = own[i + 1]!, c = own[i + 2]!;
-      const lower = lowerOf(a, b, c);
       const up = upperOf?.(a, b, c) ?? upper;
+      // A face held back in the loser that stays (a split hands it on) is the upper face over
+      // its own area: the lower one is then the loser (a surface never has one face both sides).
+      const under = lowerOf(a, b, c);
+      const lower = under === up ? loser : under;
       if (!z) {
         out.add(a, b, c, zMerge, up, lower);
         continue;
@@ -865,26 +887,49 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     const [a, b, c] = [tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!];
     return [(xs[a]! + xs[b]! + xs[c]!) / 3, (ys[a]! + ys[b]! + ys[c]!) / 3];
   };
-  /** Whether a split gives some of `area` (a triangle's centre in it) to a face of class cl. */
+  /**
+   * Whether a split gives some of `area` to a face of class cl: one of its triangles for such a
+   * face has its centre, or a point just inside one of its corners, in the area (a road's split
+   * triangles span the road, and may reach into an area beside it only at a corner).
+   */
   const givesBackTo = (split: TgapEvent, area: AreaIndex, cl: number): boolean => {
-    const tf = split.triFaces!;
-    for (let i = 0; i < tf.length; i++) if (faces[tf[i]!]!.classIndex === cl && area.contains(...splitCentre(split, i))) return true;
+    const tv = split.tris!, tf = split.triFaces!;
+    for (let i = 0; i < tf.length; i++) {
+      if (faces[tf[i]!]!.classIndex !== cl) continue;
+      const [cx, cy] = splitCentre(split, i);
+      if (area.contains(cx, cy)) return true;
+      for (let j = 0; j < 3; j++) {
+        const v = tv[3 * i + j]!;
+        if (area.contains(xs[v]! + (cx - xs[v]!) * 0.01, ys[v]! + (cy - ys[v]!) * 0.01)) return true;
+      }
+    }
     return false;
   };
   /**
    * Where a split may hand on the hold of a face of class cl held back since zFirst in `area`:
    * to the face, not of class cl, that takes most of the area whose own line brings cl back
-   * (returnOnLine) within MAX_HOLD_RATIO of zFirst, with no re-emit on the way; and until when.
+   * (returnOnLine: a merge into a face of class cl, or a split giving some of the area to cl)
+   * within MAX_HOLD_RATIO of zFirst, with no re-emit on the way; and until when.
    * That part of the area would show cl, the part's class, then cl again.
    */
   const followSplit = (split: TgapEvent, area: AreaIndex, cl: number, zFirst: number): { into: number; until: number } | undefined => {
-    const tf = split.triFaces!;
-    const over = new Map<number, number>();
-    for (let i = 0; i < tf.length; i++) if (faces[tf[i]!]!.classIndex !== cl && area.contains(...splitCentre(split, i))) over.set(tf[i]!, (over.get(tf[i]!) ?? 0) + 1);
+    const tv = split.tris!, tf = split.triFaces!;
+    /** Per face taking some of the area, its triangles there. */
+    const over = new Map<number, number[]>();
+    for (let i = 0; i < tf.length; i++) {
+      if (faces[tf[i]!]!.classIndex === cl || !area.contains(...splitCentre(split, i))) continue;
+      let l = over.get(tf[i]!);
+      if (!l) over.set(tf[i]!, (l = []));
+      l.push(tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!);
+    }
     const zLast = holdLimitZ(scaleInfo, zFirst, MAX_HOLD_RATIO);
-    for (const [into] of [...over].sort((p, q) => q[1] - p[1] || p[0] - q[0])) {
+    for (const [into, taken] of [...over].sort((p, q) => q[1].length - p[1].length || p[0] - q[0])) {
       const end = returnOnLine(faces, into, cl, steps, zLast);
-      if (end >= 0 && !reemitBefore(faces, into, end)) return { into, until: phaseZ(faces[end]!.stepHigh, 0) };
+      if (end < 0 || reemitBefore(faces, into, end)) continue;
+      // A split at the end must give some of the area back to cl, as for any hold: of the area
+      // itself, or of the triangles it would hold in `into` (the part's own, often wider).
+      const last = splitOf.get(end);
+      if (faces[end]!.mergedInto > 0 || (last && (givesBackTo(last, area, cl) || givesBackTo(last, new AreaIndex(taken, xs, ys), cl)))) return { into, until: phaseZ(faces[end]!.stepHigh, 0) };
     }
     return undefined;
   };
@@ -1030,7 +1075,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
             triangulate(e.loser, k - 1);
             ramp = emitTilted(byFace, tris, e.loser, e.into, k - 1, shared, Math.max(zFoot, faceStartZ(faces[h.face]!) + SURFACE_GAP), z0, `m${ev}`, 'merge', { members: [h.face], levels: [] }, lowerUnder(e.loser), false);
             if (ramp.zStart < z0) stats.tiltedMerges++;
-            h.area.add(tris, xs, ys);
+            // (emitTilted adds to h's area what it takes.)
             stats.mergesToHeld++;
             shownAs = h;
           } else {
@@ -1095,12 +1140,11 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
               return f?.h.face;
             });
             const part = emitTilted(byFace, shown, e.loser, into, k - 1, shared, zFoot, z0, `p${ev}:${shownAs}`, 'split', { members: [shownAs], levels: [] }, lowerOf, !h, upperOf);
-            for (const f of staying ?? []) f.h.area.add(f.gained, out.xs, out.ys);
+            // A face that stays shows from now on where this part's triangles are its own; the
+            // rest of its area went to other parts. (emitTilted adds to h's area what it takes.)
+            for (const f of staying ?? []) if (f.gained.length > 0) f.h.area = new AreaIndex(f.gained, out.xs, out.ys);
             if (part.zStart < z0) stats.tiltedSplits++;
-            if (h) {
-              h.area.add(shown, xs, ys);
-              stats.splitPartsToHeld++;
-            }
+            if (h) stats.splitPartsToHeld++;
             zStart = Math.min(zStart, part.zStart);
             lieIn(into, first);
             origin('split', k, e.loser, shownAs, first);
