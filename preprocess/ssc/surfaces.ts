@@ -756,11 +756,11 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     };
     for (let i = 0; i < own.length; i += 3) {
       const a = own[i]!, b = own[i + 1]!, c = own[i + 2]!;
+      const lower = lowerOf(a, b, c);
+      // A face held back in the loser that stays (a split hands it on) is also the upper face
+      // over its own area: lower and upper are then one face, so blending toward the lower face
+      // changes nothing there.
       const up = upperOf?.(a, b, c) ?? upper;
-      // A face held back in the loser that stays (a split hands it on) is the upper face over
-      // its own area: the lower one is then the loser (a surface never has one face both sides).
-      const under = lowerOf(a, b, c);
-      const lower = under === up ? loser : under;
       if (!z) {
         out.add(a, b, c, zMerge, up, lower);
         continue;
