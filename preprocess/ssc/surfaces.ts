@@ -10,7 +10,8 @@
 // - simplification: each removed vertex's triangle, between the faces on either side; with
 //   `smooth`, tilted from the removed corner up to the removal. A smooth cube leaves out the
 //   re-emits of faces that end soon after (late-reemits.ts) and those a merge held back may
-//   cross (hold-line.ts).
+//   cross (hold-line.ts); a face held back keeps showing until its winner's line brings its
+//   class back, handed on by a split to the part whose face's line does (followSplit).
 import { planeDeficit } from '../geom/plane-deficit.js';
 import { orient } from '../geom/predicates.js';
 import { scaleAtZ, zAtScale, type ScaleInfo } from '../../format/scale.js';
@@ -562,9 +563,10 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     winner: WinnerIds = { members: [into], levels: [] }, lowerOf: (a: number, b: number, c: number) => number = () => loser, holds = true,
     upperOf?: (a: number, b: number, c: number) => number | undefined,
   ): Ramp => {
-    // A vertex of the shared boundary may start once the winner lies beside it, and only if
-    // the winner does (not only a face held back in it): what the winner takes stays attached
-    // to what shows of it.
+    // A vertex of the shared boundary may start once the winner lies beside it, and only where
+    // the ramp's upper face (`taker`: the winner, or the face held back in it that takes the
+    // area) shows beside it, not only another face held back in the winner: what the winner
+    // takes stays attached to what shows of it.
     const shared = sharedTimes(sharedWithInto, loser, into, s, holds);
     if (!held.has(into)) return emitRamp(byFace, area, loser, shared.times, shared.segments, zFoot, zMerge, key, kind, winner, lowerOf, upperOf);
     const taker = winner.members[winner.members.length - 1]!;
