@@ -78,6 +78,7 @@ export function sharedBoundaries(t: Tgap, transitions: readonly MergeTransition[
     for (const f of [...(m.shownAs !== undefined ? [m.shownAs] : []), ...(m.takers ?? [])]) {
       for (let g: number | undefined = f; g !== undefined && g !== m.into && !winning.has(g); g = heldIn.get(g)) winning.add(g);
     }
+    const losing = (f: number): boolean => f === m.loser || (m.carries?.includes(f) ?? false);
     const shared = new Set<number>();
     const tried = new Set<number>();
     for (const i of tris[k]!) {
@@ -88,7 +89,6 @@ export function sharedBoundaries(t: Tgap, transitions: readonly MergeTransition[
           const edge = t.edges[e]!;
           if (edge.stepLow > state || edge.stepHigh <= state) continue;
           const l = resolveFace(t.faces, edge.left, state), r = resolveFace(t.faces, edge.right, state);
-          const losing = (f: number): boolean => f === m.loser || (m.carries?.includes(f) ?? false);
           const other = losing(l) ? r : losing(r) ? l : -1;
           if (winning.has(other)) withAncestors(e, shared);
         }

@@ -64,6 +64,18 @@ export class Surfaces {
     this.vertexCount = xs.length;
   }
 
+  /** The centre of the triangle with corners a, b, c (vertex ids). */
+  centre(a: number, b: number, c: number): [number, number] {
+    return [(this.xs[a]! + this.xs[b]! + this.xs[c]!) / 3, (this.ys[a]! + this.ys[b]! + this.ys[c]!) / 3];
+  }
+
+  /** The vertex ids of triangles first..end (not included) whose upper face is `face`. */
+  trianglesOf(first: number, end: number, face: number): number[] {
+    const out: number[] = [];
+    for (let i = first; i < end; i++) if (this.upper[i] === face) out.push(this.v[3 * i]!, this.v[3 * i + 1]!, this.v[3 * i + 2]!);
+    return out;
+  }
+
   /** A new vertex at (x, y); returns its id. */
   addVertex(x: number, y: number): number {
     if (this.vertexCount === this.xs.length) {
@@ -608,31 +620,24 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       if (a) a.add(tri, out.xs, out.ys);
       else pieceAreas.set(f, new AreaIndex(tri, out.xs, out.ys));
     }
-    // Each triangle's upper face: what a face held back in the winner takes joins its area and
-    // moves on with it (none of the parts or pieces others take).
-    const byUpper = new Map<number, number[]>();
+    const first = out.count;
     const ramp = emitRamp(byFace, area, loser, shared.times, shared.segments, zFoot, zMerge, key, kind, winner, lowerOf, (a, b, c) => {
-      let f = upperOf?.(a, b, c) ?? pieceFace.get(a) ?? pieceFace.get(b) ?? pieceFace.get(c);
-      if (f === undefined && pieceAreas.size > 0) {
-        const x = (out.xs[a]! + out.xs[b]! + out.xs[c]!) / 3, y = (out.ys[a]! + out.ys[b]! + out.ys[c]!) / 3;
-        for (const [g, pa] of pieceAreas) {
-          if (!pa.contains(x, y)) continue;
-          f = g;
-          break;
-        }
-      }
-      f ??= taker;
-      let l = byUpper.get(f);
-      if (!l) byUpper.set(f, (l = []));
-      l.push(a, b, c);
-      return f;
+      const f = upperOf?.(a, b, c) ?? pieceFace.get(a) ?? pieceFace.get(b) ?? pieceFace.get(c);
+      if (f !== undefined || pieceAreas.size === 0) return f;
+      const [x, y] = out.centre(a, b, c);
+      for (const [g, pa] of pieceAreas) if (pa.contains(x, y)) return g;
+      return undefined;
     });
+    // What a face held back in the winner took (the taker's part, or pieces) joins its area and
+    // moves on with it.
+    const takers: number[] = [];
     for (const h of held.get(into)!) {
-      const l = byUpper.get(h.face);
-      if (l) h.area.add(l, out.xs, out.ys);
+      const l = out.trianglesOf(first, ramp.end, h.face);
+      if (l.length === 0) continue;
+      h.area.add(l, out.xs, out.ys);
+      if (pieceAreas.has(h.face)) takers.push(h.face);
     }
-    const takers = [...pieceAreas.keys()].filter((f) => byUpper.has(f)).sort((p, q) => p - q);
-    return takers.length > 0 ? { ...ramp, takers } : ramp;
+    return takers.length > 0 ? { ...ramp, takers: takers.sort((p, q) => p - q) } : ramp;
   };
   /**
    * Per vertex of the loser's boundary with `into` (edges `sharedWithInto`, state s, with the
@@ -772,7 +777,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         // All three corners wait at one z (above an older surface): flat, its area would change
         // class at once. An apex at its centre, half way to zMerge, makes it recede from its
         // sides to the centre instead; above the corners, it stays above what they wait for.
-        const m = out.addVertex((out.xs[a]! + out.xs[b]! + out.xs[c]!) / 3, (out.ys[a]! + out.ys[b]! + out.ys[c]!) / 3);
+        const m = out.addVertex(...out.centre(a, b, c));
         apexes.set(m, za + (zMerge - za) / 2);
         stats.apexes++;
         emitOne(a, b, m, lower, up);
@@ -884,11 +889,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   const splitOf = new Map(t.events.filter((e) => e.kind === EventKind.Split).map((e) => [e.loser, e]));
   const carried = new Map<number, { step: number; into: number }>();
   /** The centre of triangle i of a split's triangulation. */
-  const splitCentre = (split: TgapEvent, i: number): [number, number] => {
-    const tv = split.tris!;
-    const [a, b, c] = [tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!];
-    return [(xs[a]! + xs[b]! + xs[c]!) / 3, (ys[a]! + ys[b]! + ys[c]!) / 3];
-  };
+  const splitCentre = (split: TgapEvent, i: number): [number, number] => out.centre(split.tris![3 * i]!, split.tris![3 * i + 1]!, split.tris![3 * i + 2]!);
   /**
    * Whether a split gives some of `area` to a face of class cl: one of its triangles for such a
    * face has its centre, or a point just inside one of its corners, in the area (a road's split
@@ -969,7 +970,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     const inLoser = held.get(loser);
     if (!inLoser) return undefined;
     return (a, b, c) => {
-      const x = (out.xs[a]! + out.xs[b]! + out.xs[c]!) / 3, y = (out.ys[a]! + out.ys[b]! + out.ys[c]!) / 3;
+      const [x, y] = out.centre(a, b, c);
       return inLoser.find((h) => h.area.contains(x, y))?.face ?? loser;
     };
   };
@@ -1114,7 +1115,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
           // (followSplit) stay, held back in that face: the part's triangles over them are
           // theirs (the road between them and the split line too, as far as those triangles go).
           // Parts of their class carry them on where they lie, as they would without.
-          const follows = new Map<number, { h: Held; gained: number[] }[]>();
+          const follows = new Map<number, Held[]>();
           const inSplit = held.get(e.loser) ?? [];
           for (const h of inSplit) {
             const cl = faces[h.face]!.classIndex;
@@ -1123,7 +1124,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
             h.until = f.until;
             let l = follows.get(f.into);
             if (!l) follows.set(f.into, (l = []));
-            l.push({ h, gained: [] });
+            l.push(h);
             stats.splitFollows++;
           }
           for (const [into, area] of [...byInto].sort((p, q) => p[0] - q[0])) {
@@ -1136,15 +1137,16 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
             const shown = withoutSlivers(e.loser, area);
             const staying = follows.get(into);
             const upperOf = staying && ((a: number, b: number, c: number): number | undefined => {
-              const x = (out.xs[a]! + out.xs[b]! + out.xs[c]!) / 3, y = (out.ys[a]! + out.ys[b]! + out.ys[c]!) / 3;
-              const f = staying.find((q) => q.h.area.contains(x, y));
-              f?.gained.push(a, b, c);
-              return f?.h.face;
+              const [x, y] = out.centre(a, b, c);
+              return staying.find((q) => q.area.contains(x, y))?.face;
             });
             const part = emitTilted(byFace, shown, e.loser, into, k - 1, shared, zFoot, z0, `p${ev}:${shownAs}`, 'split', { members: [shownAs], levels: [] }, lowerOf, !h, upperOf);
             // A face that stays shows from now on where this part's triangles are its own; the
             // rest of its area went to other parts. (emitTilted adds to h's area what it takes.)
-            for (const f of staying ?? []) if (f.gained.length > 0) f.h.area = new AreaIndex(f.gained, out.xs, out.ys);
+            for (const q of staying ?? []) {
+              const l = out.trianglesOf(first, part.end, q.face);
+              if (l.length > 0) q.area = new AreaIndex(l, out.xs, out.ys);
+            }
             if (part.zStart < z0) stats.tiltedSplits++;
             if (h) stats.splitPartsToHeld++;
             zStart = Math.min(zStart, part.zStart);
@@ -1152,13 +1154,13 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
             origin('split', k, e.loser, shownAs, first);
           }
           // The faces that stay move on to the face that took them; the others end with the split.
-          const moving = new Set([...follows.values()].flat().map((f) => f.h));
+          const moving = new Set([...follows.values()].flat());
           if (moving.size > 0) {
             const rest = inSplit.filter((h) => !moving.has(h));
             if (rest.length > 0) held.set(e.loser, rest);
             else held.delete(e.loser);
           }
-          for (const [into, l] of follows) held.set(into, [...(held.get(into) ?? []), ...l.map((f) => f.h)].sort((a, b) => a.transition.zMerge - b.transition.zMerge));
+          for (const [into, l] of follows) held.set(into, [...(held.get(into) ?? []), ...l].sort((a, b) => a.transition.zMerge - b.transition.zMerge));
           const carries = carryOn(e.loser, k, -1, zStart, z0);
           splits.push({ step: k, loser: e.loser, zStart, zSplit: z0, ...(carries ? { carries } : {}) });
         } else {
