@@ -5,7 +5,10 @@
 // keeps a pixel whose centre lies within half the width). The width is the rule's times the
 // smaller of the line's and the rule's ramp shares at that z (format/line-ramp.ts, rampShare),
 // so lines grow as they appear and shrink as they go; the segment's ends are where their
-// glides have taken them at that z (format/line-glide.ts). Premultiplied over the map.
+// glides have taken them at that z (format/line-glide.ts).
+// Written as (rule, coverage) into the line pass's coverage target, not blended: the depth
+// test keeps the largest coverage per pixel (then the later rule), so where segments overlap
+// (a line's joins, crossings) a pixel is painted once, by line-composite.frag.
 precision highp float;
 
 uniform sampler2D uSurface;  // R32F: z of the slicing surface per pixel
@@ -19,10 +22,10 @@ flat in vec2 vAT;
 flat in vec2 vBT;
 flat in vec4 vGlide;
 flat in float vHalf;
-flat in vec4 vColour;
+flat in float vRule;
 in vec2 vP;
 
-out vec4 oColour;
+out vec4 oCover;  // (rule, coverage) twice: the pass's colour mask keeps casing (rg) or fill (ba)
 
 // z0, z0Full, z1Full, z1: 0 at the ends, 1 between the full points, linear in z between.
 float share(vec4 r, float z) {
@@ -48,7 +51,9 @@ void main() {
   float l2 = dot(ab, ab);
   float t = l2 > 0.0 ? clamp(dot(vP - a, ab) / l2, 0.0, 1.0) : 0.0;
   float d = length(vP - (a + t * ab));
-  float cover = clamp(vHalf * s + 0.5 - d, 0.0, 1.0) * vColour.a;
+  // In the target's 8 bits, so that depth and colour agree on which fragment won.
+  float cover = floor(clamp(vHalf * s + 0.5 - d, 0.0, 1.0) * 255.0 + 0.5);
   if (cover <= 0.0) discard;
-  oColour = vec4(vColour.rgb * cover, cover);
+  oCover = vec4(vRule, cover, vRule, cover) / 255.0;
+  gl_FragDepth = ((255.0 - cover) * 256.0 + (255.0 - vRule) + 0.5) / 65536.0;
 }

@@ -34,18 +34,19 @@ flat out vec2 vAT;         // the glides' targets, device pixels from the view c
 flat out vec2 vBT;
 flat out vec4 vGlide;
 flat out float vHalf;      // half width, device pixels
-flat out vec4 vColour;
+flat out float vRule;
 out vec2 vP;               // this point, device pixels from the view centre
 
 void main() {
   int rule = int(aRule);
   vec4 sizes = texelFetch(uRules, ivec2(rule, 2), 0);
-  vColour = texelFetch(uRules, ivec2(rule, uCasing), 0);
+  float alpha = texelFetch(uRules, ivec2(rule, uCasing), 0).a;
+  vRule = float(rule);
   vHalf = 0.5 * (uCasing == 1 ? sizes.y : sizes.x) * uPxPerMm;
   vRuleRamp = texelFetch(uRules, ivec2(rule, 3), 0);
   vLineRamp = aLineRamp;
   vZ = vec2(max(aZ.x, vRuleRamp.x), min(aZ.y, vRuleRamp.w));
-  if (vColour.a <= 0.0 || vHalf <= 0.0 || vZ.x >= vZ.y || vZ.y <= uSliceRange.x || vZ.x > uSliceRange.y) {
+  if (alpha <= 0.0 || vHalf <= 0.0 || vZ.x >= vZ.y || vZ.y <= uSliceRange.x || vZ.x > uSliceRange.y) {
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
     return;
   }

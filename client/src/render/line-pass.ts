@@ -2,6 +2,12 @@
 // overlays. Every casing first, then every fill, so lines that meet look joined. Lines are
 // anti-aliased in the shader and drawn on the canvas, not accumulated with the supersampled
 // map: each frame draws them sharp at the unjittered view.
+// Segments overlap where they join, and a line's anti-aliased edge blended twice there would
+// bead (a translucent or thin line darker at every vertex). So the segments first write their
+// coverage into a target where the depth test keeps, per pixel, the largest (casings in two
+// channels, fills in two others), and one full-screen pass then paints each pixel once.
+import fullscreenVert from '../../shaders/fullscreen.vert?raw';
+import compositeFrag from '../../shaders/line-composite.frag?raw';
 import lineFrag from '../../shaders/line.frag?raw';
 import lineVert from '../../shaders/line.vert?raw';
 import { PIXEL_SIZE_MM } from '../../../format/pixel-size.js';
@@ -12,9 +18,13 @@ import type { Targets } from './targets.js';
 
 export class LinePass {
   private readonly program: Program;
+  private readonly composite: Program;
+  private readonly emptyVao: WebGLVertexArrayObject;
 
   constructor(private readonly gl: WebGL2RenderingContext) {
     this.program = new Program(gl, lineVert, lineFrag, 'line pass');
+    this.composite = new Program(gl, fullscreenVert, compositeFrag, 'line composite');
+    this.emptyVao = gl.createVertexArray();
   }
 
   /**
@@ -30,12 +40,13 @@ export class LinePass {
     for (const c of chunks) segments += c.prepare(gl, sliceRange[0], sliceRange[1], zWindow);
     const p = this.program;
     p.use();
-    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, targets.linesFb);
     gl.viewport(0, 0, targets.width, targets.height);
-    gl.disable(gl.DEPTH_TEST);
-    gl.enable(gl.BLEND);
-    gl.blendEquation(gl.FUNC_ADD);
-    gl.blendFunc(gl.ONE, gl.ONE_MINUS_SRC_ALPHA);
+    gl.clearBufferfv(gl.COLOR, 0, new Float32Array([0, 0, 0, 0]));
+    gl.disable(gl.BLEND);
+    gl.enable(gl.DEPTH_TEST);
+    gl.depthFunc(gl.LESS);
+    gl.depthMask(true);
     gl.activeTexture(gl.TEXTURE0);
     gl.bindTexture(gl.TEXTURE_2D, targets.surface);
     gl.uniform1i(p.loc('uSurface'), 0);
@@ -48,6 +59,8 @@ export class LinePass {
     gl.uniform2f(p.loc('uSliceRange'), sliceRange[0], sliceRange[1]);
     const uOffset = p.loc('uOffset'), uCasing = p.loc('uCasing');
     for (const casing of [1, 0]) {
+      gl.clearBufferfv(gl.DEPTH, 0, [1]);
+      gl.colorMask(casing === 1, casing === 1, casing === 0, casing === 0);
       gl.uniform1i(uCasing, casing);
       for (const c of chunks) {
         // The origin's offset in float64, rounded once: positions stay small.
@@ -55,6 +68,20 @@ export class LinePass {
         c.draw(gl);
       }
     }
+    gl.colorMask(true, true, true, true);
+    gl.disable(gl.DEPTH_TEST);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.enable(gl.BLEND);
+    gl.blendEquation(gl.FUNC_ADD);
+    gl.blendFunc(gl.ONE, gl.ONE_MINUS_SRC_ALPHA);
+    const q = this.composite;
+    q.use();
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, targets.coverage);
+    gl.uniform1i(q.loc('uCover'), 0);
+    gl.uniform1i(q.loc('uRules'), 1);
+    gl.bindVertexArray(this.emptyVao);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
     gl.bindVertexArray(null);
     gl.disable(gl.BLEND);
     gl.blendFunc(gl.ONE, gl.ZERO);
@@ -67,5 +94,7 @@ export class LinePass {
 
   delete(): void {
     this.program.delete();
+    this.composite.delete();
+    this.gl.deleteVertexArray(this.emptyVao);
   }
 }
