@@ -1,5 +1,5 @@
 #version 300 es
-// Line pass: a quad around one segment of a cube line (one instance per segment), its corners
+// Line pass: a quad around one segment of a cube line (four vertices per segment), its corners
 // half the rule's width plus half a pixel (for anti-aliasing) out from the segment and past its ends,
 // so consecutive segments join round. A segment whose z range (intersected with its rule's
 // scale range) misses the slicing surface's z range over the view is moved out of clip space:
@@ -65,8 +65,8 @@ void main() {
   float reach = vHalf + 0.5;
   float lo = min(0.0, min(at.x, bt.x)) - reach, hi = max(len, max(at.x, bt.x)) + reach;
   float left = max(0.0, max(at.y, bt.y)) + reach, right = min(0.0, min(at.y, bt.y)) - reach;
-  // Strip order: a-left, a-right, b-left, b-right.
-  int v = gl_VertexID;
+  // Corners in this order: a-left, a-right, b-left, b-right (gpu-line-chunk.ts).
+  int v = gl_VertexID % 4;
   vP = vA + t * (v < 2 ? lo : hi) + n * (v % 2 == 0 ? left : right);
   gl_Position = vec4(vP / uHalfSize, 0.0, 1.0);
 }

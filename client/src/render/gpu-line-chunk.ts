@@ -1,6 +1,8 @@
-// A line chunk on the GPU: its segments as one instance buffer (each instance a quad around one
-// segment, line.vert, with its line's ramp: format/line-ramp.ts) and each segment's style rule,
-// bound in a vertex array object. The segments and their lines stay on the CPU too, for picking.
+// A line chunk on the GPU: a quad around each segment (line.vert), its four corners each
+// carrying the segment, its line's ramp (format/line-ramp.ts) and its style rule, bound in a
+// vertex array object. Not instanced: a software GPU (SwiftShader) sets up each instance as a
+// draw of its own, which cost more than the fragments of every line. The segments and their
+// lines stay on the CPU too, for picking.
 //
 // A slice meets only the segments alive at its z, a small part of a chunk's (each segment of
 // each simplified version of each line lives over a short z range). The buffers hold those that
@@ -13,8 +15,10 @@ import { payloadBytes, type LinePayload } from '../source/worker-protocol.js';
 
 /** Floats per segment: ax, ay, bx, by, z0, z1, atx, aty, btx, bty, aFrom, aTo, bFrom, bTo (LinePayload.segments). */
 export const SEGMENT_FLOATS = 14;
-/** Floats per instance: a segment's, then its line's ramp (z0, z0Full, z1Full, z1). */
-const INSTANCE_FLOATS = SEGMENT_FLOATS + 4;
+/** Floats per corner of a segment's quad: the segment's, then its line's ramp (z0, z0Full, z1Full, z1). */
+const CORNER_FLOATS = SEGMENT_FLOATS + 4;
+/** Two triangles of a quad, over its corners in line.vert's order (a-left, a-right, b-left, b-right). */
+const QUAD = [0, 1, 2, 2, 1, 3];
 
 export class GpuLineChunk {
   readonly kind = 'lines';
@@ -37,6 +41,8 @@ export class GpuLineChunk {
   /** The z window the buffers hold the segments of, and how many they hold. */
   private window: [number, number] = [Infinity, -Infinity];
   private drawn = 0;
+  /** How many segments the buffers have room for: those of the largest window so far. */
+  private capacity = 0;
 
   constructor(gl: WebGL2RenderingContext, c: LinePayload) {
     this.file = c.file;
@@ -55,26 +61,25 @@ export class GpuLineChunk {
     gl.bindVertexArray(vao);
     const seg = gl.createBuffer();
     gl.bindBuffer(gl.ARRAY_BUFFER, seg);
-    const stride = 4 * INSTANCE_FLOATS;
-    gl.bufferData(gl.ARRAY_BUFFER, stride * c.segmentCount, gl.DYNAMIC_DRAW);
-    // Per instance, float attributes at these locations: the ends (a, b), their z range, where
+    const stride = 4 * CORNER_FLOATS;
+    // Per corner, float attributes at these locations: the ends (a, b), their z range, where
     // the ends glide to, when they glide, and the line's ramp (line.vert).
     const floats: [location: number, size: number, offset: number][] = [[0, 4, 0], [1, 2, 16], [4, 4, 24], [5, 4, 40], [3, 4, 4 * SEGMENT_FLOATS]];
     for (const [location, size, offset] of floats) {
       gl.enableVertexAttribArray(location);
       gl.vertexAttribPointer(location, size, gl.FLOAT, false, stride, offset);
-      gl.vertexAttribDivisor(location, 1);
     }
     const rule = gl.createBuffer();
     gl.bindBuffer(gl.ARRAY_BUFFER, rule);
-    gl.bufferData(gl.ARRAY_BUFFER, c.segmentRule.byteLength, gl.DYNAMIC_DRAW);
     gl.enableVertexAttribArray(2);
     gl.vertexAttribIPointer(2, 1, gl.UNSIGNED_SHORT, 2, 0);
-    gl.vertexAttribDivisor(2, 1);
+    const index = gl.createBuffer();
+    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, index);
     gl.bindVertexArray(null);
     gl.bindBuffer(gl.ARRAY_BUFFER, null);
+    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, null);
     this.vao = vao;
-    this.buffers = [seg, rule];
+    this.buffers = [seg, rule, index];
   }
 
   /** Line i is on the map for z0 <= z < z1, full width between z0Full and z1Full. */
@@ -107,29 +112,48 @@ export class GpuLineChunk {
     const s = this.segments, F = SEGMENT_FLOATS;
     const keep: number[] = [];
     for (let k = 0; k < this.segmentCount; k++) if (s[F * k + 4]! <= hi && s[F * k + 5]! > lo) keep.push(k);
-    const I = INSTANCE_FLOATS, ramps = this.lineRamps;
-    const segs = new Float32Array(I * keep.length), rules = new Uint16Array(keep.length);
+    const C = CORNER_FLOATS, ramps = this.lineRamps;
+    const segs = new Float32Array(4 * C * keep.length), rules = new Uint16Array(4 * keep.length);
     keep.forEach((k, i) => {
-      segs.set(s.subarray(F * k, F * k + F), I * i);
       const line = this.segmentLine[k]!;
-      segs.set(ramps.subarray(4 * line, 4 * line + 4), I * i + F);
-      rules[i] = this.segmentRule[k]!;
+      for (let corner = 4 * i; corner < 4 * i + 4; corner++) {
+        segs.set(s.subarray(F * k, F * k + F), C * corner);
+        segs.set(ramps.subarray(4 * line, 4 * line + 4), C * corner + F);
+        rules[corner] = this.segmentRule[k]!;
+      }
     });
-    gl.bindBuffer(gl.ARRAY_BUFFER, this.buffers[0]!);
-    gl.bufferSubData(gl.ARRAY_BUFFER, 0, segs);
-    gl.bindBuffer(gl.ARRAY_BUFFER, this.buffers[1]!);
-    gl.bufferSubData(gl.ARRAY_BUFFER, 0, rules);
+    const [seg, rule, index] = this.buffers as [WebGLBuffer, WebGLBuffer, WebGLBuffer];
+    if (keep.length > this.capacity) {
+      this.capacity = keep.length;
+      // The same two triangles for every quad, over its four corners.
+      const quads = new Uint32Array(6 * keep.length);
+      for (let i = 0; i < keep.length; i++) for (let k = 0; k < 6; k++) quads[6 * i + k] = 4 * i + QUAD[k]!;
+      // The element buffer binds to the vertex array: bound, it stays bound there.
+      gl.bindVertexArray(this.vao);
+      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, index);
+      gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, quads, gl.STATIC_DRAW);
+      gl.bindVertexArray(null);
+      gl.bindBuffer(gl.ARRAY_BUFFER, seg);
+      gl.bufferData(gl.ARRAY_BUFFER, segs, gl.DYNAMIC_DRAW);
+      gl.bindBuffer(gl.ARRAY_BUFFER, rule);
+      gl.bufferData(gl.ARRAY_BUFFER, rules, gl.DYNAMIC_DRAW);
+    } else if (keep.length > 0) {
+      gl.bindBuffer(gl.ARRAY_BUFFER, seg);
+      gl.bufferSubData(gl.ARRAY_BUFFER, 0, segs);
+      gl.bindBuffer(gl.ARRAY_BUFFER, rule);
+      gl.bufferSubData(gl.ARRAY_BUFFER, 0, rules);
+    }
     gl.bindBuffer(gl.ARRAY_BUFFER, null);
     this.window = [lo, hi];
     this.drawn = keep.length;
     return this.drawn;
   }
 
-  /** One quad (a triangle strip of 4 vertices) per segment prepared. */
+  /** One quad (two triangles) per segment prepared. */
   draw(gl: WebGL2RenderingContext): void {
     if (this.drawn === 0) return;
     gl.bindVertexArray(this.vao);
-    gl.drawArraysInstanced(gl.TRIANGLE_STRIP, 0, 4, this.drawn);
+    gl.drawElements(gl.TRIANGLES, 6 * this.drawn, gl.UNSIGNED_INT, 0);
   }
 
   delete(gl: WebGL2RenderingContext): void {
