@@ -27,6 +27,11 @@ const classEntries = {
   pattern: v.optional(PatternSchema),
   /** How its lines are drawn (line-style.ts); a linear class without it draws no lines. */
   line: v.optional(LineStyleSchema),
+  /**
+   * A linear class whose network this linear class's lines join (a bridge deck carrying a
+   * road): they meet it where their areas touch, and are pruned as one network with it.
+   */
+  network: v.optional(str()),
 };
 
 /** Only a linear class has lines. */
@@ -91,6 +96,8 @@ export interface StyleClass {
   pattern?: PatternJson;
   /** How its lines are drawn, as the style gives it (resolved in `CubeStyle.lines`). */
   line?: LineStyleJson;
+  /** The key of the linear class whose line network this class's lines join. */
+  network?: string;
 }
 
 /** The style as the map draws it: background, the classes in order and the line rules. */
@@ -117,6 +124,7 @@ export function styleClasses(style: ParsedStyleJson): StyleClass[] {
     const out: StyleClass = { key, label: c.label ?? key, color: c.color.toLowerCase(), weight: c.weight, linear: c.linear };
     if (c.pattern) out.pattern = { ...c.pattern, color: c.pattern.color.toLowerCase() };
     if (c.line) out.line = c.line;
+    if (c.network !== undefined) out.network = c.network;
     return out;
   });
 }

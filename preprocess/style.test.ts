@@ -27,22 +27,31 @@ describe('style', () => {
       classes: [
         { key: 2, color: '#010203', pattern: { kind: 'dots', color: '#000000', minScale: 100 } },
         { key: 1, color: '#040506', linear: true, line: { width: 0.3, casing: { width: 0.1, color: '#000000' }, by: 'k', rules: [{ values: ['a'], width: 0.5, casing: null }] } },
+        { key: 3, color: '#070809', linear: true, network: '1' },
       ],
       compatibility: { 2: { 1: 0.7 } },
     });
     const again = parseStyle(styleToJson(s));
     assert.deepEqual(again, s);
+    assert.equal(again.classes[2]!.network, '1');
     assert.deepEqual(again.lineRules.map((r) => [r.classIndex, r.width, r.casing?.width ?? null]), [[1, 0.3, 0.1], [1, 0.5, null]], 'the line rules with it');
   });
 
   test('every problem of a style file is named in one error', () => {
     const bad = {
-      classes: [{ key: 'road', color: '#ffffff' }, { key: 'road', color: '#000000' }, { key: 'water', color: '#0000ff' }],
+      classes: [
+        { key: 'road', color: '#ffffff' }, { key: 'road', color: '#000000' }, { key: 'water', color: '#0000ff' },
+        { key: 'bridge', color: '#999999', linear: true, network: 'water' }, { key: 'ferry', color: '#999999', linear: true, network: 'boat' },
+        { key: 'pier', color: '#999999', network: 'bridge' },
+      ],
       compatibility: { lake: { road: 0.5 }, road: { sea: 0.5 } },
     };
     assert.throws(() => parseStyle(bad, 'my-style.json'), (e: unknown) => {
       assert.ok(e instanceof InputError);
-      assert.match(e.message, /^my-style.json: style: 3 problems:/);
+      assert.match(e.message, /^my-style.json: style: 6 problems:/);
+      assert.match(e.message, /classes.bridge.network: names class "water", which is not linear/);
+      assert.match(e.message, /classes.ferry.network: names unknown class "boat"/);
+      assert.match(e.message, /classes.pier.network: only a linear class \(linear: true\) joins a line network/);
       assert.match(e.message, /classes: "road" is defined twice/);
       assert.match(e.message, /compatibility: names unknown class "lake"/);
       assert.match(e.message, /compatibility.road: names unknown class "sea"/);

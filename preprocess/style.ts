@@ -70,6 +70,13 @@ export function parseStyle(json: unknown, file = 'style'): Style {
     row[i] = 1;
     return row;
   });
+  for (const c of classes) {
+    if (c.network === undefined) continue;
+    const to = index.get(c.network);
+    if (!c.linear) problems.push(`classes.${c.key}.network: only a linear class (linear: true) joins a line network`);
+    if (to === undefined) problems.push(`classes.${c.key}.network: names unknown class ${JSON.stringify(c.network)}`);
+    else if (!classes[to]!.linear) problems.push(`classes.${c.key}.network: names class ${JSON.stringify(c.network)}, which is not linear`);
+  }
   for (const [a, row] of Object.entries(s.compatibility)) {
     const ia = index.get(a);
     if (ia === undefined) problems.push(`compatibility: names unknown class ${JSON.stringify(a)}`);
@@ -117,7 +124,7 @@ export function styleToJson(style: Style): Record<string, unknown> {
   const classes: Record<string, unknown>[] = [];
   const compatibility: Record<string, Record<string, number>> = {};
   style.classes.forEach((c, i) => {
-    classes.push({ key: c.key, label: c.label, color: c.color, weight: c.weight, linear: c.linear, ...(c.pattern ? { pattern: c.pattern } : {}), ...(c.line ? { line: c.line } : {}) });
+    classes.push({ key: c.key, label: c.label, color: c.color, weight: c.weight, linear: c.linear, ...(c.pattern ? { pattern: c.pattern } : {}), ...(c.line ? { line: c.line } : {}), ...(c.network !== undefined ? { network: c.network } : {}) });
     const row: Record<string, number> = {};
     style.classes.forEach((d, j) => {
       if (i !== j) row[d.key] = style.compat[i]![j]!;

@@ -97,10 +97,11 @@ export function edgePoints(st: PlanarState, e: number): XY[] {
  * lines 0.5 mm wide unless `line` says otherwise); compatibility 1 within a class and
  * `compat[a][b]` (default 1) between classes a and b.
  */
-export function fixtureStyle(classes: { key: string; weight?: number; linear?: boolean; line?: LineStyleJson }[], compat: Record<string, Record<string, number>> = {}): Style {
+export function fixtureStyle(classes: { key: string; weight?: number; linear?: boolean; line?: LineStyleJson; network?: string }[], compat: Record<string, Record<string, number>> = {}): Style {
   const cs: ClassStyle[] = classes.map((c) => {
     const out: ClassStyle = { key: c.key, label: c.key, color: '#808080', weight: c.weight ?? 1, linear: c.linear ?? false };
     if (c.line ?? c.linear) out.line = c.line ?? { width: 0.5 };
+    if (c.network !== undefined) out.network = c.network;
     return out;
   });
   const matrix = cs.map((a) => Float64Array.from(cs.map((b) => (a.key === b.key ? 1 : compat[a.key]?.[b.key] ?? 1))));

@@ -48,6 +48,22 @@ test('three roads of a T collapse one after another into lines that meet exactly
   }
 });
 
+test('a bridge deck joins the road network its style names: its line meets the roads\' lines, and without that it does not', () => {
+  // The T's stem C is a bridge deck, of a linear class of its own.
+  const faces = ROAD_T.map((f, i) => (i === 2 ? { ...f, cls: 'bridge' } : f));
+  const lineOfBridge = (network?: string): { bridge: LineObject; roads: LineObject[] } => {
+    const style = fixtureStyle([{ key: 'road', linear: true }, { key: 'field', weight: 4 }, { key: 'bridge', linear: true, ...(network ? { network } : {}) }]);
+    const { lines } = collapseLines(fixtureTgap(faces, ['road', 'field', 'bridge'], style), style);
+    return { bridge: lines.find((l) => l.face === 3)!, roads: lines.filter((l) => l.face !== 3) };
+  };
+  const apart = lineOfBridge();
+  assert.equal(apart.roads.length, 2);
+  for (const r of apart.roads) assert.ok(!share(apart.bridge, r), `road ${r.face}: a bridge of its own network does not meet it`);
+  const joined = lineOfBridge('road');
+  for (const r of joined.roads) assert.ok(share(joined.bridge, r), `road ${r.face} meets the bridge deck of its network`);
+  assert.ok(joined.bridge.joins.length >= 2 && joined.bridge.joins.every((j) => j.line >= 0), 'the bridge\'s joins found the roads\' lines');
+});
+
 /** Face f's boundary segments at state s, straight from the tGAP's edges. */
 function segmentsAt(tgap: Tgap, f: number, s: number): number[][] {
   const out: number[][] = [];

@@ -11,6 +11,7 @@ import { EventKind, type Tgap } from '../../format/tgap-model.js';
 import type { Style } from '../style.js';
 import { centreline, type Boundary, type Point } from './centreline.js';
 import { chainMidpoint } from './chain-midpoint.js';
+import { classNetworks } from './class-networks.js';
 import { FaceHistory, type FaceSide } from './face-history.js';
 
 export interface LineObject {
@@ -41,7 +42,7 @@ export interface LineJoin {
 }
 
 export interface CollapseOptions {
-  /** Classes with the same number form one network (default: each class its own). */
+  /** Classes with the same number form one network (default: the style's, class-networks.ts). */
   network?: (classIndex: number) => number;
 }
 
@@ -72,7 +73,8 @@ interface Anchor extends Point {
 }
 
 export function collapseLines(tgap: Tgap, style: Pick<Style, 'classes'>, opts: CollapseOptions = {}): { lines: LineObject[]; stats: CollapseStats } {
-  const network = opts.network ?? ((c: number): number => c);
+  const byClass = classNetworks(style.classes);
+  const network = opts.network ?? ((c: number): number => byClass[c]!);
   const linear = style.classes.map((c) => c.linear);
   const history = new FaceHistory(tgap);
   const lines: LineObject[] = [];
