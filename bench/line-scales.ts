@@ -7,26 +7,27 @@ import { scaleAtZ, zAtScale } from '../format/scale.js';
 import { scaleInfoOf, type Tgap } from '../format/tgap-model.js';
 import { mapDensity } from '../preprocess/lines/line-budget.js';
 import { mainPiece, pieceLabels, pointIds } from '../preprocess/lines/line-components.js';
+import type { PrunedLine } from '../preprocess/lines/prune-lines.js';
 import { linePathsAt, type SimplifiedLine } from '../preprocess/lines/simplify-lines.js';
 import type { Style } from '../preprocess/style.js';
 
 export const LINE_SCALE_HEADER = ['dataset', 'scale', 'state', 'class', 'lines', 'length km', 'mm/mm²', 'pieces', 'with areas', 'main net pieces', 'with areas', 'vertices', 'simplified'];
 
 /** A class's lines (or all), its main network, and each line's points as ids for counting pieces. */
-interface LineGroup {
+interface LineGroup<L extends PrunedLine> {
   name: string;
-  lines: SimplifiedLine[];
-  main: Set<SimplifiedLine>;
-  ids: Map<SimplifiedLine, Int32Array>;
+  lines: L[];
+  main: Set<L>;
+  ids: Map<L, Int32Array>;
 }
 
-function groupsOf(style: Pick<Style, 'classes'>, lines: SimplifiedLine[]): LineGroup[] {
-  const group = (name: string, mine: SimplifiedLine[]): LineGroup => {
+function groupsOf<L extends PrunedLine>(style: Pick<Style, 'classes'>, lines: L[]): LineGroup<L>[] {
+  const group = (name: string, mine: L[]): LineGroup<L> => {
     // Each line as one point set: its polylines meet inside it.
     const ids = pointIds(mine.map((l) => l.paths.flatMap((p) => Array.from(p))));
     return { name, lines: mine, main: new Set(mainPiece(mine)), ids: new Map(mine.map((l, i) => [l, ids[i]!])) };
   };
-  const out: LineGroup[] = [];
+  const out: LineGroup<L>[] = [];
   style.classes.forEach((c, ci) => {
     const mine = lines.filter((l) => l.classIndex === ci);
     if (mine.length > 0) out.push(group(c.key, mine));
@@ -35,11 +36,11 @@ function groupsOf(style: Pick<Style, 'classes'>, lines: SimplifiedLine[]): LineG
   return out;
 }
 
-const shownAt = (s: number) => (l: SimplifiedLine): boolean => l.step <= s && l.prunedStep > s;
+const shownAt = (s: number) => (l: PrunedLine): boolean => l.step <= s && l.prunedStep > s;
 /** Lines shown at s, and those not yet born, whose areas carry the network until then. */
-const networkAt = (s: number) => (l: SimplifiedLine): boolean => l.prunedStep > s;
+const networkAt = (s: number) => (l: PrunedLine): boolean => l.prunedStep > s;
 
-function pieces(g: LineGroup, keep: (l: SimplifiedLine) => boolean, mainOnly: boolean): number {
+function pieces<L extends PrunedLine>(g: LineGroup<L>, keep: (l: L) => boolean, mainOnly: boolean): number {
   const ids = g.lines.filter((l) => keep(l) && (!mainOnly || g.main.has(l))).map((l) => g.ids.get(l)!);
   return new Set(pieceLabels(ids)).size;
 }
@@ -71,9 +72,11 @@ export function lineScaleRows(name: string, tgap: Tgap, style: Pick<Style, 'clas
 /**
  * Per linear class: states at which some of its main network is shown as lines, and how many of
  * those find it (lines with the areas not yet collapsed) in more than one piece. The network
- * only loses lines where one is pruned, so those states are the ones checked.
+ * only loses lines where one is pruned, so those states are the ones checked. `lines` are all
+ * the pruned lines, those pruned at birth too: until then they stand in for their areas, which
+ * the map shows.
  */
-export function mainNetworkSplits(tgap: Tgap, style: Pick<Style, 'classes'>, lines: SimplifiedLine[]): { cls: string; shownStates: number; checked: number; split: number }[] {
+export function mainNetworkSplits(tgap: Tgap, style: Pick<Style, 'classes'>, lines: PrunedLine[]): { cls: string; shownStates: number; checked: number; split: number }[] {
   return groupsOf(style, lines).filter((g) => g.name !== 'all').map((g) => {
     const main = [...g.main];
     const shown = (s: number): boolean => main.some(shownAt(s));

@@ -59,7 +59,7 @@ for (const d of datasets(process.argv[2], ['bgt_otterlo_400m', 'bgt_otterlo_1800
     const km = mine.reduce((s, l) => s + l.length, 0) / 1000;
     rows.push([d.name, c.key, String(splits), String(ended(EventKind.Merge)), String(mine.length), km.toFixed(2), String(lineComponents(mine.flatMap((l) => l.paths))), String(areaComponents(tgap, ci))]);
   });
-  rows.push([d.name, 'all', String(stats.linearSplits), '', String(stats.lines), (stats.length / 1000).toFixed(2), String(lineComponents(lines.flatMap((l) => l.paths))), '']);
+  rows.push([d.name, 'all', String(stats.linearSplits), `${stats.linearMerges} into others`, String(stats.lines), (stats.length / 1000).toFixed(2), String(lineComponents(lines.flatMap((l) => l.paths))), '']);
   // As ssc build makes them: the lines the style draws, by their rules' weights and strokes.
   const t1 = performance.now();
   const { pruned, simplified } = generalizedLines(tgap, style);
@@ -67,7 +67,7 @@ for (const d of datasets(process.argv[2], ['bgt_otterlo_400m', 'bgt_otterlo_1800
   scaleRows.push(...lineScaleRows(d.name, tgap, style, simplified.lines, [5000, 10000, 25000]));
   const st = pruned.stats, ss = simplified.stats;
   pruneNotes.push(`${d.name}: collapse again, prune and simplify ${(pruneMs / 1000).toFixed(2)} s; density held ${pruned.density.toFixed(4)} mm/mm²; pruned ${st.pruned} (at birth ${st.prunedAtBirth}), to the top ${st.toTop}, states over budget ${st.statesOverBudget}; simplify: vertices removed ${ss.removed}, put off by a vertex in the triangle ${ss.blocked}, of those kept for good ${ss.given}`);
-  for (const m of mainNetworkSplits(tgap, style, simplified.lines)) pruneNotes.push(`  ${m.cls}: main network shown at ${m.shownStates} states; checked where a line of it goes: ${m.checked}, in pieces (with areas) at ${m.split}`);
+  for (const m of mainNetworkSplits(tgap, style, pruned.lines)) pruneNotes.push(`  ${m.cls}: main network shown at ${m.shownStates} states; checked where a line of it goes: ${m.checked}, in pieces (with areas) at ${m.split}`);
   notes.push(`${d.name}: collapse ${(ms / 1000).toFixed(2)} s; ports ${stats.ports}, taken up by later lines ${stats.anchorsReached} (by a bridge ${stats.anchorsBridged}), outside their face by then ${stats.anchorsOutside}, never taken up ${stats.anchorsLeft}; empty centrelines ${stats.empty}`);
   process.stderr.write('done\n');
 }

@@ -14,7 +14,7 @@ import { EventKind, resolveFace, type Tgap } from '../../format/tgap-model.js';
 import { generalizeFile } from '../pipeline.js';
 import { loadStyle } from '../style.js';
 import { dataset, styleFile } from '../../testing/paths.js';
-import { fixtureStyle, fixtureTgap, ROAD_T } from '../../testing/planar-fixtures.js';
+import { fixtureStyle, fixtureTgap, rect, ROAD_T } from '../../testing/planar-fixtures.js';
 import { collapseLines, type LineObject } from './collapse-lines.js';
 
 const keysOf = (l: LineObject): Set<string> => {
@@ -64,6 +64,34 @@ test('a bridge deck joins the road network its style names: its line meets the r
   assert.ok(joined.bridge.joins.length >= 2 && joined.bridge.joins.every((j) => j.line >= 0), 'the bridge\'s joins found the roads\' lines');
 });
 
+test('a road piece merged whole into the field around it becomes a line that meets the road it continues', () => {
+  // A = [-20,0] x [0,4] goes first and is split between B and the field; B = [0,30] x [0,4],
+  // then held only by the field (one neighbour), is merged whole into it.
+  const faces = [
+    { cls: 'road', rings: [rect(-20, 0, 0, 4)] },
+    { cls: 'road', rings: [rect(0, 0, 30, 4)] },
+    { cls: 'field', rings: [rect(-40, -20, 50, 20), rect(-20, 0, 30, 4)] },
+  ];
+  const style = fixtureStyle([{ key: 'road', linear: true }, { key: 'field', weight: 4 }]);
+  const tgap = fixtureTgap(faces, ['road', 'field'], style);
+  const ends = tgap.events.map((e) => [e.loser, e.kind]);
+  assert.deepEqual(ends.slice(0, 2), [[1, EventKind.Split], [2, EventKind.Merge]], 'A is split, then B merged whole');
+  const { lines, stats } = collapseLines(tgap, style);
+  assert.deepEqual([stats.linearSplits, stats.linearMerges, stats.anchorsLeft], [1, 1, 0]);
+  const [a, b] = [lines.find((l) => l.face === 1)!, lines.find((l) => l.face === 2)!];
+  assert.ok(b, 'B became a line');
+  assert.equal(b.step, tgap.events[1]!.step, 'from its merge on');
+  assert.ok(share(a, b), 'A\'s line meets B\'s');
+  // B's line runs along its mid-axis, y = 2, away from the part of A it took.
+  const far = b.paths.flatMap((p) => [...p].flatMap((v, i) => (i % 2 === 0 && v >= 5 ? [[v, p[i + 1]!]] : [])));
+  assert.ok(far.some(([x]) => x! >= 25) && far.every(([, y]) => Math.abs(y! - 2) < 0.05), `B's line on y = 2 from x = 5 to within 5 m of its end: ${far.join(' ')}`);
+  assert.ok(b.length > 20, `B's line is ${b.length} m long`);
+  // Merged into a road of its own network instead, B leaves no line: the road takes its area on.
+  const merged = fixtureTgap([...faces.slice(0, 2), { cls: 'road', rings: faces[2]!.rings }], ['road'], fixtureStyle([{ key: 'road', linear: true }]));
+  const own = collapseLines(merged, fixtureStyle([{ key: 'road', linear: true }]));
+  assert.equal(own.stats.linearMerges, 0);
+});
+
 /** Face f's boundary segments at state s, straight from the tGAP's edges. */
 function segmentsAt(tgap: Tgap, f: number, s: number): number[][] {
   const out: number[][] = [];
@@ -93,9 +121,17 @@ test('bgt_otterlo_400m: every line lies in its face, and faces that touched at a
   const { tgap } = await generalizeFile(dataset('bgt_otterlo_400m.geojson'), { style: styleName });
   const style = await loadStyle(styleName);
   const { lines, stats } = collapseLines(tgap, style);
-  const linearSplits = tgap.events.filter((e) => e.kind === EventKind.Split && style.classes[tgap.faces[e.loser]!.classIndex]!.linear);
+  const linear = (f: number): boolean => f > 0 && style.classes[tgap.faces[f]!.classIndex]!.linear;
+  const linearSplits = tgap.events.filter((e) => e.kind === EventKind.Split && linear(e.loser));
+  // Merged whole into a face of another class (each linear class is its own network here,
+  // but for the bridge deck, which joins the roads).
+  const network = (f: number): string => { const k = style.classes[tgap.faces[f]!.classIndex]!; return k.network ?? k.key; };
+  const linearMerges = tgap.events.filter((e) => e.kind === EventKind.Merge && linear(e.loser) && !(linear(e.into) && network(e.into) === network(e.loser)));
   assert.equal(stats.linearSplits, linearSplits.length);
-  assert.equal(lines.length + stats.empty, linearSplits.length);
+  assert.equal(stats.linearMerges, linearMerges.length);
+  assert.ok(linearMerges.length > 0, 'linear faces merged whole into other classes');
+  assert.equal(lines.length + stats.empty, linearSplits.length + linearMerges.length);
+  assert.equal(stats.anchorsLeft, 0, 'every line\'s end at a face of its network still an area is met by that area\'s line');
   assert.ok(lines.length > 100, `${lines.length} lines`);
 
   let outside = 0;

@@ -1,6 +1,10 @@
 // Collapse (issue 12, item 1): when a face of a linear class ends in a split, its centreline
-// lives on as a line object from the split's step. The face's geometry is the tGAP's at the
-// state before the split. Lines of one network meet exactly:
+// lives on as a line object from the split's step. So it does when the face is merged whole
+// into a face outside its network (a short road piece into the field around it): else the
+// lines that end at its boundary would end there, the network cut where its area went. (A
+// merge into a face of its network hands the area on: that face's line covers it later.)
+// The face's geometry is the tGAP's at the state before the event. Lines of one network meet
+// exactly:
 // - where the face shares a boundary with a face of its network that is still an area, the
 //   line ends at the middle of that boundary (chain-midpoint.ts): a port;
 // - that port is handed to the face across, and to whichever face holds its area later: when
@@ -20,7 +24,7 @@ export interface LineObject {
   /** Input feature whose attributes the face carries (-1: none). */
   feature: number;
   classIndex: number;
-  /** Step of the split that ends the face: the line is there from this step on. */
+  /** Step of the split (or merge) that ends the face: the line is there from this step on. */
   step: number;
   /** Polylines as flat x, y pairs (a closed one repeats its first point last). */
   paths: Float64Array[];
@@ -49,6 +53,8 @@ export interface CollapseOptions {
 export interface CollapseStats {
   /** Faces of linear classes that end in a split. */
   linearSplits: number;
+  /** Faces of linear classes merged whole into a face outside their network. */
+  linearMerges: number;
   lines: number;
   /** Linear faces whose centreline came out empty (too small for an axis, no port). */
   empty: number;
@@ -78,17 +84,21 @@ export function collapseLines(tgap: Tgap, style: Pick<Style, 'classes'>, opts: C
   const linear = style.classes.map((c) => c.linear);
   const history = new FaceHistory(tgap);
   const lines: LineObject[] = [];
-  const stats: CollapseStats = { linearSplits: 0, lines: 0, empty: 0, length: 0, ports: 0, anchorsReached: 0, anchorsBridged: 0, anchorsOutside: 0, anchorsLeft: 0 };
+  const stats: CollapseStats = { linearSplits: 0, linearMerges: 0, lines: 0, empty: 0, length: 0, ports: 0, anchorsReached: 0, anchorsBridged: 0, anchorsOutside: 0, anchorsLeft: 0 };
   /** Anchors by the face they were handed to. */
   const pending = new Map<number, Anchor[]>();
 
   for (const ev of tgap.events) {
-    if (ev.kind !== EventKind.Split) continue;
+    if (ev.kind !== EventKind.Split && ev.kind !== EventKind.Merge) continue;
     const L = ev.loser;
     const face = tgap.faces[L]!;
     if (!linear[face.classIndex]) continue;
-    stats.linearSplits++;
     const net = network(face.classIndex);
+    if (ev.kind === EventKind.Merge) {
+      const into = ev.into > 0 ? tgap.faces[ev.into]!.classIndex : -1;
+      if (into >= 0 && linear[into] && network(into) === net) continue;
+      stats.linearMerges++;
+    } else stats.linearSplits++;
     const s = ev.step - 1;
     const sides = history.boundaryAt(L, s);
     const ports = portsOf(tgap, sides, (g) => linear[tgap.faces[g]!.classIndex] === true && network(tgap.faces[g]!.classIndex) === net);

@@ -116,6 +116,8 @@ test('bgt_otterlo_400m: the cube\'s lines read back are the collapsed and pruned
     'wegdeel/inrit': rule(['inrit', 'parkeervlak']),
     'wegdeel/parkeervlak': rule(['inrit', 'parkeervlak']),
     'waterdeel/waterloop': rule(['waterloop'], 'waterdeel'),
+    'waterdeel/greppel, droge sloot': rule(['greppel, droge sloot'], 'waterdeel'),
+    'scheiding/muur': rule(null, 'scheiding'),
   };
   assert.deepEqual(style.lineRules[want['wegdeel/fietspad']!]!.color, '#d06a5a', 'the cycle-path rule');
   for (const [k, r] of Object.entries(want)) {
@@ -173,7 +175,7 @@ test('a style without linear classes gives a cube without lines; the classic bui
   const styleName = styleFile('bgt.json');
   const { tgap } = await generalizeFile(dataset('bgt_otterlo_400m.geojson'), { style: styleName });
   const style = tgap.meta.style as { classes: Record<string, unknown>[] };
-  const noLines: Tgap = { ...tgap, meta: { ...tgap.meta, style: { ...style, classes: style.classes.map(({ line: _, ...c }) => ({ ...c, linear: false })) } } };
+  const noLines: Tgap = { ...tgap, meta: { ...tgap.meta, style: { ...style, classes: style.classes.map(({ line: _, network: _n, ...c }) => ({ ...c, linear: false })) } } };
   const dir = tempDir(t);
   await buildCube(noLines, path.join(dir, 'areas'), { precompress: false, smooth: false });
   const areas = await CubeReader.open(path.join(dir, 'areas'));
