@@ -122,11 +122,15 @@ describe('lines of the cube (bgt_otterlo_400m)', () => {
    * box-filtered coverage is at least a half exactly there, so in black on white a GPU line
    * pixel is one darker than mid grey. Where segments overlap the GPU paints a pixel once, by
    * the segment covering it most, so no GPU line pixel lies more than a pixel from the CPU's.
+   * A line narrower than a pixel covers at most a little over half of a pixel its centre
+   * passes, so there the half is a coin toss between the two sides' rounding (of z, and so of
+   * width and glides): for the CPU's pixels a GPU pixel counts from 45% coverage.
    */
   function compare(label: string, img: Rgba, paint: LinePaint, thin: LinePaint, hidden: Bbox[]): void {
     const cpu = (i: number, j: number): boolean => paint[j * W + i]! !== 0;
     const nearThin = (i: number, j: number): boolean => thin[j * W + i]! !== 0 && paint[j * W + i]! === 0;
     const gpu = (i: number, j: number): boolean => Math.max(...pixel(img, i, j)) < 128;
+    const gpuNearHalf = (i: number, j: number): boolean => Math.max(...pixel(img, i, j)) < 141;
     let gpuPixels = 0, cpuPixels = 0;
     const stray: string[] = [], missing: string[] = [];
     for (let j = 0; j < H; j++) for (let i = 0; i < W; i++) {
@@ -140,7 +144,7 @@ describe('lines of the cube (bgt_otterlo_400m)', () => {
       }
       if (cpu(i, j)) {
         cpuPixels++;
-        if (!nearby(gpu, i, j)) missing.push(`(${i}, ${j})`);
+        if (!nearby(gpuNearHalf, i, j)) missing.push(`(${i}, ${j})`);
       }
     }
     assert.ok(cpuPixels > 1000 && gpuPixels > 1000, `${label}: lines on screen (CPU ${cpuPixels} px, GPU ${gpuPixels} px)`);
