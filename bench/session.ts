@@ -6,8 +6,10 @@
 // for bgt_otterlo_1800m, the style's baseScale for nlcd_zion), zoom out to the full extent in
 // `frames` frames (120; geometric in scale), pan a quarter of the data's width in frames/6,
 // zoom back in to the base scale in frames/2. Each frame sets the view and waits until the map
-// is complete (vario: whenIdle with one supersampling frame; MapLibre: 'idle'), recording the
-// data bytes sent so far (server side), setView-to-complete ms and the triangles drawn.
+// is complete (vario: 'complete', the image on screen shows the whole view, with one
+// supersampling frame; MapLibre: 'idle'), recording the data bytes sent so far (server side),
+// setView-to-complete ms and the triangles drawn. The next frame follows at once, as in a
+// user's zoom: the vario map's redraw once the slice has stopped (blending off) is not waited for.
 // Prints, per dataset, the medians over `runs` runs (3) and their ratio; `csv=<file>` also
 // writes every frame (medians over the runs). SwiftShader is a software GPU: the times compare
 // the two maps on one machine, nothing more.

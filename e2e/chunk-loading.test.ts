@@ -254,6 +254,48 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     await assertMatchesSlicer(p, b, z, 'after loading');
   });
 
+  test("'complete' fires once per view, for the frame that shows all its chunks: at once for a pan within the margin, after the late chunks otherwise", async () => {
+    const z = 30;
+    // A pan within the prefetch margin (nothing new to fetch), then one half a view east that needs chunks not yet fetched.
+    const east = (x: Bbox, d: number): Bbox => [x[0] + d, x[1], x[2] + d, x[3]];
+    const late = (x: Bbox): string[] => fresh(east(x, 12), east(x, 47), z).map((l) => l.file).filter((f) => !files(needed(x, z).all).has(f));
+    const [a, b] = pickPair((x, y) => fresh(x, y, z).length === 0 && late(x).length >= 1, (x) => [east(x, 12)]);
+    const c = east(a, 47);
+    const newOnes = late(a);
+    const p = await open(a, z);
+    assert.equal(await waitIdle(p.page), true);
+    type Ev = { type: string; frame: number; loaded?: boolean; late?: (string | undefined)[] };
+    const events = async (): Promise<Ev[]> => p.page.evaluate(() => (globalThis as unknown as { evs: Ev[] }).evs.splice(0));
+    await p.page.evaluate((late) => {
+      const evs: Ev[] = [];
+      (globalThis as unknown as { evs: Ev[] }).evs = evs;
+      map.on('render', (e) => evs.push({ type: 'render', frame: (e as { frame: number }).frame }));
+      map.on('complete', (e) => evs.push({ type: 'complete', frame: (e as { frame: number }).frame, loaded: map.loaded(), late: late.map((f) => engine.chunkStatuses().get(f)) }));
+      map.on('idle', () => evs.push({ type: 'idle', frame: -1 }));
+    }, newOnes);
+
+    await goTo(p, b, z);
+    assert.equal(await waitIdle(p.page), true);
+    const small = await events();
+    const renders = small.filter((e) => e.type === 'render');
+    const completes = small.filter((e) => e.type === 'complete');
+    assert.equal(completes.length, 1, JSON.stringify(small));
+    assert.equal(completes[0]!.frame, renders[0]!.frame, 'the first frame of the new view already shows it all: no frame waits for the worker to say so');
+    assert.ok(small.indexOf(completes[0]!) < small.findIndex((e) => e.type === 'idle'), "'complete' before 'idle'");
+
+    server.faults.delayMs = (f) => (newOnes.includes(f) ? 800 : 0);
+    await goTo(p, c, z);
+    assert.equal(await waitIdle(p.page), true);
+    const big = await events();
+    const bigCompletes = big.filter((e) => e.type === 'complete');
+    assert.equal(bigCompletes.length, 1, JSON.stringify(big));
+    const done = bigCompletes[0]!;
+    assert.ok(done.frame > big.find((e) => e.type === 'render')!.frame, 'the frames drawn while the late chunks were in flight were not complete');
+    assert.equal(done.loaded, true);
+    assert.deepEqual(done.late, newOnes.map(() => 'gpu'), 'the late chunks are on the GPU when the view is complete');
+    await assertMatchesSlicer(p, c, z, 'complete');
+  });
+
   test('a small GPU memory budget evicts the least recently used chunks and fetches them again', async () => {
     const z = 30;
     // With the line chunks the view needs (the map fetches them with the surface chunks).

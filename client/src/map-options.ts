@@ -77,7 +77,7 @@ export interface VarioMapSettings extends InteractionSettings {
 }
 
 /** Passed on from the engine as they are. */
-export type DataEvents = Pick<EngineEvents, 'load' | 'idle' | 'error' | 'contextlost' | 'contextrestored' | 'dataloading' | 'data' | 'meta'>;
+export type DataEvents = Pick<EngineEvents, 'load' | 'complete' | 'idle' | 'error' | 'contextlost' | 'contextrestored' | 'dataloading' | 'data' | 'meta'>;
 
 export interface VarioMapEvents extends DataEvents {
   movestart: MapMoveEvent;

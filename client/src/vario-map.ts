@@ -38,7 +38,7 @@ export type { LngLatLike, LngLatBoundsLike };
 export type { AnimationOptions, CameraOptions, FitBoundsOptions, FlyToOptions, MapMoveEvent, VarioMapEvents, VarioMapOptions, VarioMapSettings } from './map-options.js';
 
 /** Passed on from the engine as they are ('meta' after the map's own state follows it). */
-const DATA_EVENTS: (keyof DataEvents)[] = ['load', 'idle', 'error', 'contextlost', 'contextrestored', 'dataloading', 'data'];
+const DATA_EVENTS: (keyof DataEvents)[] = ['load', 'complete', 'idle', 'error', 'contextlost', 'contextrestored', 'dataloading', 'data'];
 
 /** How many views along a flight's path are prefetched. */
 const FLIGHT_SAMPLES = 16;

@@ -104,4 +104,16 @@ describe('chunk residency', () => {
     assert.equal(h.residency.loaded(2), true);
     assert.equal(h.residency.loaded(1), false, 'the answer is for view 2');
   });
+
+  test('shows: the image drawn from these chunks shows the view only when it holds every visible chunk of that view', () => {
+    const h = harness();
+    const drawnFrom = new Set(['a', 'b']);
+    assert.equal(h.residency.shows(1, drawnFrom), false, 'no answer yet');
+    h.residency.answer(answer(1, ['a', 'b'], ['m']));
+    assert.equal(h.residency.shows(1, drawnFrom), true, 'margin chunks are not on screen');
+    assert.equal(h.residency.shows(2, drawnFrom), false, 'the answer is for view 1');
+    assert.equal(h.residency.shows(1, new Set(['a'])), false, 'b is not in the image');
+    h.residency.answer(answer(2, ['a'], [], { indexComplete: false }));
+    assert.equal(h.residency.shows(2, drawnFrom), false, 'sub-index files still loading');
+  });
 });

@@ -137,6 +137,12 @@ export class ChunkResidency {
     return n.visible.every((f) => this.renderer.store.has(f));
   }
 
+  /** The worker answered view `seq` and every chunk it shows is among `files`. */
+  shows(seq: number, files: ReadonlySet<string>): boolean {
+    const n = this.needed;
+    return n?.seq === seq && n.indexComplete && n.visible.every((f) => files.has(f));
+  }
+
   /** The worker answered view `seq` and nothing it needs is still to come (failed chunks will not). */
   settled(seq: number): boolean {
     const n = this.needed;

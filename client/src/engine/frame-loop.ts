@@ -1,7 +1,8 @@
 // The frame loop: at most one frame per animation frame, and only when something asked for one.
 // A frame advances the view's animation, reads the view, sends it to the worker, uploads the
 // chunks that came, draws (accumulating jittered frames while the view is still) and reports
-// the first complete map ('load') and the moment nothing more is to come ('idle').
+// when the image on screen shows the whole view ('complete', the first time 'load') and the
+// moment nothing more is to come ('idle').
 import { boxMeets } from '../../../format/index-query.js';
 import type { MapView } from '../camera/map-view.js';
 import { colourParams, type BlendingOptions, type BoundaryOptions, type StatePaints } from '../render/colour-options.js';
@@ -9,7 +10,7 @@ import type { GpuChunk } from '../render/gpu-chunk.js';
 import type { GpuLineChunk } from '../render/gpu-line-chunk.js';
 import type { Renderer } from '../render/renderer.js';
 import { jitter, weight } from '../render/supersampling.js';
-import { queryView, type ChunkResidency } from './chunk-residency.js';
+import { queryView, type ChunkResidency, type ViewQuery } from './chunk-residency.js';
 import type { MapCanvas } from './map-canvas.js';
 
 /** Blending in the 'moving' mode stays on this long after the slice last moved (ms). */
@@ -44,6 +45,8 @@ export interface RenderStats {
 export interface FrameSink {
   render(stats: RenderStats): void;
   load(): void;
+  /** The image on screen (frame `frame`) shows every chunk the current view needs. */
+  complete(frame: number): void;
   idle(complete: boolean): void;
 }
 
@@ -58,7 +61,13 @@ export class FrameLoop {
   private lastSliceMove = -Infinity;
   private blendingWasOn = false;
   private idleFired = false;
+  /** The chunks the image on screen was drawn from, and the view it shows. */
+  private shown: { seq: number; frame: number; files: Set<string> } | null = null;
+  /** The last view reported complete. */
+  private completeSeq = -1;
   private stopped = false;
+  /** A view change waits to go to the worker (at the end of the current task). */
+  private viewQueued = false;
   /** The overlays changed: the finished map is shown again with them, without drawing it again. */
   private overlaysDue = false;
   private lastStats: RenderStats = { frame: 0, triangles: 0, segments: 0, chunks: 0, queryMs: 0, gpuBytes: 0, jittered: false };
@@ -77,6 +86,16 @@ export class FrameLoop {
     this.viewSeq++;
     if (sliceMoved) this.lastSliceMove = performance.now();
     this.redraw();
+    // The worker hears of the view now, not at the next frame: its answer (and the first
+    // fetches) can then come before that frame, instead of after the frame has been drawn and
+    // shown, which may hold the page for as long as the GPU takes. Changes made together
+    // (jumpTo's centre and scale) go as one.
+    if (this.viewQueued) return;
+    this.viewQueued = true;
+    queueMicrotask(() => {
+      this.viewQueued = false;
+      if (!this.stopped && this.view.meta) this.request();
+    });
   }
 
   /** Draws again from the first frame (a setting changed). */
@@ -117,6 +136,26 @@ export class FrameLoop {
     return this.residency.loaded(this.viewSeq);
   }
 
+  /**
+   * The worker answered: the image on screen may already show everything the view needs (a
+   * small move keeps its chunks), known only now. Said at once, without drawing it again.
+   */
+  answered(): void {
+    this.reportComplete();
+  }
+
+  /** 'complete' (and the first time 'load') once per view, when the image on screen shows all its chunks. */
+  private reportComplete(): void {
+    const s = this.shown;
+    if (!s || s.seq !== this.viewSeq || this.completeSeq === this.viewSeq || !this.residency.shows(this.viewSeq, s.files)) return;
+    this.completeSeq = this.viewSeq;
+    if (this.firstCompleteAt === null) {
+      this.firstCompleteAt = performance.now();
+      this.sink.load();
+    }
+    this.sink.complete(s.frame);
+  }
+
   /** Resolves at the next idle, or now when the map is idle. */
   whenIdle(once: () => Promise<{ complete: boolean }>): Promise<{ complete: boolean }> {
     if (!this.idleFired) return once();
@@ -136,15 +175,21 @@ export class FrameLoop {
     this.raf = 0;
   }
 
+  /** Sends the current view to the worker unless it has it; returns its query. */
+  private request(): ViewQuery {
+    const margin = this.settings.prefetchMargin;
+    const q = queryView(this.view, this.canvas.geometry(this.view), margin);
+    this.residency.request(this.viewSeq, q, (c) => queryView(this.view, this.canvas.geometry(this.view, c), margin, this.view.zAt(c.scale)));
+    return q;
+  }
+
   private frame(): void {
     const r = this.renderer;
     const meta = this.view.meta;
     if (!meta || this.stopped) return;
     const now = performance.now();
     this.view.tick(now);
-    const margin = this.settings.prefetchMargin;
-    const q = queryView(this.view, this.canvas.geometry(this.view), margin);
-    this.residency.request(this.viewSeq, q, (c) => queryView(this.view, this.canvas.geometry(this.view, c), margin, this.view.zAt(c.scale)));
+    const q = this.request();
     if (r.lost) return; // contextrestored schedules the next frame
     this.frameNo++;
     // Draw the chunks on the GPU that meet the view (whatever the worker says is needed: until
@@ -155,8 +200,10 @@ export class FrameLoop {
     this.residency.evict();
     const chunks: GpuChunk[] = [];
     const lineChunks: GpuLineChunk[] = [];
+    const files = new Set<string>();
     for (const c of r.store.values()) {
       if (!boxMeets(c.bbox, drawn)) continue;
+      files.add(c.file);
       c.lastUsed = this.frameNo;
       if (c.kind !== 'lines') chunks.push(c);
       else if (this.settings.lines) lineChunks.push(c);
@@ -180,6 +227,8 @@ export class FrameLoop {
       const { triangles, segments } = r.render({ view: q.view, surface: this.view.surface(), zMax: meta.zMax, jitter: jitter(n), colour, pixelRatio: this.canvas.deviceRatio(), sliceRange: [q.zMin, q.zMax] }, chunks, lineChunks);
       this.accumulated = n + 1;
       this.lastStats = { frame: this.frameNo, triangles, segments, chunks: chunks.length, queryMs: this.residency.queryMs, gpuBytes: r.store.bytes, jittered: n > 0 };
+      // Line chunks count as shown with lines turned off: there is nothing more to fetch for them.
+      this.shown = { seq: this.viewSeq, frame: this.frameNo, files };
       this.sink.render(this.stats());
     } else if (this.overlaysDue) {
       r.present();
@@ -190,11 +239,8 @@ export class FrameLoop {
 
   /** After a frame: the next one, or 'load' and 'idle' when nothing more is to come. */
   private settle(blendingToEnd: boolean): void {
+    this.reportComplete();
     const complete = this.loaded();
-    if (complete && this.firstCompleteAt === null) {
-      this.firstCompleteAt = performance.now();
-      this.sink.load();
-    }
     // While the slice moves, blending is on for a moment: keep drawing until it ends, and only
     // then accumulate.
     const accumulating = complete && this.accumulated < this.settings.supersampling && !blendingToEnd;

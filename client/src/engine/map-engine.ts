@@ -49,6 +49,11 @@ export interface EngineOptions {
 export interface EngineEvents {
   /** The first complete map. */
   load: { timeMs: number };
+  /**
+   * Once per view: the image on screen shows every chunk the view needs (later frames of the
+   * same view may still refine it: supersampling, blending turned off once the slice stops).
+   */
+  complete: { frame: number };
   /** Nothing more to fetch, draw or accumulate. `complete`: every chunk on screen is drawn. */
   idle: { complete: boolean };
   render: RenderStats;
@@ -107,6 +112,7 @@ export class MapEngine extends Evented<EngineEvents> {
       this.loop = new FrameLoop(view, this.canvas, this.renderer, residency, this.settings, {
         render: (stats) => this.fire('render', stats),
         load: () => this.fire('load', { timeMs: performance.now() - this.startTime }),
+        complete: (frame) => this.fire('complete', { frame }),
         idle: (complete) => this.fire('idle', { complete }),
       });
       view.onChange((sliceMoved) => this.loop?.viewChanged(sliceMoved));
@@ -124,6 +130,7 @@ export class MapEngine extends Evented<EngineEvents> {
     });
     this.source.on('needed', (n) => {
       this.residency?.answer(n);
+      this.loop?.answered();
       this.loop?.schedule();
     });
     this.source.on('chunk', (ch) => {
