@@ -264,13 +264,16 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     const newOnes = late(a);
     const p = await open(a, z);
     assert.equal(await waitIdle(p.page), true);
-    type Ev = { type: string; frame: number; loaded?: boolean; late?: (string | undefined)[] };
+    type Ev = { type: string; frame: number; loaded?: boolean; late?: (string | undefined)[]; drew?: { frame: number; chunks: number } };
     const events = async (): Promise<Ev[]> => p.page.evaluate(() => (globalThis as unknown as { evs: Ev[] }).evs.splice(0));
     await p.page.evaluate((late) => {
       const evs: Ev[] = [];
       (globalThis as unknown as { evs: Ev[] }).evs = evs;
       map.on('render', (e) => evs.push({ type: 'render', frame: (e as { frame: number }).frame }));
-      map.on('complete', (e) => evs.push({ type: 'complete', frame: (e as { frame: number }).frame, loaded: map.loaded(), late: late.map((f) => engine.chunkStatuses().get(f)) }));
+      map.on('complete', (e) => {
+        const { frame, chunks } = engine.stats();
+        evs.push({ type: 'complete', frame: (e as { frame: number }).frame, loaded: map.loaded(), late: late.map((f) => engine.chunkStatuses().get(f)), drew: { frame, chunks } });
+      });
       map.on('idle', () => evs.push({ type: 'idle', frame: -1 }));
     }, newOnes);
 
@@ -293,6 +296,9 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     assert.ok(done.frame > big.find((e) => e.type === 'render')!.frame, 'the frames drawn while the late chunks were in flight were not complete');
     assert.equal(done.loaded, true);
     assert.deepEqual(done.late, newOnes.map(() => 'gpu'), 'the late chunks are on the GPU when the view is complete');
+    // And the frame it names drew them: as many surface chunks as meet the view.
+    assert.equal(done.drew!.frame, done.frame, 'no frame drawn since the one it names');
+    assert.ok(done.drew!.chunks >= needed(c, z).visible.length, `the complete frame drew ${done.drew!.chunks} surface chunks, the view meets ${needed(c, z).visible.length}`);
     await assertMatchesSlicer(p, c, z, 'complete');
   });
 

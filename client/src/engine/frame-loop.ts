@@ -68,6 +68,8 @@ export class FrameLoop {
   private stopped = false;
   /** A view change waits to go to the worker (at the end of the current task). */
   private viewQueued = false;
+  /** A view went to the worker since the last frame, ahead of it. */
+  private sentEarly = false;
   /** The overlays changed: the finished map is shown again with them, without drawing it again. */
   private overlaysDue = false;
   private lastStats: RenderStats = { frame: 0, triangles: 0, segments: 0, chunks: 0, queryMs: 0, gpuBytes: 0, jittered: false };
@@ -86,15 +88,18 @@ export class FrameLoop {
     this.viewSeq++;
     if (sliceMoved) this.lastSliceMove = performance.now();
     this.redraw();
-    // The worker hears of the view now, not at the next frame: its answer (and the first
-    // fetches) can then come before that frame, instead of after the frame has been drawn and
-    // shown, which may hold the page for as long as the GPU takes. Changes made together
-    // (jumpTo's centre and scale) go as one.
-    if (this.viewQueued) return;
+    // The worker hears of the first change since the last frame now, not at the next frame:
+    // its answer (and the first fetches) can then come before that frame, instead of after the
+    // frame has been drawn and shown, which may hold the page for as long as the GPU takes.
+    // Changes made together (jumpTo's centre and scale) go as one; later ones before the frame
+    // (a pinch's pointer moves) wait for it, so a gesture sends at most two views a frame.
+    if (this.viewQueued || this.sentEarly) return;
     this.viewQueued = true;
     queueMicrotask(() => {
       this.viewQueued = false;
-      if (!this.stopped && this.view.meta) this.request();
+      if (this.stopped || !this.view.meta) return;
+      this.sentEarly = true;
+      this.request();
     });
   }
 
@@ -114,6 +119,8 @@ export class FrameLoop {
   /** The GPU lost its chunks (a lost context): the map is not idle until they are back. */
   lost(): void {
     this.idleFired = false;
+    // The image is gone with the chunks: the view is complete again only once drawn again.
+    this.shown = null;
   }
 
   schedule(): void {
@@ -190,6 +197,7 @@ export class FrameLoop {
     const now = performance.now();
     this.view.tick(now);
     const q = this.request();
+    this.sentEarly = false;
     if (r.lost) return; // contextrestored schedules the next frame
     this.frameNo++;
     // Draw the chunks on the GPU that meet the view (whatever the worker says is needed: until
