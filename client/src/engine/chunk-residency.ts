@@ -132,13 +132,11 @@ export class ChunkResidency {
 
   /** Every chunk view `seq` shows is on the GPU. */
   loaded(seq: number): boolean {
-    const n = this.needed;
-    if (!n || n.seq !== seq || !n.indexComplete || this.pending.length > 0) return false;
-    return n.visible.every((f) => this.renderer.store.has(f));
+    return this.pending.length === 0 && this.shows(seq, this.renderer.store);
   }
 
   /** The worker answered view `seq` and every chunk it shows is among `files`. */
-  shows(seq: number, files: ReadonlySet<string>): boolean {
+  shows(seq: number, files: { has(file: string): boolean }): boolean {
     const n = this.needed;
     return n?.seq === seq && n.indexComplete && n.visible.every((f) => files.has(f));
   }
