@@ -8,6 +8,9 @@
 // e.g. a merge's loser); face boundaries where the face id
 // changes between neighbouring pixels; last the paint of faces whose feature state has hover or
 // highlight, on their own pixels only (a fill, and an outline just inside the face's edge).
+// Blending, boundaries and states are compiled in only when a frame draws them (BLENDING,
+// BOUNDARIES, STATES; colour-pass.ts): a software GPU runs an untaken branch's texture reads
+// for every pixel, and these cost more than half of the frame. FLAT: the slice's z is uSliceZ.
 precision highp float;
 precision highp int;
 precision highp usampler2D;
@@ -15,17 +18,19 @@ precision highp usampler2D;
 uniform usampler2D uIds;      // RG32UI: upper, lower face
 uniform usampler2D uAux;      // RG32UI: classes, z of the surface (float bits)
 uniform sampler2D uSurface;   // R32F: z of the slicing surface
-uniform sampler2D uStyle;     // RGBA32F, one column per class: fill; pattern colour + kind; pattern z range
+uniform float uSliceZ;        // its one z (FLAT)
+uniform sampler2D uStyle;     // RGBA32F, one column per class: fill + pattern kind; pattern colour; pattern z range
 uniform int uClassCount;
 uniform vec4 uBackground;
-uniform float uBlendDistance; // c in steps; 0: no blending
+uniform float uBlendDistance; // c in steps (BLENDING)
 uniform int uBoundaryBefore;  // boundary band: neighbours from -before to +after (device pixels)
-uniform int uBoundaryAfter;   // 0 and 0: no boundaries
+uniform int uBoundaryAfter;   // (BOUNDARIES)
 uniform vec4 uBoundaryColour; // rgb, alpha = opacity
 uniform float uPatternCell;   // pattern period, device pixels
 uniform float uPatternLine;   // pattern line width / dot radius, device pixels
 uniform vec2 uPatternShift;   // anchors patterns to the ground, device pixels
-uniform usampler2D uFaceState; // R8UI, one texel per face id (rows of textureSize().x): bit i, state i
+uniform usampler2D uFaceState; // R8UI, one texel per face id (rows of 2048): bit i, state i
+uniform uint uFaceCount;       // faces in uFaceState
 // Per drawn state (0 hover, 1 highlight, painted in that order):
 uniform vec4 uStateFill[2];    // rgb, alpha = opacity
 uniform vec4 uStateOutline[2]; // rgb, alpha = opacity
@@ -33,11 +38,11 @@ uniform int uStateWidth[2];    // outline inside the face, device pixels; 0: non
 
 out vec4 oColour;
 
+// Shifts, not division (face-state-texture.ts has 2048 texels a row): on a software GPU integer
+// division costs as much as a texture read.
 uint stateBits(uint face) {
-  ivec2 size = textureSize(uFaceState, 0);
-  int f = int(face);
-  if (face == 0u || f >= size.x * size.y) return 0u;
-  return texelFetch(uFaceState, ivec2(f % size.x, f / size.x), 0).r;
+  if (face == 0u || face >= uFaceCount) return 0u;
+  return texelFetch(uFaceState, ivec2(int(face & 2047u), int(face >> 11u)), 0).r;
 }
 
 // Whether a pixel within `width` of p (on screen) shows another face than `face`.
@@ -71,14 +76,15 @@ float patternMask(int kind) {
 vec3 classColour(uint cls, float zSlice) {
   int i = int(cls);
   if (i >= uClassCount) return uBackground.rgb;
-  vec3 fill = texelFetch(uStyle, ivec2(i, 0), 0).rgb;
-  vec4 pat = texelFetch(uStyle, ivec2(i, 1), 0);
-  int kind = int(pat.a + 0.5);
+  // The pattern's kind beside the fill: a class without a pattern costs one read.
+  vec4 fill = texelFetch(uStyle, ivec2(i, 0), 0);
+  int kind = int(fill.a + 0.5);
   if (kind != 0) {
+    vec3 pat = texelFetch(uStyle, ivec2(i, 1), 0).rgb;
     vec2 range = texelFetch(uStyle, ivec2(i, 2), 0).xy;
-    if (zSlice >= range.x && zSlice <= range.y) fill = mix(fill, pat.rgb, patternMask(kind));
+    if (zSlice >= range.x && zSlice <= range.y) return mix(fill.rgb, pat, patternMask(kind));
   }
-  return fill;
+  return fill.rgb;
 }
 
 void main() {
@@ -90,16 +96,23 @@ void main() {
     colour = uBackground.rgb;
   } else {
     uvec2 aux = texelFetch(uAux, p, 0).xy;
+#ifdef FLAT
+    float zSlice = uSliceZ;
+#else
     float zSlice = texelFetch(uSurface, p, 0).r;
+#endif
     uint upperClass = aux.x & 0xffffu;
     uint lowerClass = aux.x >> 16;
     colour = classColour(upperClass, zSlice);
-    if (uBlendDistance > 0.0 && ids.y != 0u && lowerClass != 0xffffu) {
+#ifdef BLENDING
+    if (ids.y != 0u && lowerClass != 0xffffu) {
       float d = zSlice - uintBitsToFloat(aux.y);
       if (d < uBlendDistance) colour = mix(classColour(lowerClass, zSlice), colour, d / uBlendDistance);
     }
+#endif
   }
-  if (uBoundaryBefore + uBoundaryAfter > 0) {
+#ifdef BOUNDARIES
+  {
     bool edge = false;
     for (int k = -uBoundaryBefore; k <= uBoundaryAfter; k++) {
       if (k == 0) continue;
@@ -109,6 +122,8 @@ void main() {
     }
     if (edge) colour = mix(colour, uBoundaryColour.rgb, uBoundaryColour.a);
   }
+#endif
+#ifdef STATES
   uint bits = stateBits(ids.x);
   // Guarded: SwiftShader runs this loop for every pixel otherwise, which doubled the pass.
   if (bits != 0u) for (int s = 0; s < 2; s++) {
@@ -117,5 +132,6 @@ void main() {
     // The outline: pixels of the face within its width of another face (or of nothing).
     if (uStateWidth[s] > 0 && nearOtherFace(p, size, ids.x, uStateWidth[s])) colour = mix(colour, uStateOutline[s].rgb, uStateOutline[s].a);
   }
+#endif
   oColour = vec4(colour, 1.0);
 }

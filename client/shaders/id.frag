@@ -13,6 +13,7 @@
 // makes the error vanish where it matters, at a surface level with a flat slice; vZ itself is
 // kept for surfaces nearer 0 than uZRef (the floor, z = 0, stays exact when the slice is
 // clamped to 0). Each pixel takes the form with the smaller magnitude.
+// FLAT (a flat slice): the slice's z is uZRef itself, not read per fragment from the surface target.
 precision highp float;
 precision highp int;
 precision highp usampler2D;
@@ -30,7 +31,11 @@ layout(location = 0) out uvec2 oIds;  // upper face, lower face
 layout(location = 1) out uvec2 oAux;  // classes (upper | lower << 16), z of the surface (float bits)
 
 void main() {
+#ifdef FLAT
+  float zSlice = uZRef;
+#else
   float zSlice = texelFetch(uSurface, ivec2(gl_FragCoord.xy), 0).r;
+#endif
   bool rel = abs(vZRel) < abs(vZ);
   // zSlice - uZRef is exact for a flat slice (0) and wherever the two are within a factor 2.
   float d = rel ? (zSlice - uZRef) - vZRel : zSlice - vZ;

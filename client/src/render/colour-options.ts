@@ -3,7 +3,7 @@
 // sizes, the blend distance while it applies, and the pattern anchored to the ground so that it
 // moves with the map.
 import type { ViewGeometry } from '../geometry/view.js';
-import type { ColourParams, StatePaintParams } from './colour-pass.js';
+import type { FrameColourParams, StatePaintParams } from './colour-pass.js';
 import { parseColour } from './style-texture.js';
 
 export type BlendMode = 'off' | 'moving' | 'always';
@@ -59,7 +59,7 @@ export function colourParams(o: {
   blendDistance: number;
   /** This frame's weight in the accumulated colour. */
   weight: number;
-}): Omit<ColourParams, 'style' | 'classCount' | 'background' | 'faceState'> {
+}): FrameColourParams {
   const { view, ratio, boundaries: b } = o;
   // Boundary band: n device pixels, from the pixel before each id change to the one after.
   const n = b.enabled ? Math.max(1, Math.round(b.width * ratio)) : 0;

@@ -2,7 +2,8 @@
 // with weight 1 / n for the n-th supersampling frame (a running mean).
 import colourFrag from '../../shaders/colour.frag?raw';
 import fullscreenVert from '../../shaders/fullscreen.vert?raw';
-import { Program } from './program.js';
+import type { FaceStateTexture } from './face-state-texture.js';
+import { Program, withDefines } from './program.js';
 import type { Rgba } from './style-texture.js';
 import type { Targets } from './targets.js';
 
@@ -20,12 +21,17 @@ export interface ColourParams {
   patternLine: number;
   patternShift: [number, number];
   /** R8UI, one texel per face id (face-state-texture.ts): bit i set where state i is on. */
-  faceState: WebGLTexture;
+  faceState: Pick<FaceStateTexture, 'texture' | 'faceCount' | 'any'>;
   /** Per drawn state (colour-options.ts, DRAWN_STATES), in the order painted. */
   statePaints: StatePaintParams[];
   /** Weight of this frame in the accumulated colour: 1 for the first. */
   weight: number;
+  /** The slice's z when it is flat (surface-params.ts flatSliceZ), else null. */
+  flatZ: number | null;
 }
+
+/** What a frame chooses (colour-options.ts); the renderer adds its textures, the background and the flat slice's z. */
+export type FrameColourParams = Omit<ColourParams, 'style' | 'classCount' | 'background' | 'faceState' | 'flatZ'>;
 
 export interface StatePaintParams {
   /** rgb, alpha = opacity. */
@@ -36,15 +42,29 @@ export interface StatePaintParams {
 }
 
 export class ColourPass {
-  private readonly program: Program;
+  /** colour.frag compiled with the features a frame draws, by their names (a few at most). */
+  private readonly programs = new Map<string, Program>();
 
   constructor(private readonly gl: WebGL2RenderingContext) {
-    this.program = new Program(gl, fullscreenVert, colourFrag, 'colour pass');
+    // The plain variant, compiled now so that a shader error shows at once.
+    this.program([]);
+  }
+
+  private program(features: string[]): Program {
+    const key = features.join(' ');
+    let p = this.programs.get(key);
+    if (!p) this.programs.set(key, (p = new Program(this.gl, fullscreenVert, withDefines(colourFrag, features), `colour pass${key ? ` (${key})` : ''}`)));
+    return p;
   }
 
   draw(targets: Targets, c: ColourParams): void {
     const gl = this.gl;
-    const p = this.program;
+    const features: string[] = [];
+    if (c.blendDistance > 0) features.push('BLENDING');
+    if (c.boundaryBefore + c.boundaryAfter > 0) features.push('BOUNDARIES');
+    if (c.faceState.any) features.push('STATES');
+    if (c.flatZ !== null) features.push('FLAT');
+    const p = this.program(features);
     p.use();
     const bind = (unit: number, tex: WebGLTexture, name: string): void => {
       gl.activeTexture(gl.TEXTURE0 + unit);
@@ -55,8 +75,10 @@ export class ColourPass {
     bind(1, targets.aux, 'uAux');
     bind(2, targets.surface, 'uSurface');
     bind(3, c.style, 'uStyle');
-    bind(4, c.faceState, 'uFaceState');
+    bind(4, c.faceState.texture, 'uFaceState');
+    gl.uniform1ui(p.loc('uFaceCount'), c.faceState.faceCount);
     gl.uniform1i(p.loc('uClassCount'), c.classCount);
+    if (c.flatZ !== null) gl.uniform1f(p.loc('uSliceZ'), c.flatZ);
     gl.uniform4fv(p.loc('uBackground'), c.background);
     gl.uniform1f(p.loc('uBlendDistance'), c.blendDistance);
     gl.uniform1i(p.loc('uBoundaryBefore'), c.boundaryBefore);
@@ -88,6 +110,7 @@ export class ColourPass {
   }
 
   delete(): void {
-    this.program.delete();
+    for (const p of this.programs.values()) p.delete();
+    this.programs.clear();
   }
 }

@@ -7,11 +7,14 @@ import idVert from '../../shaders/id.vert?raw';
 import type { Surface } from '../../../format/slicing-surface.js';
 import type { ViewGeometry } from '../geometry/view.js';
 import type { GpuChunk } from './gpu-chunk.js';
-import { Program } from './program.js';
+import { Program, withDefines } from './program.js';
+import { flatSliceZ } from './surface-params.js';
 import type { Targets } from './targets.js';
 
 export class IdPass {
   private readonly program: Program;
+  /** For a flat slice: its z a uniform, no texture read per fragment (a tenth of a frame on a software GPU). */
+  private readonly flat: Program;
   // Float64 matrices: the chunk's offset from the view centre is composed in double precision
   // and only the (small) result is rounded to float32.
   private readonly projection = new Float64Array(16);
@@ -20,6 +23,7 @@ export class IdPass {
 
   constructor(private readonly gl: WebGL2RenderingContext) {
     this.program = new Program(gl, idVert, idFrag, 'id pass');
+    this.flat = new Program(gl, idVert, withDefines(idFrag, ['FLAT']), 'id pass (flat)');
   }
 
   /**
@@ -30,7 +34,8 @@ export class IdPass {
    */
   draw(targets: Targets, view: ViewGeometry, chunks: Iterable<GpuChunk>, surface: Surface, zMax: number, sliceTop: number, jitter: [number, number]): number {
     const gl = this.gl;
-    const p = this.program;
+    const flat = flatSliceZ(surface, zMax);
+    const p = flat === null ? this.program : this.flat;
     const hw = (view.width * view.resolution) / 2, hh = (view.height * view.resolution) / 2;
     mat4.ortho(this.projection, -hw, hw, -hh, hh, -1, 1);
     // Jitter in pixels -> clip space, applied after the projection.
@@ -54,7 +59,8 @@ export class IdPass {
     gl.uniform1f(p.loc('uDepthScale'), 1 / (zMax + 1));
     // z is interpolated relative to the surface's base z too (id.frag says why), clamped as
     // surface.frag clamps it: a flat slice less uZRef is then 0 exactly.
-    gl.uniform1f(p.loc('uZRef'), Math.min(Math.max(surface.base, 0), zMax));
+    // flatSliceZ: the same number in float64 (a uniform rounds it as flatSliceZ did).
+    gl.uniform1f(p.loc('uZRef'), flat ?? Math.min(Math.max(surface.base, 0), zMax));
     const uMatrix = p.loc('uMatrix');
     let triangles = 0;
     for (const c of chunks) {
@@ -73,5 +79,6 @@ export class IdPass {
 
   delete(): void {
     this.program.delete();
+    this.flat.delete();
   }
 }

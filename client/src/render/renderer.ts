@@ -8,7 +8,7 @@ import type { Surface } from '../../../format/slicing-surface.js';
 import type { ViewGeometry } from '../geometry/view.js';
 import type { Payload } from '../source/worker-protocol.js';
 import { ChunkStore } from './chunk-store.js';
-import { ColourPass, type ColourParams } from './colour-pass.js';
+import { ColourPass, type FrameColourParams } from './colour-pass.js';
 import { FaceStateTexture } from './face-state-texture.js';
 import type { GpuChunk } from './gpu-chunk.js';
 import type { GpuLineChunk } from './gpu-line-chunk.js';
@@ -21,6 +21,7 @@ import { OverlayPass, type OverlayDrawable } from './overlay-pass.js';
 import { PresentPass } from './present-pass.js';
 import { createStyleTexture, parseColour } from './style-texture.js';
 import { SurfacePass } from './surface-pass.js';
+import { flatSliceZ } from './surface-params.js';
 import { Targets } from './targets.js';
 
 export interface FrameParams {
@@ -29,15 +30,12 @@ export interface FrameParams {
   zMax: number;
   /** Sub-pixel offset of this frame (device pixels); [0, 0] for the plain image. */
   jitter: [number, number];
-  colour: Omit<ColourParams, RendererColourParams>;
+  colour: FrameColourParams;
   /** Device pixels per CSS pixel (the overlays' widths are in CSS pixels). */
   pixelRatio: number;
   /** The slicing surface's z range over the view (line segments outside it are skipped). */
   sliceRange: [number, number];
 }
-
-/** What the renderer adds to the colour pass's parameters: its own textures and the style's background. */
-type RendererColourParams = 'style' | 'classCount' | 'background' | 'faceState';
 
 interface Gpu {
   surface: SurfacePass;
@@ -209,7 +207,7 @@ export class Renderer {
     const triangles = g.id.draw(g.targets, f.view, chunks, f.surface, f.zMax, this.sliceTop(f), f.jitter);
     this.idsJittered = f.jitter[0] !== 0 || f.jitter[1] !== 0;
     gl.bindVertexArray(g.emptyVao);
-    g.colour.draw(g.targets, { ...f.colour, style: g.style.texture, classCount: g.style.classCount, background: parseColour(this.style.background), faceState: g.faceState.texture });
+    g.colour.draw(g.targets, { ...f.colour, style: g.style.texture, classCount: g.style.classCount, background: parseColour(this.style.background), faceState: g.faceState, flatZ: flatSliceZ(f.surface, f.zMax) });
     g.present.draw(g.targets);
     const segments = this.drawLines(g, f, lineChunks);
     this.drawOverlays(g, f);

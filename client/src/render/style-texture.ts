@@ -1,5 +1,5 @@
 // The style as a texture the colour pass looks classes up in (one column per class):
-// row 0 the fill colour, row 1 the pattern colour and kind, row 2 the z range in which the
+// row 0 the fill colour and the pattern's kind (0: none), row 1 the pattern colour, row 2 the z range in which the
 // pattern shows (its scale range turned into steps, so the pass compares with the slice's z).
 import { zAtScale, type ScaleInfo } from '../../../format/scale.js';
 import type { CubeStyle } from '../../../format/style.js';
@@ -24,11 +24,11 @@ export function styleData(style: CubeStyle, info: ScaleInfo): { width: number; d
   const data = new Float32Array(width * 3 * 4);
   classes.forEach((c, i) => {
     const fill = parseColour(c.color);
-    data.set([fill[0], fill[1], fill[2], 1], 4 * i);
     const p = c.pattern;
+    data.set([fill[0], fill[1], fill[2], p ? PATTERN_KIND[p.kind] : 0], 4 * i);
     if (p) {
       const pc = parseColour(p.color);
-      data.set([pc[0], pc[1], pc[2], PATTERN_KIND[p.kind]], 4 * (width + i));
+      data.set([pc[0], pc[1], pc[2], 1], 4 * (width + i));
       const zLo = p.minScale !== undefined ? zAtScale(info, p.minScale) : -1;
       const zHi = p.maxScale !== undefined ? zAtScale(info, p.maxScale) : 1e30;
       data.set([zLo, zHi, 0, 0], 4 * (2 * width + i));

@@ -1,7 +1,7 @@
 // The GPU's surface formulas, rewritten around the view centre, against format/slicing-surface.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { relativeZ, surfaceParams } from './surface-params.js';
+import { flatSliceZ, relativeZ, surfaceParams } from './surface-params.js';
 import { surfaceZ, type SurfaceSpec } from '../../../format/slicing-surface.js';
 
 describe('surfaces around the view centre (the GPU formulas)', () => {
@@ -29,4 +29,13 @@ describe('surfaces around the view centre (the GPU formulas)', () => {
       assert.ok(worst < 1e-4, `largest difference ${worst}`);
     });
   }
+
+  test('a flat slice\'s one z is what the surface target holds there (clamped, float32); other surfaces have none', () => {
+    for (const [base, want] of [[220.3, Math.fround(220.3)], [-4, 0], [1e9 + 5, Math.fround(1e9)]] as const) {
+      const s = { base, spec: { kind: 'flat' } as const };
+      assert.equal(flatSliceZ(s, 1e9), want);
+      assert.equal(flatSliceZ(s, 1e9), Math.fround(surfaceZ(s, cx, cy, 1e9)));
+    }
+    for (const spec of specs.slice(1)) assert.equal(flatSliceZ({ base: 220, spec }, 1e9), null);
+  });
 });

@@ -64,6 +64,14 @@ export function surfaceParams(s: Surface, centerX: number, centerY: number): Sur
   return out;
 }
 
+/**
+ * The slice's one z (float32, clamped to [0, zMax] as surface.frag clamps) when it is flat, else
+ * null: the passes then take it as a uniform instead of reading the surface target per pixel.
+ */
+export function flatSliceZ(s: Surface, zMax: number): number | null {
+  return s.spec.kind === 'flat' ? Math.fround(Math.min(Math.max(s.base, 0), zMax)) : null;
+}
+
 /** z at offset (dx, dy) from the view centre, as surface.frag computes it (before clamping). */
 export function relativeZ(sp: SurfaceParams, dx: number, dy: number): number {
   const p = sp.p;

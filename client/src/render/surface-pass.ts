@@ -2,14 +2,11 @@
 // or, where float targets cannot be rendered to, on the CPU with the shared definitions.
 import fullscreenVert from '../../shaders/fullscreen.vert?raw';
 import surfaceFrag from '../../shaders/surface.frag?raw';
-import { surfaceParams, MAX_IDW_POINTS } from './surface-params.js';
+import { flatSliceZ, surfaceParams, MAX_IDW_POINTS } from './surface-params.js';
 import { surfaceZ, type Surface } from '../../../format/slicing-surface.js';
 import type { ViewGeometry } from '../geometry/view.js';
 import { Program } from './program.js';
 import type { Targets } from './targets.js';
-
-/** surface.frag's kind of a flat slice. */
-const FLAT = 0;
 
 export class SurfacePass {
   private readonly program: Program;
@@ -27,15 +24,16 @@ export class SurfacePass {
       this.drawOnCpu(targets, view, surface, zMax);
       return;
     }
-    const sp = surfaceParams(surface, view.centerX, view.centerY);
-    if (sp.kind === FLAT) {
+    const flat = flatSliceZ(surface, zMax);
+    if (flat !== null) {
       // One z everywhere: a clear writes what surface.frag would (clamp in float32), without
       // running a shader per pixel, which on a software GPU cost a tenth of the frame.
-      this.flatZ[0] = Math.min(Math.max(Math.fround(sp.base), 0), Math.fround(zMax));
+      this.flatZ[0] = flat;
       gl.bindFramebuffer(gl.FRAMEBUFFER, targets.surfaceFb);
       gl.clearBufferfv(gl.COLOR, 0, this.flatZ);
       return;
     }
+    const sp = surfaceParams(surface, view.centerX, view.centerY);
     const p = this.program;
     p.use();
     gl.uniform1i(p.loc('uKind'), sp.kind);
