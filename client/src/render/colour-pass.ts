@@ -3,7 +3,8 @@
 import colourFrag from '../../shaders/colour.frag?raw';
 import fullscreenVert from '../../shaders/fullscreen.vert?raw';
 import type { FaceStateTexture } from './face-state-texture.js';
-import { Program, withDefines } from './program.js';
+import { Program } from './program.js';
+import { withDefines } from './shader-defines.js';
 import type { Rgba } from './style-texture.js';
 import type { Targets } from './targets.js';
 

@@ -7,7 +7,8 @@ import idVert from '../../shaders/id.vert?raw';
 import type { Surface } from '../../../format/slicing-surface.js';
 import type { ViewGeometry } from '../geometry/view.js';
 import type { GpuChunk } from './gpu-chunk.js';
-import { Program, withDefines } from './program.js';
+import { Program } from './program.js';
+import { withDefines } from './shader-defines.js';
 import { flatSliceZ } from './surface-params.js';
 import type { Targets } from './targets.js';
 

@@ -1,7 +1,7 @@
 // Shader variants: the defines go after #version (which must stay the first line).
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { withDefines } from './program.js';
+import { withDefines } from './shader-defines.js';
 
 test('withDefines puts each define after the #version line and leaves the rest as it is', () => {
   const src = '#version 300 es\nprecision highp float;\nvoid main() {}\n';
