@@ -38,6 +38,8 @@ export class LinePass {
     const gl = this.gl;
     let segments = 0;
     for (const c of chunks) segments += c.prepare(gl, sliceRange[0], sliceRange[1], zWindow);
+    // No segment at this slice (the base scale, where roads are areas): no clear, no full-screen pass.
+    if (segments === 0) return 0;
     const p = this.program;
     p.use();
     gl.bindFramebuffer(gl.FRAMEBUFFER, targets.linesFb);
