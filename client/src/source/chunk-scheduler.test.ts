@@ -133,6 +133,23 @@ describe('the chunk scheduler', () => {
     assert.equal(n.indexComplete, true);
   });
 
+  test('the margin waits until every chunk on screen has come, even with requests to spare', async (t) => {
+    const h = await harness(t, handMadeCube(row(5)).files, { concurrency: 4 }, () => 'hold');
+    // On screen: c-0 and c-1 (x 0..19.5); the margin (to x 50) holds c-2, c-3, c-4.
+    h.scheduler.setView(view(1, 0, 19.5, { centerX: 10, margin: [0, 50] }));
+    await eventually(() => h.fetched().length === 2, 'two requests');
+    await settle();
+    assert.deepEqual(sorted(h.fetched()), ['c-0.bin', 'c-1.bin'], 'only what is on screen, though two more could go');
+    h.answerOldest();
+    await eventually(() => h.received().length === 1, 'the first chunk');
+    await settle();
+    assert.equal(h.fetched().length, 2, 'one on-screen chunk still coming: the margin still waits');
+    h.answerOldest();
+    await eventually(() => h.fetched().length === 5, 'the margin requested');
+    assert.deepEqual(h.fetched().slice(2), ['c-2.bin', 'c-3.bin', 'c-4.bin']);
+    assert.equal(h.fetch.maxOpen, 3);
+  });
+
   test('a chunk goes requested, received, on the GPU; evicted while in view it is fetched again, evicted out of view it waits until the view comes back', async (t) => {
     const h = await harness(t, handMadeCube(row(2)).files, { concurrency: 2 });
     const both = view(1, 0, 20, { centerX: 5 });

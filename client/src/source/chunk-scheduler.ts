@@ -3,7 +3,9 @@
 // - each chunk has one status; a chunk is never requested twice at once;
 // - a request for a chunk that left the view (and its margin) is aborted;
 // - the nearest to the view centre and base z go first, the on-screen ones before the margin,
-//   then those of the views ahead (a flight's path), in the order they will be shown.
+//   then those of the views ahead (a flight's path), in the order they will be shown;
+// - the margin and the views ahead wait until every on-screen chunk has come (or failed): on a
+//   slow link they would share its bandwidth and hold back the complete map.
 import type { ChunkLeaf, LineChunkLeaf } from '../../../format/cube-index.js';
 import { boxMeets, chunkPriority, queryLineChunks, type QueryBox } from '../../../format/index-query.js';
 import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
@@ -137,8 +139,14 @@ export class ChunkScheduler {
       if (e.status === 'not-requested' || e.status === 'evicted') waiting.push(e);
     }
     waiting.sort((a, b) => a.priority - b.priority);
+    const onScreenComing = [...this.needed].some((file) => {
+      const e = this.entries.get(file)!;
+      return e.priority < MARGIN_TIER && (e.status === 'not-requested' || e.status === 'evicted' || e.status === 'requested');
+    });
     for (const e of waiting) {
       if (this.inFlight >= this.opts.concurrency) break;
+      // Sorted: all that follow are off screen too.
+      if (onScreenComing && e.priority >= MARGIN_TIER) break;
       this.start(e);
     }
   }
