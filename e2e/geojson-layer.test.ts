@@ -25,6 +25,15 @@ const PAGES: Record<string, string> = {
 </body>
 </html>
 `,
+  // No supersampling: every frame's map goes straight onto the canvas, never into the colour target.
+  'single.html': `${LIB_PAGE_HEAD}
+  <script src="lib/vario-map.umd.js"></script>
+  <script>
+    window.map = new vario.VarioMap({ container: 'map', source: 'cube/index.json', supersampling: 1 });
+  </script>
+</body>
+</html>
+`,
   // A layer added at once, before the cube (and its CRS) is known: a square around Otterlo.
   'early.html': `${LIB_PAGE_HEAD}
   <script src="lib/vario-map.umd.js"></script>
@@ -67,8 +76,8 @@ const CIRCLE_COLOUR = '#ff8000';
 describe('GeoJsonLayer in the script-tag build (bgt_otterlo_400m)', () => {
   const bed = useLibSite(PAGES);
 
-  async function open(deviceScaleFactor = 1): Promise<Page> {
-    bed.page = await openMap(bed.site.browser, bed.site.server.url, {}, { page: 'geojson.html', deviceScaleFactor });
+  async function open(deviceScaleFactor = 1, html = 'geojson.html'): Promise<Page> {
+    bed.page = await openMap(bed.site.browser, bed.site.server.url, {}, { page: html, deviceScaleFactor });
     const page = bed.page.page;
     await idle(page);
     await page.evaluate(async () => {
@@ -186,6 +195,22 @@ describe('GeoJsonLayer in the script-tag build (bgt_otterlo_400m)', () => {
     await page.evaluate(() => (globalThis as unknown as LayerWindow).map.whenIdle());
     await check('after a wheel zoom');
 
+  });
+
+  test('without supersampling, a layer added over the finished map changes only its own pixels, and removing it gives the map back exactly', async () => {
+    // The map is then not drawn again: the layer goes over the last frame's map, which must be shown as it was.
+    const page = await open(1, 'single.html');
+    const plain = await screenshot(page);
+    const ends: XY[] = [[100, 100], [500, 350]];
+    const coords = await lngLats(page, ends);
+    await addLayer(page, { data: { type: 'LineString', coordinates: coords }, paint: { lineColor: LINE_COLOUR, lineWidth: 8 } });
+    const diff = changed(await screenshot(page), plain);
+    assert.ok(diff.length > 1000, 'the layer is drawn');
+    const line = await projected(page, coords);
+    const worst = Math.max(...diff.map((p) => distanceToPolyline(p, line, false)));
+    assert.ok(worst <= 4 + 1.5, `every pixel that changed is within width/2 + 1.5 px of the line: worst ${worst.toFixed(2)} px`);
+    await removeLayers(page);
+    assert.deepEqual(changed(await screenshot(page), plain), [], 'no pixel differs from the map without the layer');
   });
 
   test('setPaint recolours the layer; projected data draws as its longitude/latitude does; removing a layer restores the plain map pixels exactly', async () => {

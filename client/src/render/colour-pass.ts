@@ -1,5 +1,6 @@
 // Colour pass: the ID targets to colours (colour.frag), accumulated into the colour target
-// with weight 1 / n for the n-th supersampling frame (a running mean).
+// with weight 1 / n for the n-th supersampling frame (a running mean), or drawn straight onto
+// the canvas (renderer.ts says when).
 import colourFrag from '../../shaders/colour.frag?raw';
 import fullscreenVert from '../../shaders/fullscreen.vert?raw';
 import type { FaceStateTexture } from './face-state-texture.js';
@@ -58,7 +59,8 @@ export class ColourPass {
     return p;
   }
 
-  draw(targets: Targets, c: ColourParams): void {
+  /** Into the colour target, or with `toCanvas` onto the canvas (weight 1 only). */
+  draw(targets: Targets, c: ColourParams, toCanvas = false): void {
     const gl = this.gl;
     const features: string[] = [];
     if (c.blendDistance > 0) features.push('BLENDING');
@@ -91,7 +93,7 @@ export class ColourPass {
     gl.uniform4fv(p.loc('uStateFill'), c.statePaints.flatMap((s) => s.fill));
     gl.uniform4fv(p.loc('uStateOutline'), c.statePaints.flatMap((s) => s.outline));
     gl.uniform1iv(p.loc('uStateWidth'), c.statePaints.map((s) => s.width));
-    gl.bindFramebuffer(gl.FRAMEBUFFER, targets.colourFb);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, toCanvas ? null : targets.colourFb);
     gl.viewport(0, 0, targets.width, targets.height);
     gl.disable(gl.DEPTH_TEST);
     if (c.weight >= 1) {

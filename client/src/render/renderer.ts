@@ -8,7 +8,7 @@ import type { Surface } from '../../../format/slicing-surface.js';
 import type { ViewGeometry } from '../geometry/view.js';
 import type { Payload } from '../source/worker-protocol.js';
 import { ChunkStore } from './chunk-store.js';
-import { ColourPass, type FrameColourParams } from './colour-pass.js';
+import { ColourPass, type ColourParams, type FrameColourParams } from './colour-pass.js';
 import { FaceStateTexture } from './face-state-texture.js';
 import type { GpuChunk } from './gpu-chunk.js';
 import type { GpuLineChunk } from './gpu-line-chunk.js';
@@ -61,6 +61,13 @@ export class Renderer {
   /** Each face's drawn states (bits), kept to make the feature state texture again after a lost context. */
   private readonly faceStates = new Map<number, number>();
   private lastFrame: FrameParams | null = null;
+  /**
+   * The frame whose colour went straight onto the canvas, not into the colour target; its ids
+   * (and slicing surface) are still in the targets. A frame of weight 1 (every frame of a
+   * moving map) skips the copy to the canvas that way, a tenth of the frame on a software GPU;
+   * the first frame that averages into it puts its colour in the target first.
+   */
+  private canvasOnly: FrameParams | null = null;
   private lastChunks: GpuChunk[] = [];
   private lastLineChunks: GpuLineChunk[] = [];
   /** The line rules drawn (the texture's contents, for picking). */
@@ -109,6 +116,7 @@ export class Renderer {
     const floatTargets = gl.getExtension('EXT_color_buffer_float') !== null;
     const targets = new Targets(gl, { floatTargets });
     this.overlaysDrawn = null;
+    this.canvasOnly = null;
     this.gpu = {
       surface: new SurfacePass(gl),
       id: new IdPass(gl),
@@ -201,14 +209,22 @@ export class Renderer {
     const g = this.gpu;
     if (!g || !g.style || !g.faceState || !this.style) return { triangles: 0, segments: 0 };
     const gl = this.gl;
+    if (g.targets.width !== f.view.width || g.targets.height !== f.view.height) this.canvasOnly = null;
     g.targets.resize(f.view.width, f.view.height);
     gl.bindVertexArray(g.emptyVao);
+    if (f.colour.weight < 1 && this.canvasOnly) {
+      // The running mean starts from the last frame's colour: from its ids, before they go.
+      g.colour.draw(g.targets, this.colourParams(g.style, g.faceState, this.style.background, this.canvasOnly));
+      this.canvasOnly = null;
+    }
     g.surface.draw(g.targets, f.view, f.surface, f.zMax);
     const triangles = g.id.draw(g.targets, f.view, chunks, f.surface, f.zMax, this.sliceTop(f), f.jitter);
     this.idsJittered = f.jitter[0] !== 0 || f.jitter[1] !== 0;
     gl.bindVertexArray(g.emptyVao);
-    g.colour.draw(g.targets, { ...f.colour, style: g.style.texture, classCount: g.style.classCount, background: parseColour(this.style.background), faceState: g.faceState, flatZ: flatSliceZ(f.surface, f.zMax) });
-    g.present.draw(g.targets);
+    const toCanvas = f.colour.weight >= 1;
+    g.colour.draw(g.targets, this.colourParams(g.style, g.faceState, this.style.background, f), toCanvas);
+    if (toCanvas) this.canvasOnly = f;
+    else g.present.draw(g.targets);
     const segments = this.drawLines(g, f, lineChunks);
     this.drawOverlays(g, f);
     gl.bindVertexArray(null);
@@ -218,12 +234,19 @@ export class Renderer {
     return { triangles, segments };
   }
 
+  /** The colour pass's parameters for frame f: the frame's, with the renderer's textures and background. */
+  private colourParams(style: { texture: WebGLTexture; classCount: number }, faceState: FaceStateTexture, background: string, f: FrameParams): ColourParams {
+    return { ...f.colour, style: style.texture, classCount: style.classCount, background: parseColour(background), faceState, flatZ: flatSliceZ(f.surface, f.zMax) };
+  }
+
   /** Shows the last frame's map again with the overlays as they are now (the map's image is kept). */
   present(): void {
     const g = this.gpu, f = this.lastFrame;
     // Nothing drawn since the context came back: the next frame draws everything.
     if (!g || !f || g.targets.width === 0) return;
-    g.present.draw(g.targets);
+    if (this.canvasOnly && g.style && g.faceState && this.style) {
+      g.colour.draw(g.targets, this.colourParams(g.style, g.faceState, this.style.background, this.canvasOnly), true);
+    } else g.present.draw(g.targets);
     this.drawLines(g, f, this.lastLineChunks.filter((c) => this.store.get(c.file) === c));
     this.drawOverlays(g, f);
   }
