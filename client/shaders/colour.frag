@@ -29,7 +29,8 @@ uniform vec4 uBoundaryColour; // rgb, alpha = opacity
 uniform float uPatternCell;   // pattern period, device pixels
 uniform float uPatternLine;   // pattern line width / dot radius, device pixels
 uniform vec2 uPatternShift;   // anchors patterns to the ground, device pixels
-uniform usampler2D uFaceState; // R8UI, one texel per face id (rows of 2048): bit i, state i
+uniform usampler2D uFaceState; // R8UI, one texel per face id (rows of 2^uFaceStateShift): bit i, state i
+uniform uint uFaceStateShift;
 uniform uint uFaceCount;       // faces in uFaceState
 // Per drawn state (0 hover, 1 highlight, painted in that order):
 uniform vec4 uStateFill[2];    // rgb, alpha = opacity
@@ -38,11 +39,11 @@ uniform int uStateWidth[2];    // outline inside the face, device pixels; 0: non
 
 out vec4 oColour;
 
-// Shifts, not division (face-state-texture.ts has 2048 texels a row): on a software GPU integer
-// division costs as much as a texture read.
+// Shifts, not division (face-state-texture.ts has a power of two texels a row): on a software
+// GPU integer division costs as much as a texture read.
 uint stateBits(uint face) {
   if (face == 0u || face >= uFaceCount) return 0u;
-  return texelFetch(uFaceState, ivec2(int(face & 2047u), int(face >> 11u)), 0).r;
+  return texelFetch(uFaceState, ivec2(int(face & ((1u << uFaceStateShift) - 1u)), int(face >> uFaceStateShift)), 0).r;
 }
 
 // Whether a pixel within `width` of p (on screen) shows another face than `face`.

@@ -3,7 +3,7 @@
 // the canvas (renderer.ts says when).
 import colourFrag from '../../shaders/colour.frag?raw';
 import fullscreenVert from '../../shaders/fullscreen.vert?raw';
-import type { FaceStateTexture } from './face-state-texture.js';
+import { FACE_STATE_SHIFT, type FaceStateTexture } from './face-state-texture.js';
 import { Program } from './program.js';
 import { withDefines } from './shader-defines.js';
 import type { Rgba } from './style-texture.js';
@@ -80,6 +80,7 @@ export class ColourPass {
     bind(3, c.style, 'uStyle');
     bind(4, c.faceState.texture, 'uFaceState');
     gl.uniform1ui(p.loc('uFaceCount'), c.faceState.faceCount);
+    gl.uniform1ui(p.loc('uFaceStateShift'), FACE_STATE_SHIFT);
     gl.uniform1i(p.loc('uClassCount'), c.classCount);
     if (c.flatZ !== null) gl.uniform1f(p.loc('uSliceZ'), c.flatZ);
     gl.uniform4fv(p.loc('uBackground'), c.background);

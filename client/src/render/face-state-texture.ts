@@ -4,8 +4,9 @@
 // when its state changes, so a hover costs one tiny upload whatever the cube's size.
 import { texture2d } from './targets.js';
 
-/** Texels per row: 2048 is the least MAX_TEXTURE_SIZE WebGL2 allows (colour.frag shifts by 11). */
-export const FACE_STATE_WIDTH = 2048;
+/** Texels per row, 2^11: 2048 is the least MAX_TEXTURE_SIZE WebGL2 allows (colour.frag shifts by it, not divides). */
+export const FACE_STATE_SHIFT = 11;
+export const FACE_STATE_WIDTH = 1 << FACE_STATE_SHIFT;
 
 export class FaceStateTexture {
   readonly texture: WebGLTexture;

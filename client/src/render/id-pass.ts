@@ -60,8 +60,8 @@ export class IdPass {
     gl.uniform1f(p.loc('uDepthScale'), 1 / (zMax + 1));
     // z is interpolated relative to the surface's base z too (id.frag says why), clamped as
     // surface.frag clamps it: a flat slice less uZRef is then 0 exactly.
-    // flatSliceZ: the same number in float64 (a uniform rounds it as flatSliceZ did).
-    gl.uniform1f(p.loc('uZRef'), flat ?? Math.min(Math.max(surface.base, 0), zMax));
+    // For a flat slice the float32 this rounds to is flatSliceZ's, which FLAT reads as the slice's z.
+    gl.uniform1f(p.loc('uZRef'), Math.min(Math.max(surface.base, 0), zMax));
     const uMatrix = p.loc('uMatrix');
     let triangles = 0;
     for (const c of chunks) {

@@ -1,4 +1,4 @@
-// Line pass: the cube's lines over the map on the canvas, after the present pass and under the
+// Line pass: the cube's lines over the map on the canvas, after the map is there and under the
 // overlays. Every casing first, then every fill, so lines that meet look joined. Lines are
 // anti-aliased in the shader and drawn on the canvas, not accumulated with the supersampled
 // map: each frame draws them sharp at the unjittered view.

@@ -1,4 +1,4 @@
-// Overlay pass: GeoJSON layers drawn over the map on the canvas, after the present pass, in the
+// Overlay pass: GeoJSON layers drawn over the map on the canvas, after the map and its lines, in the
 // order they were added. Per layer, its fills, lines and circles first go into a coverage target
 // (overlay-quad.frag: one channel each, the largest coverage per pixel kept), which is then
 // painted in the layer's colours and opacities (overlay-composite.frag) into the overlays

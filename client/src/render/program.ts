@@ -53,4 +53,3 @@ function compile(gl: WebGL2RenderingContext, type: number, source: string, name:
   }
   return s;
 }
-

@@ -208,13 +208,14 @@ export class Renderer {
   render(f: FrameParams, chunks: GpuChunk[], lineChunks: GpuLineChunk[] = []): { triangles: number; segments: number } {
     const g = this.gpu;
     if (!g || !g.style || !g.faceState || !this.style) return { triangles: 0, segments: 0 };
+    const ready = { style: g.style, faceState: g.faceState };
     const gl = this.gl;
     if (g.targets.width !== f.view.width || g.targets.height !== f.view.height) this.canvasOnly = null;
     g.targets.resize(f.view.width, f.view.height);
     gl.bindVertexArray(g.emptyVao);
     if (f.colour.weight < 1 && this.canvasOnly) {
       // The running mean starts from the last frame's colour: from its ids, before they go.
-      g.colour.draw(g.targets, this.colourParams(g.style, g.faceState, this.style.background, this.canvasOnly));
+      g.colour.draw(g.targets, this.colourParams(ready, this.style, this.canvasOnly));
       this.canvasOnly = null;
     }
     g.surface.draw(g.targets, f.view, f.surface, f.zMax);
@@ -222,7 +223,7 @@ export class Renderer {
     this.idsJittered = f.jitter[0] !== 0 || f.jitter[1] !== 0;
     gl.bindVertexArray(g.emptyVao);
     const toCanvas = f.colour.weight >= 1;
-    g.colour.draw(g.targets, this.colourParams(g.style, g.faceState, this.style.background, f), toCanvas);
+    g.colour.draw(g.targets, this.colourParams(ready, this.style, f), toCanvas);
     if (toCanvas) this.canvasOnly = f;
     else g.present.draw(g.targets);
     const segments = this.drawLines(g, f, lineChunks);
@@ -235,8 +236,8 @@ export class Renderer {
   }
 
   /** The colour pass's parameters for frame f: the frame's, with the renderer's textures and background. */
-  private colourParams(style: { texture: WebGLTexture; classCount: number }, faceState: FaceStateTexture, background: string, f: FrameParams): ColourParams {
-    return { ...f.colour, style: style.texture, classCount: style.classCount, background: parseColour(background), faceState, flatZ: flatSliceZ(f.surface, f.zMax) };
+  private colourParams(g: { style: { texture: WebGLTexture; classCount: number }; faceState: FaceStateTexture }, style: CubeStyle, f: FrameParams): ColourParams {
+    return { ...f.colour, style: g.style.texture, classCount: g.style.classCount, background: parseColour(style.background), faceState: g.faceState, flatZ: flatSliceZ(f.surface, f.zMax) };
   }
 
   /** Shows the last frame's map again with the overlays as they are now (the map's image is kept). */
@@ -244,8 +245,9 @@ export class Renderer {
     const g = this.gpu, f = this.lastFrame;
     // Nothing drawn since the context came back: the next frame draws everything.
     if (!g || !f || g.targets.width === 0) return;
-    if (this.canvasOnly && g.style && g.faceState && this.style) {
-      g.colour.draw(g.targets, this.colourParams(g.style, g.faceState, this.style.background, this.canvasOnly), true);
+    const { style, faceState } = g;
+    if (this.canvasOnly && style && faceState && this.style) {
+      g.colour.draw(g.targets, this.colourParams({ style, faceState }, this.style, this.canvasOnly), true);
     } else g.present.draw(g.targets);
     this.drawLines(g, f, this.lastLineChunks.filter((c) => this.store.get(c.file) === c));
     this.drawOverlays(g, f);

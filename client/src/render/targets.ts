@@ -1,7 +1,7 @@
 // The offscreen targets of a frame, sized to the canvas in device pixels:
 // - ids: RG32UI upper/lower face + RG32UI classes/surface z, with a float depth buffer (MRT);
 // - surface: R32F slicing surface z;
-// - colour: the accumulated (supersampled) colour;
+// - colour: the accumulated (supersampled) colour (a frame of weight 1 goes to the canvas only, renderer.ts);
 // - coverage: scratch RGBA8, the cube's lines' coverage (line-pass.ts, with its own depth buffer)
 //   and then each overlay layer's (overlay-pass.ts);
 // - overlays: every overlay layer painted (premultiplied), in the colour target's format.

@@ -133,21 +133,21 @@ describe('the chunk scheduler', () => {
     assert.equal(n.indexComplete, true);
   });
 
-  test('the margin waits until every chunk on screen has come, even with requests to spare', async (t) => {
-    const h = await harness(t, handMadeCube(row(5)).files, { concurrency: 4 }, () => 'hold');
-    // On screen: c-0 and c-1 (x 0..19.5); the margin (to x 50) holds c-2, c-3, c-4.
-    h.scheduler.setView(view(1, 0, 19.5, { centerX: 10, margin: [0, 50] }));
-    await eventually(() => h.fetched().length === 2, 'two requests');
+  test('the margin waits until every chunk on screen has come, even with requests to spare; a flight\'s path does not wait', async (t) => {
+    const h = await harness(t, handMadeCube(row(7)).files, { concurrency: 4 }, () => 'hold');
+    // On screen: c-0 and c-1 (x 0..19.5); the margin (to x 50) holds c-2, c-3, c-4; a view ahead c-6.
+    h.scheduler.setView(view(1, 0, 19.5, { centerX: 9, margin: [0, 50], ahead: [ahead(60.5, 69.5)] }));
+    await eventually(() => h.fetched().length === 3, 'three requests');
     await settle();
-    assert.deepEqual(sorted(h.fetched()), ['c-0.bin', 'c-1.bin'], 'only what is on screen, though two more could go');
+    assert.deepEqual(h.fetched(), ['c-0.bin', 'c-1.bin', 'c-6.bin'], 'what is on screen and the path ahead, though one more could go');
     h.answerOldest();
     await eventually(() => h.received().length === 1, 'the first chunk');
     await settle();
-    assert.equal(h.fetched().length, 2, 'one on-screen chunk still coming: the margin still waits');
+    assert.equal(h.fetched().length, 3, 'one on-screen chunk still coming: the margin still waits');
     h.answerOldest();
-    await eventually(() => h.fetched().length === 5, 'the margin requested');
-    assert.deepEqual(h.fetched().slice(2), ['c-2.bin', 'c-3.bin', 'c-4.bin']);
-    assert.equal(h.fetch.maxOpen, 3);
+    await eventually(() => h.fetched().length === 6, 'the margin requested');
+    assert.deepEqual(h.fetched().slice(3), ['c-2.bin', 'c-3.bin', 'c-4.bin']);
+    assert.equal(h.fetch.maxOpen, 4);
   });
 
   test('a chunk goes requested, received, on the GPU; evicted while in view it is fetched again, evicted out of view it waits until the view comes back', async (t) => {

@@ -4,8 +4,9 @@
 // - a request for a chunk that left the view (and its margin) is aborted;
 // - the nearest to the view centre and base z go first, the on-screen ones before the margin,
 //   then those of the views ahead (a flight's path), in the order they will be shown;
-// - the margin and the views ahead wait until every on-screen chunk has come (or failed): on a
-//   slow link they would share its bandwidth and hold back the complete map.
+// - the margin waits until every on-screen chunk has come (or failed): on a slow link it would
+//   share its bandwidth and hold back the complete map. The views ahead do not wait: during a
+//   flight some on-screen chunk is nearly always coming, and the path must be fetched ahead.
 import type { ChunkLeaf, LineChunkLeaf } from '../../../format/cube-index.js';
 import { boxMeets, chunkPriority, queryLineChunks, type QueryBox } from '../../../format/index-query.js';
 import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
@@ -134,19 +135,17 @@ export class ChunkScheduler {
   private pump(): void {
     if (this.inFlight >= this.opts.concurrency) return;
     const waiting: Entry[] = [];
+    let onScreenComing = false;
     for (const file of this.needed) {
       const e = this.entries.get(file)!;
-      if (e.status === 'not-requested' || e.status === 'evicted') waiting.push(e);
+      const toStart = e.status === 'not-requested' || e.status === 'evicted';
+      if (toStart) waiting.push(e);
+      if (e.priority < MARGIN_TIER && (toStart || e.status === 'requested')) onScreenComing = true;
     }
     waiting.sort((a, b) => a.priority - b.priority);
-    const onScreenComing = [...this.needed].some((file) => {
-      const e = this.entries.get(file)!;
-      return e.priority < MARGIN_TIER && (e.status === 'not-requested' || e.status === 'evicted' || e.status === 'requested');
-    });
     for (const e of waiting) {
       if (this.inFlight >= this.opts.concurrency) break;
-      // Sorted: all that follow are off screen too.
-      if (onScreenComing && e.priority >= MARGIN_TIER) break;
+      if (onScreenComing && e.priority >= MARGIN_TIER && e.priority < AHEAD_TIER) continue;
       this.start(e);
     }
   }
