@@ -23,7 +23,9 @@ export interface ColourParams {
   patternLine: number;
   patternShift: [number, number];
   /** R8UI, one texel per face id (face-state-texture.ts): bit i set where state i is on. */
-  faceState: Pick<FaceStateTexture, 'texture' | 'faceCount' | 'any'>;
+  faceState: Pick<FaceStateTexture, 'texture' | 'faceCount'>;
+  /** Some face has a drawn state (else the pass is compiled without them and reads no state texel). */
+  anyState: boolean;
   /** Per drawn state (colour-options.ts, DRAWN_STATES), in the order painted. */
   statePaints: StatePaintParams[];
   /** Weight of this frame in the accumulated colour: 1 for the first. */
@@ -32,8 +34,8 @@ export interface ColourParams {
   flatZ: number | null;
 }
 
-/** What a frame chooses (colour-options.ts); the renderer adds its textures, the background and the flat slice's z. */
-export type FrameColourParams = Omit<ColourParams, 'style' | 'classCount' | 'background' | 'faceState' | 'flatZ'>;
+/** What a frame chooses (colour-options.ts); the renderer adds its textures, whether any face has a state, the background and the flat slice's z. */
+export type FrameColourParams = Omit<ColourParams, 'style' | 'classCount' | 'background' | 'faceState' | 'anyState' | 'flatZ'>;
 
 export interface StatePaintParams {
   /** rgb, alpha = opacity. */
@@ -65,7 +67,7 @@ export class ColourPass {
     const features: string[] = [];
     if (c.blendDistance > 0) features.push('BLENDING');
     if (c.boundaryBefore + c.boundaryAfter > 0) features.push('BOUNDARIES');
-    if (c.faceState.any) features.push('STATES');
+    if (c.anyState) features.push('STATES');
     if (c.flatZ !== null) features.push('FLAT');
     const p = this.program(features);
     p.use();

@@ -11,8 +11,6 @@ export const FACE_STATE_WIDTH = 1 << FACE_STATE_SHIFT;
 export class FaceStateTexture {
   readonly texture: WebGLTexture;
   private readonly height: number;
-  /** The faces with a drawn state: while none has one, the colour pass reads no texel. */
-  private readonly drawn = new Set<number>();
 
   constructor(
     private readonly gl: WebGL2RenderingContext,
@@ -30,19 +28,12 @@ export class FaceStateTexture {
   /** The face's drawn states, bit i for DRAWN_STATES[i]. */
   set(face: number, bits: number): void {
     if (face < 0 || face >= this.faceCount) return;
-    if (bits) this.drawn.add(face);
-    else this.drawn.delete(face);
     const gl = this.gl;
     gl.bindTexture(gl.TEXTURE_2D, this.texture);
     gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
     gl.texSubImage2D(gl.TEXTURE_2D, 0, face % FACE_STATE_WIDTH, Math.floor(face / FACE_STATE_WIDTH), 1, 1, gl.RED_INTEGER, gl.UNSIGNED_BYTE, new Uint8Array([bits]));
     gl.pixelStorei(gl.UNPACK_ALIGNMENT, 4);
     gl.bindTexture(gl.TEXTURE_2D, null);
-  }
-
-  /** Whether some face has a drawn state. */
-  get any(): boolean {
-    return this.drawn.size > 0;
   }
 
   delete(): void {

@@ -58,7 +58,7 @@ export class Renderer {
   private gpu: Gpu | null = null;
   private meta: CubeMeta | null = null;
   private style: CubeStyle | null = null;
-  /** Each face's drawn states (bits), kept to make the feature state texture again after a lost context. */
+  /** Each face's drawn states (bits): the feature state texture is made again from them after a lost context, and the colour pass leaves states out while there are none. */
   private readonly faceStates = new Map<number, number>();
   private lastFrame: FrameParams | null = null;
   /**
@@ -237,7 +237,7 @@ export class Renderer {
 
   /** The colour pass's parameters for frame f: the frame's, with the renderer's textures and background. */
   private colourParams(g: { style: { texture: WebGLTexture; classCount: number }; faceState: FaceStateTexture }, style: CubeStyle, f: FrameParams): ColourParams {
-    return { ...f.colour, style: g.style.texture, classCount: g.style.classCount, background: parseColour(style.background), faceState: g.faceState, flatZ: flatSliceZ(f.surface, f.zMax) };
+    return { ...f.colour, style: g.style.texture, classCount: g.style.classCount, background: parseColour(style.background), faceState: g.faceState, anyState: this.faceStates.size > 0, flatZ: flatSliceZ(f.surface, f.zMax) };
   }
 
   /** Shows the last frame's map again with the overlays as they are now (the map's image is kept). */
