@@ -169,6 +169,30 @@ test('bgt_otterlo_400m cube', async (t) => {
     assert.ok(Buffer.from(encodeTgap(decodeTgap(tb, 'o.tgap'))).equals(tb), 'the tGAP re-encodes to the same bytes');
   });
 
+  await t.test('every chunk is on the cube\'s grid, so a point two chunks share is one value in both', async () => {
+    // 1:1,000 at 0.28 mm: 2^-10 m (position-grid.ts). On each box's own grid (2^-15 m or finer
+    // here) a shared corner came out a few micrometres apart in two chunks.
+    const files = readdirSync(cube).filter((n) => n.startsWith('c-') && n.endsWith('.bin'));
+    assert.ok(files.length > 1);
+    const seen = new Map<string, [number, number, string]>();
+    let shared = 0;
+    for (const f of files) {
+      const c = await decodeChunk(new Uint8Array(readFileSync(path.join(cube, f))));
+      assert.equal(c.gridExponent, -10, `${f}: the cube's grid`);
+      for (let k = 0; k < c.vertexCount; k++) {
+        const x = c.originX + c.positions[3 * k]!, y = c.originY + c.positions[3 * k + 1]!;
+        const key = `${Math.round(x * 1024)},${Math.round(y * 1024)}`;
+        const other = seen.get(key);
+        if (!other) seen.set(key, [x, y, f]);
+        else if (other[2] !== f) {
+          shared++;
+          assert.deepEqual([x, y], [other[0], other[1]], `a corner in ${f} and ${other[2]}`);
+        }
+      }
+    }
+    assert.ok(shared > 100, `corners shared by two chunks: ${shared}`);
+  });
+
   await t.test('the build is deterministic', () => {
     const again = path.join(dir, 'again');
     assert.equal(runSsc(['build', tgapFile, '--out', again, '--quiet', '--classic']).code, 0);

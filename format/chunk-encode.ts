@@ -1,10 +1,10 @@
-// The chunk file's encoder (docs/FORMAT.md, "Chunk file", version 2), beside the decoder in
+// The chunk file's encoder (docs/FORMAT.md, "Chunk file", version 3), beside the decoder in
 // chunk.ts: a file of its own so that the map, which only decodes, does not load the
 // encoder's WebAssembly. Used by the build (Node). Same input, same bytes.
 import { MeshoptEncoder } from 'meshoptimizer/encoder';
 import {
-  CHUNK_MAGIC, CHUNK_VERSION, chunkSections, encodedVertexBytes, faceIndexSizeFor, gridSteps, indexSizeFor,
-  POINT_BYTES, POSITION_BITS, positionExponent,
+  CHUNK_MAGIC, CHUNK_VERSION, chunkSections, encodedVertexBytes, faceIndexSizeFor, gridExponentFor, gridSteps, indexSizeFor,
+  POINT_BYTES, POSITION_BITS,
 } from './chunk.js';
 
 await MeshoptEncoder.ready;
@@ -23,7 +23,7 @@ export interface ChunkInput {
   originY: number;
   /** x0, y0, z0, x1, y1, z1 with x, y relative to the origin: every x, y lies in it. */
   box: Float32Array;
-  /** x, y relative to the origin, z: per vertex. x, y go to the box's grid; z to float32. */
+  /** x, y relative to the origin, z: per vertex. x, y go to the grid (gridExponent); z to float32. */
   positions: ArrayLike<number>;
   upper: ArrayLike<number>;
   lower: ArrayLike<number>;
@@ -32,6 +32,11 @@ export interface ChunkInput {
   lowerClass: ArrayLike<number>;
   /** Counterclockwise triangles as vertex indices. */
   indices: ArrayLike<number>;
+  /**
+   * The exponent of the position grid wanted (the cube's, so that a point shared by two chunks
+   * decodes to the same value in both); the box's own exponent when that is coarser or when absent.
+   */
+  gridExponent?: number;
 }
 
 /** The faces named by the vertices, in order of first mention (upper before lower), with their classes. */
@@ -74,7 +79,7 @@ export function encodeChunk(c: ChunkInput): Uint8Array {
   const faces = faceTable(c);
   const F = faces.ids.length;
   const faceIndexSize = faceIndexSizeFor(F), indexSize = indexSizeFor(V);
-  const e = positionExponent(c.box), limit = 2 ** POSITION_BITS;
+  const e = gridExponentFor(c.box, c.gridExponent), limit = 2 ** POSITION_BITS;
 
   // One record per vertex and one per point (x, y on the grid, in order of first use), as
   // docs/FORMAT.md lays them out, for the vertex codec.

@@ -1,4 +1,4 @@
-// The chunk file, version 2: the encoder writes the header and face table of docs/FORMAT.md
+// The chunk file, version 3: the encoder writes the header and face table of docs/FORMAT.md
 // (checked at offsets worked out by hand), the decoder gives back what went in (positions
 // within half a grid step, everything else exactly), and a damaged, truncated or old file is
 // refused with a message that says what is wrong.
@@ -112,7 +112,7 @@ describe('chunk file', () => {
     const bytes = encodeChunk(square());
     const dv = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
     assert.equal(dv.getUint32(0, true), 0x43435353);
-    assert.equal(dv.getUint32(4, true), 2, 'version');
+    assert.equal(dv.getUint32(4, true), 3, 'version');
     assert.equal(dv.getUint32(8, true), 4, 'vertices');
     assert.equal(dv.getUint32(12, true), 2, 'triangles');
     assert.equal(dv.getFloat64(16, true), 181000.5);
@@ -245,10 +245,13 @@ describe('chunk file', () => {
     await refuses(good.subarray(0, 40), /truncated \(40 bytes, the header alone is 80\)/);
     await refuses(good.subarray(0, 3), /truncated/);
     await refuses(damaged((dv) => dv.setUint32(0, CHUNK_MAGIC + 1, true)), /bad magic/);
-    await refuses(damaged((dv) => dv.setUint32(4, 1, true)), /chunk version 1, this reader knows only version 2 \(rebuild the cube with ssc build\)/);
-    await refuses(damaged((dv) => dv.setUint32(4, 3, true)), /chunk version 3/);
+    await refuses(damaged((dv) => dv.setUint32(4, 1, true)), /chunk version 1, this reader knows only versions 2 and 3 \(rebuild the cube with ssc build\)/);
+    await refuses(damaged((dv) => dv.setUint32(4, 4, true)), /chunk version 4/);
     await refuses(good.subarray(0, good.length - 4), new RegExp(`${good.length - 4} bytes, its header .* needs ${good.length}`));
-    await refuses(damaged((dv) => dv.setInt32(56, -20, true)), /position step 2\^-20 does not fit its box \(2\^-23\)/);
+    await refuses(damaged((dv) => dv.setInt32(56, -24, true)), /position step 2\^-24 does not fit its box \(2\^-23 to 2\^64\)/);
+    await refuses(damaged((dv) => dv.setInt32(56, 65, true)), /position step 2\^65 does not fit its box \(2\^-23 to 2\^64\)/);
+    // Version 2 knew only the box's own grid.
+    await refuses(damaged((dv) => { dv.setUint32(4, 2, true); dv.setInt32(56, -20, true); }), /position step 2\^-20 does not fit its box \(2\^-23\)/);
     await refuses(damaged((dv) => dv.setUint32(8, 2 ** 30, true)), /counts out of bounds \(2 triangles, 1073741824 vertices/);
     await refuses(damaged((dv) => dv.setUint32(12, 2 ** 30, true)), /1073741824 triangles cannot fit an index stream of \d+ bytes/);
     await refuses(damaged((dv) => dv.setUint32(64, 5, true)), /counts out of bounds \(2 triangles, 4 vertices, 5 points, 3 faces\)/);
@@ -263,6 +266,39 @@ describe('chunk file', () => {
     dv.setUint32(4, 1, true);
     dv.setUint32(8, 4, true);
     dv.setUint32(12, 2, true);
-    await assert.rejects(decodeChunk(v1, 'c-old.bin'), /c-old\.bin: chunk version 1, this reader knows only version 2/);
+    await assert.rejects(decodeChunk(v1, 'c-old.bin'), /c-old\.bin: chunk version 1, this reader knows only versions 2 and 3/);
+  });
+
+  test('a file of version 2 (the box\'s own grid, the same layout) is still read', async () => {
+    const c = square();
+    const v2 = encodeChunk(c).slice();
+    new DataView(v2.buffer).setUint32(4, 2, true);
+    assertSame(await decodeChunk(v2), c, 0);
+  });
+
+  test('on the cube\'s grid, a point two chunks share decodes to the same value in both', async () => {
+    // One ground point in two chunks of different origins and sizes (a 1,500-unit chunk and a
+    // 40-unit one): on each box's own grid the two decoded values differ; on the cube's grid
+    // 2^-7 they are one value, and an exact multiple of the step.
+    const px = 1712.345678, py = 2030.987654;
+    const chunk = (ox: number, oy: number, size: number): ChunkInput => ({
+      originX: ox, originY: oy, box: Float32Array.of(0, 0, 0, size, size, 1),
+      positions: Float64Array.of(px - ox, py - oy, 0, size, 0, 0, 0, size, 0),
+      upper: Uint32Array.of(1, 1, 1), lower: new Uint32Array(3), upperClass: new Uint16Array(3), lowerClass: new Uint16Array(3).fill(0xffff),
+      indices: Uint16Array.of(0, 1, 2),
+    });
+    const absolute = async (ox: number, oy: number, size: number, grid?: number): Promise<[number, number]> => {
+      const d = await decodeChunk(encodeChunk({ ...chunk(ox, oy, size), gridExponent: grid }));
+      return [d.originX + d.positions[0]!, d.originY + d.positions[1]!];
+    };
+    const big = await absolute(1000, 1500, 1500), small = await absolute(1700, 2000, 40);
+    assert.notDeepEqual(big, small, 'the boxes\' own grids differ (2^-13 and 2^-18)');
+    const [bx, by] = await absolute(1000, 1500, 1500, -7), [sx, sy] = await absolute(1700, 2000, 40, -7);
+    assert.deepEqual([bx, by], [sx, sy]);
+    assert.deepEqual([bx, by], [Math.round(px * 128) / 128, Math.round(py * 128) / 128], 'the nearest 1/128');
+    const bytes = encodeChunk({ ...chunk(1700, 2000, 40), gridExponent: -7 });
+    assert.equal(new DataView(bytes.buffer).getInt32(56, true), -7, 'the header holds the cube\'s grid');
+    // A grid finer than the box allows is not taken: the box's own.
+    assert.equal(new DataView(encodeChunk({ ...chunk(1000, 1500, 1500), gridExponent: -20 }).buffer).getInt32(56, true), -13);
   });
 });

@@ -1,4 +1,4 @@
-// The chunk file (docs/FORMAT.md, "Chunk file", version 2): surface triangles of one chunk,
+// The chunk file (docs/FORMAT.md, "Chunk file", version 3): surface triangles of one chunk,
 // compact. Ground points relative to the chunk's origin on a power-of-two grid, each once (the
 // corners of several surfaces share it); a vertex is a point, its z as float32 and the faces
 // above and below as indices into a chunk-local face table (which gives each face's class).
@@ -11,14 +11,19 @@ import { VERTEX_BYTES, vertexColumnOffset, type VertexColumn } from './chunk-lay
 import { FormatError } from './format-error.js';
 
 export const CHUNK_MAGIC = 0x43435353; // "SSCC"
-export const CHUNK_VERSION = 2;
+export const CHUNK_VERSION = 3;
+/** The older version this reader still reads: the same layout, with the grid always the box's own. */
+export const CHUNK_VERSION_2 = 2;
+/** The coarsest position grid a reader accepts, 2^MAX_POSITION_EXPONENT (every grid value stays finite in float32). */
+export const MAX_POSITION_EXPONENT = 64;
 export const NO_CLASS = 0xffff;
 /** Header bytes (docs/FORMAT.md). */
 export const CHUNK_HEADER_BYTES = 80;
 /**
- * Bits of the position grid: x and y are whole steps of `2^e`, with `e` chosen from the box so
- * that its largest |x| or |y| is below `2^(e + POSITION_BITS)`. Every grid value is then exact
- * in float32 (at most 2^24 steps), and the largest ones are the float32 values themselves.
+ * Bits of the position grid: x and y are whole steps of `2^e`, with `e` at least the box's own
+ * exponent, the smallest with its largest |x| or |y| below `2^(e + POSITION_BITS)`. Every grid
+ * value is then exact in float32 (at most 2^24 steps). A build gives every chunk of a cube the
+ * same, coarser grid when the box allows (preprocess/ssc/position-grid.ts).
  */
 export const POSITION_BITS = 24;
 
@@ -40,6 +45,8 @@ export interface ChunkData {
 
 /** A decoded chunk also tells where its vertex columns lie in its buffer (one GPU upload). */
 export interface DecodedChunk extends ChunkData {
+  /** The file's position grid exponent, so that an encoder given this chunk writes the same file. */
+  gridExponent: number;
   /** Byte offset and length of the vertex columns (positions, upper, lower, classes). */
   vertexByteOffset: number;
   vertexByteLength: number;
@@ -60,12 +67,30 @@ export const POINT_BYTES = 8;
 export const encodedVertexBytes = (faceIndexSize: 2 | 4): number => 8 + 2 * faceIndexSize;
 
 /** The grid exponent `e` of a box (x0, y0, _, x1, y1, _): the smallest with every |x|, |y| of it below 2^(e + POSITION_BITS). */
-export function positionExponent(box: ArrayLike<number>): number {
+function positionExponent(box: ArrayLike<number>): number {
   const m = Math.max(1, Math.abs(box[0]!), Math.abs(box[1]!), Math.abs(box[3]!), Math.abs(box[4]!));
   let b = Math.ceil(Math.log2(m));
   while (2 ** b <= m) b++;
   while (2 ** (b - 1) > m) b--;
   return b - POSITION_BITS;
+}
+
+/** The grid an encoder uses: the `wanted` one (the cube's) unless the box needs a coarser one. */
+export function gridExponentFor(box: ArrayLike<number>, wanted?: number): number {
+  const e = Math.max(positionExponent(box), wanted ?? -Infinity);
+  if (e > MAX_POSITION_EXPONENT) throw new Error(`position step 2^${e} is coarser than a reader accepts (2^${MAX_POSITION_EXPONENT})`);
+  return e;
+}
+
+/**
+ * What is wrong with a file's grid exponent `e` for its box, or null: never finer than the box
+ * needs, nor coarser than MAX_POSITION_EXPONENT; exactly the box's in files of the versions
+ * before a cube-wide grid (`boxOwn`).
+ */
+export function positionGridProblem(e: number, box: ArrayLike<number>, boxOwn: boolean): string | null {
+  const boxE = positionExponent(box);
+  if (boxOwn ? e === boxE : e >= boxE && e <= MAX_POSITION_EXPONENT) return null;
+  return `position step 2^${e} does not fit its box (2^${boxE}${boxOwn ? '' : ` to 2^${MAX_POSITION_EXPONENT}`})`;
 }
 
 /**
@@ -137,14 +162,16 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   const dv = new DataView(b.buffer, b.byteOffset, b.byteLength);
   if (dv.getUint32(0, true) !== CHUNK_MAGIC) throw fail('not a chunk file (bad magic)');
   const version = dv.getUint32(4, true);
-  if (version !== CHUNK_VERSION) throw fail(`chunk version ${version}, this reader knows only version ${CHUNK_VERSION} (rebuild the cube with ssc build)`);
+  if (version !== CHUNK_VERSION && version !== CHUNK_VERSION_2) throw fail(`chunk version ${version}, this reader knows only versions ${CHUNK_VERSION_2} and ${CHUNK_VERSION} (rebuild the cube with ssc build)`);
   if (b.byteLength < CHUNK_HEADER_BYTES) throw fail(`truncated (${b.byteLength} bytes, the header alone is ${CHUNK_HEADER_BYTES})`);
   const V = dv.getUint32(8, true), T = dv.getUint32(12, true);
   const box = new Float32Array(6);
   for (let i = 0; i < 6; i++) box[i] = dv.getFloat32(32 + 4 * i, true);
   if (!box.every(Number.isFinite)) throw fail('its box is not finite');
   const e = dv.getInt32(56, true);
-  if (e !== positionExponent(box)) throw fail(`position step 2^${e} does not fit its box (2^${positionExponent(box)})`);
+  // Version 2 always used the box's own grid.
+  const gridProblem = positionGridProblem(e, box, version === CHUNK_VERSION_2);
+  if (gridProblem) throw fail(gridProblem);
   const F = dv.getUint32(60, true), P = dv.getUint32(64, true);
   const pointStream = dv.getUint32(68, true), vertexStream = dv.getUint32(72, true), indexStream = dv.getUint32(76, true);
   // Bounds that hold in every chunk (each point used by a vertex, each vertex by a triangle, the
@@ -198,7 +225,7 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   }
   return {
     vertexCount: V, triangleCount: T,
-    originX: dv.getFloat64(16, true), originY: dv.getFloat64(24, true), box, positions, upper, lower, upperClass, lowerClass, indices,
+    originX: dv.getFloat64(16, true), originY: dv.getFloat64(24, true), box, positions, upper, lower, upperClass, lowerClass, indices, gridExponent: e,
     vertexByteOffset: 0, vertexByteLength: VERTEX_BYTES * V,
   };
 }

@@ -89,7 +89,7 @@ test("a reader made from docs/FORMAT.md's tables reads what decodeLineChunk read
 
   const c = await decodeLineChunk(bytes);
   assert.equal(h.get('magic `0x4C435353`'), 0x4c435353);
-  assert.equal(h.get('version 3'), 3);
+  assert.equal(h.get('version 4'), 4);
   assert.deepEqual([count('line count `L`'), count('polyline count `P`'), count('vertex count `V`')], [c.lineCount, c.pathCount, c.vertexCount]);
   assert.deepEqual([h.get('origin x'), h.get('origin y')], [c.originX, c.originY]);
   const [lines, polylines, vertices] = fields as [number[][], number[][], number[][]];

@@ -1,7 +1,7 @@
-// The line chunk file's encoder (docs/FORMAT.md, "Line chunk file", version 3), beside the
+// The line chunk file's encoder (docs/FORMAT.md, "Line chunk file", version 4), beside the
 // decoder in line-chunk.ts: a file of its own so that the map, which only decodes, does not
 // load the encoder's WebAssembly. Used by the build (Node). Same input, same bytes.
-import { gridSteps, positionExponent } from './chunk.js';
+import { gridExponentFor, gridSteps } from './chunk.js';
 import { encodeRecords } from './chunk-encode.js';
 import type { Box3 } from './cube-index.js';
 import {
@@ -9,8 +9,11 @@ import {
 } from './line-chunk.js';
 import { groundBox, type LineRecord } from './line-record.js';
 
-/** The chunk's bytes and its box in ground units (for the index). */
-export function encodeLineChunk(lines: readonly LineRecord[]): { bytes: Uint8Array; bbox: Box3 } {
+/**
+ * The chunk's bytes and its box in ground units (for the index). `gridExponent`: the position
+ * grid wanted (the cube's, as the surface chunks'), used unless the box needs a coarser one.
+ */
+export function encodeLineChunk(lines: readonly LineRecord[], gridExponent?: number): { bytes: Uint8Array; bbox: Box3 } {
   if (lines.length === 0) throw new Error('a line chunk needs at least one line');
   let x0 = Infinity, y0 = Infinity, z0 = Infinity, x1 = -Infinity, y1 = -Infinity, z1 = -Infinity;
   let P = 0, V = 0;
@@ -33,7 +36,7 @@ export function encodeLineChunk(lines: readonly LineRecord[]): { bytes: Uint8Arr
   // A whole-unit origin, as surface chunks have: exact in float64, positions within the chunk's size.
   const ox = Math.floor(x0), oy = Math.floor(y0);
   const box = Float32Array.of(x0 - ox, y0 - oy, z0, x1 - ox, y1 - oy, z1);
-  const e = positionExponent(box);
+  const e = gridExponentFor(box, gridExponent);
 
   const lineRecords = new DataView(new ArrayBuffer(L * LINE_RECORD_BYTES));
   const pathRecords = new DataView(new ArrayBuffer(P * PATH_RECORD_BYTES));

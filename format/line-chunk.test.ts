@@ -1,4 +1,4 @@
-// The line chunk file, version 3: the encoder writes the layout of docs/FORMAT.md (header and
+// The line chunk file, version 4: the encoder writes the layout of docs/FORMAT.md (header and
 // records checked at offsets worked out by hand, the streams decoded with meshoptimizer's own
 // decoder), lines come back on the position grid (within half a step; z exact in float32), the
 // same lines give the same bytes, and a damaged, truncated or old file is refused with a message
@@ -55,7 +55,7 @@ describe('line chunk file', () => {
     const { bytes, bbox } = encodeLineChunk(roadAndBrook());
     const dv = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
     assert.equal(dv.getUint32(0, true), 0x4c435353);
-    assert.equal(dv.getUint32(4, true), 3);
+    assert.equal(dv.getUint32(4, true), 4);
     assert.deepEqual([dv.getUint32(8, true), dv.getUint32(12, true), dv.getUint32(16, true)], [2, 3, 8], '2 lines, 3 polylines, 8 vertices');
     // The box relative to the origin reaches y 40.75: below 2^6, so the step is 2^(6 - 24).
     assert.equal(dv.getInt32(20, true), -18, 'position step exponent');
@@ -103,6 +103,21 @@ describe('line chunk file', () => {
     assert.deepEqual([back.zStart, back.zEnd], [Math.fround(0.1), Math.fround(1.3)]);
   });
 
+  test('on the cube\'s grid: positions are whole steps of it, within half a step; version 3 is still read', async () => {
+    const lines = roadAndBrook();
+    const { bytes } = encodeLineChunk(lines, -7);
+    assert.equal(new DataView(bytes.buffer).getInt32(20, true), -7, 'the header holds the cube\'s grid');
+    const c = await decodeLineChunk(bytes);
+    let k = 0;
+    for (const l of lines) for (const p of l.paths) for (let j = 0; j < p.length; j++, k++) {
+      const got = c.positions[k]! + (j % 2 === 0 ? c.originX : c.originY);
+      assert.equal(got, Math.round(p[j]! * 128) / 128, `coordinate ${k}: the nearest 1/128`);
+    }
+    const v3 = encodeLineChunk(lines).bytes.slice();
+    new DataView(v3.buffer).setUint32(4, 3, true);
+    assert.equal((await decodeLineChunk(v3)).vertexCount, c.vertexCount);
+  });
+
   test('the same lines give the same bytes, and decoded lines encode to them again', async () => {
     const a = encodeLineChunk(roadAndBrook()).bytes;
     assert.deepEqual(encodeLineChunk(roadAndBrook()).bytes, a);
@@ -127,10 +142,12 @@ describe('line chunk file', () => {
     await refuses(good.subarray(0, 40), /truncated \(40 bytes, the header alone is 76\)/);
     await refuses(good.subarray(0, good.length - 4), /bytes, its header \(.*\) needs \d+/);
     await refuses(header((dv) => dv.setUint32(0, 0x43435353, true)), /bad magic/);
-    await refuses(header((dv) => dv.setUint32(4, 2, true)), /line chunk version 2, this reader knows only version 3 \(rebuild the cube with ssc build\)/);
+    await refuses(header((dv) => dv.setUint32(4, 2, true)), /line chunk version 2, this reader knows only versions 3 and 4 \(rebuild the cube with ssc build\)/);
     await refuses(header((dv) => dv.setUint32(16, 0xffffffff, true)), /4294967295 vertices cannot fit a stream of \d+ bytes/);
     await refuses(header((dv) => dv.setUint32(12, 1, true)), /counts out of bounds \(2 lines, 1 polylines/);
-    await refuses(header((dv) => dv.setInt32(20, -17, true)), /position step 2\^-17 does not fit its box \(2\^-18\)/);
+    await refuses(header((dv) => dv.setInt32(20, -19, true)), /position step 2\^-19 does not fit its box \(2\^-18 to 2\^64\)/);
+    // Version 3 knew only the box's own grid.
+    await refuses(header((dv) => { dv.setUint32(4, 3, true); dv.setInt32(20, -17, true); }), /position step 2\^-17 does not fit its box \(2\^-18\)/);
     await refuses(header((dv) => dv.setUint8(76, 0)), /compressed lines, polylines or vertices do not decode/);
     await refuses(edited(good, (_, paths) => paths.setUint32(0, 1, true)), /polyline 0 has 1 vertices \(at least 2\)/);
     await refuses(edited(good, (_, paths) => paths.setUint32(8, 4, true)), /polyline 2 ends at vertex 9, beyond the header's 8/);

@@ -1,17 +1,19 @@
-// The line chunk file (docs/FORMAT.md, "Line chunk file", version 3): lines of linear classes
+// The line chunk file (docs/FORMAT.md, "Line chunk file", version 4): lines of linear classes
 // with their z range in the cube (line-record.ts), compact. Ground positions are whole steps of
-// the surface chunks' power-of-two grid (format/chunk.ts, `positionExponent`) relative to the
+// the surface chunks' power-of-two grid (format/chunk.ts, `gridExponentFor`: the cube's grid) relative to the
 // chunk's origin, each with its leave z; lines, polylines and vertices are records compressed
 // with meshoptimizer's vertex codec. The decoder expands a file to columns (`LineChunkData`).
 // Pure: used by the CPU slicer and the map's worker; the encoder is in line-chunk-encode.ts so
 // that the map does not load its WebAssembly.
 import { MeshoptDecoder } from 'meshoptimizer/decoder';
-import { pad4, POSITION_BITS, positionExponent } from './chunk.js';
+import { pad4, POSITION_BITS, positionGridProblem } from './chunk.js';
 import { FormatError } from './format-error.js';
 import type { LineRecord } from './line-record.js';
 
 export const LINE_CHUNK_MAGIC = 0x4c435353; // "SSCL"
-export const LINE_CHUNK_VERSION = 3;
+export const LINE_CHUNK_VERSION = 4;
+/** The older version this reader still reads: the same layout, with the grid always the box's own. */
+export const LINE_CHUNK_VERSION_3 = 3;
 /** Header bytes (docs/FORMAT.md). */
 export const LINE_CHUNK_HEADER_BYTES = 76;
 /** Bytes of one line record: u16 class, u16 rule, i32 feature, f32 zStart, f32 zEnd, u32 polyline count. */
@@ -43,6 +45,8 @@ export interface LineChunkData {
   /** x, y per vertex, relative to the origin: whole steps of the grid, exact in float32. */
   positions: Float32Array;
   leaveZ: Float32Array;
+  /** The grid's exponent: positions are whole steps of 2^gridExponent. */
+  gridExponent: number;
 }
 
 /** Where the streams after the header start (docs/FORMAT.md), from the header's stream lengths. */
@@ -71,14 +75,16 @@ export async function decodeLineChunk(input: Uint8Array | ArrayBuffer, name = 'l
   const dv = new DataView(b.buffer, b.byteOffset, b.byteLength);
   if (dv.getUint32(0, true) !== LINE_CHUNK_MAGIC) throw bad('not a line chunk file (bad magic)');
   const version = dv.getUint32(4, true);
-  if (version !== LINE_CHUNK_VERSION) throw bad(`line chunk version ${version}, this reader knows only version ${LINE_CHUNK_VERSION} (rebuild the cube with ssc build)`);
+  if (version !== LINE_CHUNK_VERSION && version !== LINE_CHUNK_VERSION_3) throw bad(`line chunk version ${version}, this reader knows only versions ${LINE_CHUNK_VERSION_3} and ${LINE_CHUNK_VERSION} (rebuild the cube with ssc build)`);
   if (b.byteLength < LINE_CHUNK_HEADER_BYTES) throw bad(`truncated (${b.byteLength} bytes, the header alone is ${LINE_CHUNK_HEADER_BYTES})`);
   const L = dv.getUint32(8, true), P = dv.getUint32(12, true), V = dv.getUint32(16, true);
   const e = dv.getInt32(20, true);
   const box = new Float32Array(6);
   for (let i = 0; i < 6; i++) box[i] = dv.getFloat32(40 + 4 * i, true);
   if (!box.every(Number.isFinite)) throw bad('its box is not finite');
-  if (e !== positionExponent(box)) throw bad(`position step 2^${e} does not fit its box (2^${positionExponent(box)})`);
+  // Version 3 always used the box's own grid.
+  const gridProblem = positionGridProblem(e, box, version === LINE_CHUNK_VERSION_3);
+  if (gridProblem) throw bad(gridProblem);
   const lineStream = dv.getUint32(64, true), pathStream = dv.getUint32(68, true), vertexStream = dv.getUint32(72, true);
   // Every line has a polyline and every polyline two vertices; the codec's smallest stream
   // bounds each count: a damaged count is refused before anything is allocated.
@@ -145,7 +151,7 @@ export async function decodeLineChunk(input: Uint8Array | ArrayBuffer, name = 'l
   }
   return {
     lineCount: L, pathCount: P, vertexCount: V, originX: dv.getFloat64(24, true), originY: dv.getFloat64(32, true), box,
-    lineClass, lineRule, lineFeature, zStart, zEnd, linePaths, pathVertices, positions, leaveZ,
+    lineClass, lineRule, lineFeature, zStart, zEnd, linePaths, pathVertices, positions, leaveZ, gridExponent: e,
   };
 }
 

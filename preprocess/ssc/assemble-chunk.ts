@@ -1,6 +1,6 @@
 // One chunk's triangles as the chunk file's columns: vertices shared within a surface piece
-// (across pieces a corner differs in z or faces), positions relative to an origin near the
-// chunk (the file keeps them on a grid finer than float32's at the chunk's size).
+// (across pieces a corner differs in z or faces), positions relative to a whole-unit origin
+// near the chunk, on the cube's grid (position-grid.ts).
 import { NO_CLASS } from '../../format/chunk.js';
 import { encodeChunk } from '../../format/chunk-encode.js';
 import type { Box3 } from '../../format/cube-index.js';
@@ -15,7 +15,7 @@ export interface AssembledChunk {
 }
 
 export function assembleChunk(
-  s: Surfaces, tris: ArrayLike<number>, xs: Float64Array, ys: Float64Array, classOf: (face: number) => number,
+  s: Surfaces, tris: ArrayLike<number>, xs: Float64Array, ys: Float64Array, classOf: (face: number) => number, gridExponent?: number,
 ): AssembledChunk {
   const local = new Map<number, number>();
   const verts: number[] = []; // [vertex id, its corner (3 * triangle + j) it came from] pairs
@@ -60,7 +60,7 @@ export function assembleChunk(
   const box = Float32Array.of(x0 - ox, y0 - oy, z0, x1 - ox, y1 - oy, z1);
   const bytes = encodeChunk({
     originX: ox, originY: oy, box, positions, upper, lower, upperClass, lowerClass,
-    indices: V <= 0xffff ? Uint16Array.from(indices) : Uint32Array.from(indices),
+    indices: V <= 0xffff ? Uint16Array.from(indices) : Uint32Array.from(indices), gridExponent,
   });
   return { bytes, triangles: tris.length, vertices: V, bbox: [x0, y0, z0, x1, y1, z1] };
 }

@@ -12,6 +12,7 @@ import { writeDirAtomic } from '../io/atomic-write.js';
 import { proj4Definition } from '../io/crs-definition.js';
 import { PHASES, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
 import { assembleChunk } from './assemble-chunk.js';
+import { cubeGridExponent } from './position-grid.js';
 import { planChunks } from './chunking.js';
 import { encodeAttributePage, ATTRIBUTE_PAGE_SIZE } from '../../format/attribute-page.js';
 import { encodeFacePage, FACE_PAGE_SIZE } from '../../format/face-page.js';
@@ -84,10 +85,11 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const classOf = (f: number): number => faces[f]!.classIndex;
   const leaves: ChunkLeaf[] = [];
   const chunkBytes: number[] = [];
+  const grid = cubeGridExponent(t.meta.baseScale, PIXEL_SIZE_MM);
   for (let c = 0; c + 1 < plan.start.length; c++) {
     const tris = plan.order.subarray(plan.start[c], plan.start[c + 1]);
     if (tris.length === 0) continue;
-    const ch = assembleChunk(surfaces, tris, surfaces.xs, surfaces.ys, classOf);
+    const ch = assembleChunk(surfaces, tris, surfaces.xs, surfaces.ys, classOf, grid);
     const { name, sha256 } = hashName('c', ch.bytes, 'bin');
     files.set(name, ch.bytes);
     leaves.push({ bbox: ch.bbox, file: name, bytes: ch.bytes.length, triangles: ch.triangles, sha256 });
@@ -98,7 +100,7 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const lineStyle = parseStyle(t.meta.style, `${t.meta.source}: the tGAP's style`);
   const lines = lineStyle.lineRules.length > 0 ? cubeLines(t, lineStyle) : null;
   const lineLeaves: LineChunkLeaf[] = [];
-  for (const ch of lines ? lineChunks(lines, view) : []) {
+  for (const ch of lines ? lineChunks(lines, view, grid) : []) {
     const { name, sha256 } = hashName('l', ch.bytes, 'bin');
     files.set(name, ch.bytes);
     lineLeaves.push({ bbox: ch.bbox, file: name, bytes: ch.bytes.length, lines: ch.lines, sha256 });

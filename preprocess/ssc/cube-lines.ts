@@ -70,8 +70,11 @@ function lineBytes(l: LineRecord): number {
   return 20 + 4 * l.paths.length + 12 * vertices;
 }
 
-/** Lines into chunks of nearly `targetBytes`, split where views are least likely to need both sides; lines keep their order within a chunk. */
-export function lineChunks(lines: readonly LineRecord[], view: ViewModel & { targetBytes: number }): LineChunk[] {
+/**
+ * Lines into chunks of nearly `targetBytes`, split where views are least likely to need both
+ * sides; lines keep their order within a chunk. Positions on the cube's grid (`gridExponent`).
+ */
+export function lineChunks(lines: readonly LineRecord[], view: ViewModel & { targetBytes: number }, gridExponent?: number): LineChunk[] {
   if (lines.length === 0) return [];
   const n = lines.length;
   const boxes: TriangleBoxes = {
@@ -86,5 +89,5 @@ export function lineChunks(lines: readonly LineRecord[], view: ViewModel & { tar
   const { chunkOf, start } = splitEvenly(boxes, Float64Array.from(lines, lineBytes), view);
   const members: LineRecord[][] = Array.from({ length: start.length - 1 }, () => []);
   lines.forEach((l, i) => members[chunkOf[i]!]!.push(l));
-  return members.filter((m) => m.length > 0).map((m) => ({ ...encodeLineChunk(m), lines: m.length }));
+  return members.filter((m) => m.length > 0).map((m) => ({ ...encodeLineChunk(m, gridExponent), lines: m.length }));
 }

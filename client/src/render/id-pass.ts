@@ -16,8 +16,8 @@ export class IdPass {
   private readonly program: Program;
   /** For a flat slice: its z a uniform, no texture read per fragment (a tenth of a frame on a software GPU). */
   private readonly flat: Program;
-  // Float64 matrices: the chunk's offset from the view centre is composed in double precision
-  // and only the (small) result is rounded to float32.
+  // Float64 matrices: the offset of a whole-unit point from the view centre is composed in
+  // double precision and only the (small) result is rounded to float32.
   private readonly projection = new Float64Array(16);
   private readonly matrix = new Float64Array(16);
   private readonly matrix32 = new Float32Array(16);
@@ -62,14 +62,18 @@ export class IdPass {
     // surface.frag clamps it: a flat slice less uZRef is then 0 exactly.
     // For a flat slice the float32 this rounds to is flatSliceZ's, which FLAT reads as the slice's z.
     gl.uniform1f(p.loc('uZRef'), Math.min(Math.max(surface.base, 0), zMax));
-    const uMatrix = p.loc('uMatrix');
+    // One matrix for every chunk, from a whole-unit point near the centre; each chunk adds its
+    // origin's (integer) offset from that point in the shader (id.vert says why).
+    const rx = Math.floor(view.centerX), ry = Math.floor(view.centerY);
+    mat4.translate(this.matrix, this.projection, [rx - view.centerX, ry - view.centerY, 0]);
+    this.matrix[12]! += jx;
+    this.matrix[13]! += jy;
+    this.matrix32.set(this.matrix);
+    gl.uniformMatrix4fv(p.loc('uMatrix'), false, this.matrix32);
+    const uOffset = p.loc('uOffset');
     let triangles = 0;
     for (const c of chunks) {
-      mat4.translate(this.matrix, this.projection, [c.originX - view.centerX, c.originY - view.centerY, 0]);
-      this.matrix[12]! += jx;
-      this.matrix[13]! += jy;
-      this.matrix32.set(this.matrix);
-      gl.uniformMatrix4fv(uMatrix, false, this.matrix32);
+      gl.uniform2f(uOffset, c.originX - rx, c.originY - ry);
       triangles += c.draw(gl, sliceTop);
     }
     gl.bindVertexArray(null);

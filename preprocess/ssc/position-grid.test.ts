@@ -1,0 +1,24 @@
+import assert from 'node:assert/strict';
+import { describe, test } from 'node:test';
+import { cubeGridExponent } from './position-grid.js';
+
+describe('cubeGridExponent', () => {
+  test('a 256th of a base pixel, rounded down to a power of two', () => {
+    // 1:1,000 at 0.28 mm: pixels of 0.28 m, a 256th is 1.09 mm; 2^-10 m = 0.98 mm, 2^-9 = 1.95 mm.
+    assert.equal(cubeGridExponent(1000, 0.28), -10);
+    // 1:50,000: 14 m pixels, 54.7 mm; 2^-5 m = 31 mm, 2^-4 = 62 mm.
+    assert.equal(cubeGridExponent(50000, 0.28), -5);
+  });
+  test('exactly a power of two is that power', () => {
+    // 256 * 2^-8 m = 1 m pixels: 1:1,000 at 1 mm.
+    assert.equal(cubeGridExponent(1000, 1), -8);
+    assert.equal(cubeGridExponent(1000, 2 - 1e-9), -8);
+  });
+  test('never coarser than one unit, so that whole-unit origins lie on it', () => {
+    assert.equal(cubeGridExponent(10_000_000, 0.28), 0);
+  });
+  test('nonsense in, an error out', () => {
+    assert.throws(() => cubeGridExponent(0, 0.28), /no position grid for base scale 0/);
+    assert.throws(() => cubeGridExponent(1000, Number.NaN), /pixel size NaN mm/);
+  });
+});
