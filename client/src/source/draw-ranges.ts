@@ -6,9 +6,12 @@
 // skips almost the whole chunk.
 //
 // Triangles whose upper face has ended below the slice are still drawn: newer surfaces cover
-// them, but where the GPU leaves a pixel between two current triangles uncovered (their shared
-// edge through the pixel centre, snapped differently in two chunks) they fill it, as they did
-// before this order. Skipping them too would need crack-free edges across chunks.
+// them, but where the GPU leaves a pixel between current triangles uncovered they fill it.
+// Shared corners across chunks now land on one spot (id.vert), yet the current triangles do not
+// always meet corner to corner: beside a sliver a few centimetres wide, or where one piece's
+// corner lies on another's edge, a software GPU's sub-pixel snapping opens pixel-wide gaps.
+// Leaving the ended triangles out (tried: blocks ordered by end z within) opened such pixels on
+// bgt_otterlo_400m at z 420, and filled them differently as the slice's z range changed.
 // Pure: the worker orders a decoded chunk; the renderer picks the prefix each frame.
 
 /** The blocks of a chunk ordered for drawing, as transferred to the renderer. */
