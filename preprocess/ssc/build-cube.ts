@@ -12,7 +12,7 @@ import { writeDirAtomic } from '../io/atomic-write.js';
 import { proj4Definition } from '../io/crs-definition.js';
 import { PHASES, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
 import { assembleChunk } from './assemble-chunk.js';
-import { cubeGridExponent } from './position-grid.js';
+import { chooseGrid, cubeGridExponent } from './position-grid.js';
 import { planChunks } from './chunking.js';
 import { encodeAttributePage, ATTRIBUTE_PAGE_SIZE } from '../../format/attribute-page.js';
 import { encodeFacePage, FACE_PAGE_SIZE } from '../../format/face-page.js';
@@ -85,9 +85,15 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const classOf = (f: number): number => faces[f]!.classIndex;
   const leaves: ChunkLeaf[] = [];
   const chunkBytes: number[] = [];
-  const grid = cubeGridExponent(t.meta.baseScale, PIXEL_SIZE_MM);
-  for (let c = 0; c + 1 < plan.start.length; c++) {
-    const tris = plan.order.subarray(plan.start[c], plan.start[c + 1]);
+  const chunkCount = plan.start.length - 1;
+  const trisOf = (c: number): Uint32Array => plan.order.subarray(plan.start[c], plan.start[c + 1]);
+  // The cube's grid, tried on every chunk up to 32 of them, spread evenly (position-grid.ts).
+  const sample = Array.from({ length: Math.min(32, chunkCount) }, (_, i) => Math.floor((i * chunkCount) / Math.min(32, chunkCount)));
+  const grid = chooseGrid(cubeGridExponent(t.meta.baseScale, PIXEL_SIZE_MM), (e) =>
+    sample.reduce((sum, c) => sum + (trisOf(c).length > 0 ? assembleChunk(surfaces, trisOf(c), surfaces.xs, surfaces.ys, classOf, e).bytes.length : 0), 0));
+  log(`position grid: 2^${grid}`);
+  for (let c = 0; c < chunkCount; c++) {
+    const tris = trisOf(c);
     if (tris.length === 0) continue;
     const ch = assembleChunk(surfaces, tris, surfaces.xs, surfaces.ys, classOf, grid);
     const { name, sha256 } = hashName('c', ch.bytes, 'bin');

@@ -1,6 +1,6 @@
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { cubeGridExponent } from './position-grid.js';
+import { chooseGrid, cubeGridExponent } from './position-grid.js';
 
 describe('cubeGridExponent', () => {
   test('a 256th of a base pixel, rounded down to a power of two', () => {
@@ -20,5 +20,13 @@ describe('cubeGridExponent', () => {
   test('nonsense in, an error out', () => {
     assert.throws(() => cubeGridExponent(0, 0.28), /no position grid for base scale 0/);
     assert.throws(() => cubeGridExponent(1000, Number.NaN), /pixel size NaN mm/);
+  });
+  test('chooseGrid keeps the grid, or a finer one of the three below it, that encodes smallest; the coarser on a tie', () => {
+    const sizes: Record<number, number> = { [-5]: 185, [-6]: 170, [-7]: 166, [-8]: 158, [-9]: 100 };
+    const tried: number[] = [];
+    assert.equal(chooseGrid(-5, (e) => (tried.push(e), sizes[e]!)), -8);
+    assert.deepEqual(tried, [-5, -6, -7, -8], 'never finer than three below');
+    assert.equal(chooseGrid(-5, (e) => (e === -5 || e === -7 ? 10 : 20)), -5);
+    assert.equal(chooseGrid(-10, (e) => 50 + e), -13);
   });
 });

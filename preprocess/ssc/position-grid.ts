@@ -1,11 +1,15 @@
 // The position grid of a cube's chunks: one power of two for every chunk, so that a point
 // shared by two chunks decodes to the same value in both (origins are whole units, on the grid),
-// and no finer than needed: 1/256 of a pixel at the base scale (bgt_otterlo_1800m at 1:1,000:
-// 2^-10 m, about 1 mm; nlcd_zion at 1:50,000: 2^-5 m). Each chunk's box grid (its 24 bits) is
+// and no finer than needed: about 1/256 of a pixel at the base scale (bgt_otterlo_1800m at
+// 1:1,000: 2^-10 m, about 1 mm; nlcd_zion at 1:50,000: 2^-5 m, and 2^-8 m chosen, below). Each chunk's box grid (its 24 bits) is
 // finer than that on data of ordinary size, and a finer grid only costs bytes: on
 // bgt_otterlo_1800m the chunks' points took 1.36 MB gzip at the box grids (2^-13 m), 1.05 MB at
 // 2^-10, 0.81 MB at 2^-7. Not coarser: a GPU snaps vertices to its own sub-pixel grid, and at
 // 1/32 of a pixel a corner moved that far left a pixel of the e2e lens test uncovered.
+// Finer is not always larger, though: meshoptimizer's vertex codec takes the deltas byte by
+// byte, so where a step falls within a byte matters. nlcd_zion's points took 1.85 MB at 2^-5,
+// 1.58 MB at 2^-8. So the build tries the grid and the three finer ones on a sample of chunks
+// and keeps the one that encodes smallest (chooseGrid).
 
 /** Grid steps per pixel of the base scale. */
 export const GRID_STEPS_PER_PIXEL = 256;
@@ -23,4 +27,24 @@ export function cubeGridExponent(baseScale: number, pixelSizeMm: number): number
   while (e < 0 && 2 ** (e + 1) <= step) e++;
   while (2 ** e > step) e--;
   return e;
+}
+
+/** Grids tried below the coarsest allowed (bestGrid). */
+export const GRID_CANDIDATES = 4;
+
+/**
+ * Of the grids `coarsest`, `coarsest - 1`, ... (GRID_CANDIDATES of them), the one for which
+ * `bytes` (the encoded size of a sample of the cube's chunks on it) is least; on a tie the
+ * coarser. Deterministic as `bytes` is.
+ */
+export function chooseGrid(coarsest: number, bytes: (e: number) => number): number {
+  let best = coarsest, least = bytes(coarsest);
+  for (let e = coarsest - 1; e > coarsest - GRID_CANDIDATES; e--) {
+    const b = bytes(e);
+    if (b < least) {
+      least = b;
+      best = e;
+    }
+  }
+  return best;
 }
