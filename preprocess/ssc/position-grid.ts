@@ -1,10 +1,10 @@
 // The position grid of a cube's chunks: one power of two for every chunk, so that a point
 // shared by two chunks decodes to the same value in both (origins are whole units, on the grid),
 // and no finer than needed: about 1/256 of a pixel at the base scale (bgt_otterlo_1800m at
-// 1:1,000: 2^-10 m, about 1 mm; nlcd_zion at 1:50,000: 2^-5 m, and 2^-8 m chosen, below). Each chunk's box grid (its 24 bits) is
-// finer than that on data of ordinary size, and a finer grid only costs bytes: on
-// bgt_otterlo_1800m the chunks' points took 1.36 MB gzip at the box grids (2^-13 m), 1.05 MB at
-// 2^-10, 0.81 MB at 2^-7. Not coarser: a GPU snaps vertices to its own sub-pixel grid, and at
+// 1:1,000: 2^-10 m, about 1 mm; nlcd_zion at 1:50,000: 2^-5 m, and 2^-8 m chosen, below). Each
+// chunk's box grid (its 24 bits) is finer than that on data of ordinary size, and a finer grid
+// mostly costs bytes: on bgt_otterlo_1800m the chunks' points took 1.36 MB gzip at the box
+// grids (2^-13 m), 1.05 MB at 2^-10, 0.81 MB at 2^-7. Not coarser: a GPU snaps vertices to its own sub-pixel grid, and at
 // 1/32 of a pixel a corner moved that far left a pixel of the e2e lens test uncovered.
 // Finer is not always larger, though: meshoptimizer's vertex codec takes the deltas byte by
 // byte, so where a step falls within a byte matters. nlcd_zion's points took 1.85 MB at 2^-5,
