@@ -88,7 +88,8 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const chunkCount = plan.start.length - 1;
   const trisOf = (c: number): Uint32Array => plan.order.subarray(plan.start[c], plan.start[c + 1]);
   // The cube's grid, tried on every chunk up to 32 of them, spread evenly (position-grid.ts).
-  const sample = Array.from({ length: Math.min(32, chunkCount) }, (_, i) => Math.floor((i * chunkCount) / Math.min(32, chunkCount)));
+  const sampled = Math.min(32, chunkCount);
+  const sample = Array.from({ length: sampled }, (_, i) => Math.floor((i * chunkCount) / sampled));
   const grid = chooseGrid(cubeGridExponent(t.meta.baseScale, PIXEL_SIZE_MM), (e) =>
     sample.reduce((sum, c) => sum + (trisOf(c).length > 0 ? assembleChunk(surfaces, trisOf(c), surfaces.xs, surfaces.ys, classOf, e).bytes.length : 0), 0));
   log(`position grid: 2^${grid}`);
