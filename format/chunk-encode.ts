@@ -1,10 +1,10 @@
-// The chunk file's encoder (docs/FORMAT.md, "Chunk file", version 3), beside the decoder in
+// The chunk file's encoder (docs/FORMAT.md, "Chunk file", version 4), beside the decoder in
 // chunk.ts: a file of its own so that the map, which only decodes, does not load the
 // encoder's WebAssembly. Used by the build (Node). Same input, same bytes.
 import { MeshoptEncoder } from 'meshoptimizer/encoder';
 import {
-  CHUNK_MAGIC, CHUNK_VERSION, chunkSections, encodedVertexBytes, faceIndexSizeFor, gridExponentFor, gridSteps, indexSizeFor,
-  POINT_BYTES, POSITION_BITS,
+  CHUNK_MAGIC, CHUNK_VERSION, chunkSections, encodedVertexBytes, gridExponentFor, gridSteps, indexSizeFor,
+  POINT_BYTES, POSITION_BITS, tableIndexSizeFor, Z_BYTES,
 } from './chunk.js';
 
 await MeshoptEncoder.ready;
@@ -16,6 +16,18 @@ await MeshoptEncoder.ready;
  */
 export const encodeRecords = (records: ArrayBufferLike, count: number, stride: number): Uint8Array =>
   MeshoptEncoder.encodeVertexBufferLevel(new Uint8Array(records), count, stride, 2, 1);
+
+/**
+ * An order of a mesh's triangles and vertices that the codecs compress well (meshoptimizer's
+ * vertex cache and fetch order, for size): `indices` (vertex ids below `vertexCount`) are
+ * reordered and renumbered in place; returns each old vertex's new number. The triangles keep
+ * their winding. A chunk's order carries no meaning: the map orders a chunk's triangles by z.
+ */
+export function orderForCodecs(indices: Uint32Array, vertexCount: number): Uint32Array {
+  const [remap, unique] = MeshoptEncoder.reorderMesh(indices, true, true);
+  if (unique !== vertexCount) throw new Error(`chunk encoder: ${vertexCount - unique} of ${vertexCount} vertices are in no triangle`);
+  return remap;
+}
 
 /** What a chunk holds, per vertex as the decoder gives it back (positions may be float64). */
 export interface ChunkInput {
@@ -78,20 +90,19 @@ export function encodeChunk(c: ChunkInput): Uint8Array {
   checkUsed(c.indices, V);
   const faces = faceTable(c);
   const F = faces.ids.length;
-  const faceIndexSize = faceIndexSizeFor(F), indexSize = indexSizeFor(V);
+  const indexSize = indexSizeFor(V);
   const e = gridExponentFor(c.box, c.gridExponent), limit = 2 ** POSITION_BITS;
 
-  // One record per vertex and one per point (x, y on the grid, in order of first use), as
-  // docs/FORMAT.md lays them out, for the vertex codec.
-  const stride = encodedVertexBytes(faceIndexSize);
-  const records = new ArrayBuffer(V * stride);
-  const rv = new DataView(records);
-  const pointIds = new Map<number, number>();
-  const points: number[] = [];
+  // The points (x, y on the grid) and z values (float32), each once, in order of first use by
+  // the vertices, as docs/FORMAT.md lays them out; a vertex names them by index.
+  const pointIds = new Map<number, number>(), zIds = new Map<number, number>();
+  const points: number[] = [], zs: number[] = [];
+  const pointOf = new Uint32Array(V), zOf = new Uint32Array(V);
   for (let k = 0; k < V; k++) {
-    const o = k * stride;
     const qx = gridSteps(c.positions[3 * k]!, e), qy = gridSteps(c.positions[3 * k + 1]!, e);
     if (Number.isNaN(qx) || Number.isNaN(qy)) throw new Error(`chunk encoder: vertex ${k} lies outside the chunk's box`);
+    const z = Math.fround(c.positions[3 * k + 2]!);
+    if (!Number.isFinite(z)) throw new Error(`chunk encoder: vertex ${k} has z ${c.positions[3 * k + 2]}`);
     // |q| <= 2^24: one exact key.
     const key = (qx + limit) * (2 * limit + 1) + (qy + limit);
     let p = pointIds.get(key);
@@ -99,24 +110,30 @@ export function encodeChunk(c: ChunkInput): Uint8Array {
       pointIds.set(key, (p = points.length / 2));
       points.push(qx, qy);
     }
-    rv.setUint32(o, p, true);
-    rv.setFloat32(o + 4, c.positions[3 * k + 2]!, true);
-    const u = faces.local.get(c.upper[k]!)!, d = faces.local.get(c.lower[k]!)!;
-    if (faceIndexSize === 2) {
-      rv.setUint16(o + 8, u, true);
-      rv.setUint16(o + 10, d, true);
-    } else {
-      rv.setUint32(o + 8, u, true);
-      rv.setUint32(o + 12, d, true);
+    let zi = zIds.get(z);
+    if (zi === undefined) {
+      zIds.set(z, (zi = zs.length));
+      zs.push(z);
     }
+    pointOf[k] = p;
+    zOf[k] = zi;
   }
-  const P = points.length / 2;
+  const P = points.length / 2, Z = zs.length;
+  const size = tableIndexSizeFor(Math.max(P, Z, F));
+  const records = size === 2 ? new Uint16Array(4 * V) : new Uint32Array(4 * V);
+  for (let k = 0; k < V; k++) {
+    records[4 * k] = pointOf[k]!;
+    records[4 * k + 1] = zOf[k]!;
+    records[4 * k + 2] = faces.local.get(c.upper[k]!)!;
+    records[4 * k + 3] = faces.local.get(c.lower[k]!)!;
+  }
   const tri = indexSize === 2 ? Uint16Array.from(c.indices) : Uint32Array.from(c.indices);
   const pointStream = encodeRecords(Int32Array.from(points).buffer, P, POINT_BYTES);
-  const vertexStream = encodeRecords(records, V, stride);
+  const zStream = encodeRecords(Float32Array.from(zs).buffer, Z, Z_BYTES);
+  const vertexStream = encodeRecords(records.buffer, V, encodedVertexBytes(size));
   const indexStream = MeshoptEncoder.encodeIndexBuffer(new Uint8Array(tri.buffer), 3 * T, indexSize);
 
-  const sec = chunkSections(F, pointStream.byteLength, vertexStream.byteLength, indexStream.byteLength);
+  const sec = chunkSections({ faces: F, points: pointStream.byteLength, zs: zStream.byteLength, vertices: vertexStream.byteLength, indices: indexStream.byteLength });
   const out = new Uint8Array(sec.end);
   const dv = new DataView(out.buffer);
   dv.setUint32(0, CHUNK_MAGIC, true);
@@ -129,14 +146,17 @@ export function encodeChunk(c: ChunkInput): Uint8Array {
   dv.setInt32(56, e, true);
   dv.setUint32(60, F, true);
   dv.setUint32(64, P, true);
-  dv.setUint32(68, pointStream.byteLength, true);
-  dv.setUint32(72, vertexStream.byteLength, true);
-  dv.setUint32(76, indexStream.byteLength, true);
+  dv.setUint32(68, Z, true);
+  dv.setUint32(72, pointStream.byteLength, true);
+  dv.setUint32(76, zStream.byteLength, true);
+  dv.setUint32(80, vertexStream.byteLength, true);
+  dv.setUint32(84, indexStream.byteLength, true);
   for (let i = 0; i < F; i++) {
     dv.setUint32(sec.faceIds + 4 * i, faces.ids[i]!, true);
     dv.setUint16(sec.faceClasses + 2 * i, faces.classes[i]!, true);
   }
   out.set(pointStream, sec.points);
+  out.set(zStream, sec.zs);
   out.set(vertexStream, sec.vertices);
   out.set(indexStream, sec.indices);
   return out;

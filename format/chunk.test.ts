@@ -1,12 +1,17 @@
-// The chunk file, version 3: the encoder writes the header and face table of docs/FORMAT.md
+// The chunk file, version 4: the encoder writes the header and face table of docs/FORMAT.md
 // (checked at offsets worked out by hand), the decoder gives back what went in (positions
 // within half a grid step, everything else exactly), and a damaged, truncated or old file is
 // refused with a message that says what is wrong.
 import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import path from 'node:path';
 import { describe, test } from 'node:test';
-import { encodeChunk, type ChunkInput } from './chunk-encode.js';
+import { fileURLToPath } from 'node:url';
+import { encodeChunk, orderForCodecs, type ChunkInput } from './chunk-encode.js';
 import { VERTEX_BYTES, VERTEX_COLUMNS, vertexColumnOffset } from './chunk-layout.js';
 import { CHUNK_MAGIC, ChunkFormatError, decodeChunk, type DecodedChunk } from './chunk.js';
+
+const fixture = (name: string): string => path.join(path.dirname(fileURLToPath(import.meta.url)), 'testdata', name);
 
 /** Two triangles over four vertices: a unit square at z 3 (floor) and 5 (tilted corner). */
 function square(): ChunkInput & { positions: Float32Array } {
@@ -112,7 +117,7 @@ describe('chunk file', () => {
     const bytes = encodeChunk(square());
     const dv = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
     assert.equal(dv.getUint32(0, true), 0x43435353);
-    assert.equal(dv.getUint32(4, true), 3, 'version');
+    assert.equal(dv.getUint32(4, true), 4, 'version');
     assert.equal(dv.getUint32(8, true), 4, 'vertices');
     assert.equal(dv.getUint32(12, true), 2, 'triangles');
     assert.equal(dv.getFloat64(16, true), 181000.5);
@@ -122,12 +127,16 @@ describe('chunk file', () => {
     assert.equal(dv.getInt32(56, true), -23, 'position step exponent');
     assert.equal(dv.getUint32(60, true), 3, 'faces 7, 0 and 8');
     assert.equal(dv.getUint32(64, true), 4, 'points: the four corners');
-    const pointStream = dv.getUint32(68, true), vertexStream = dv.getUint32(72, true), indexStream = dv.getUint32(76, true);
-    // Face ids at 80 (3 x u32), classes at 92 (3 x u16, padded to 100), then the streams.
-    assert.deepEqual([0, 1, 2].map((i) => dv.getUint32(80 + 4 * i, true)), [7, 0, 8], 'in order of first mention, upper before lower');
-    assert.deepEqual([0, 1, 2].map((i) => dv.getUint16(92 + 2 * i, true)), [2, 0xffff, 4]);
-    assert.equal(bytes[100], 0xa1, 'the point stream starts at 100 with the vertex codec\'s version-1 header byte');
-    const vertexAt = (100 + pointStream + 3) & ~3;
+    assert.equal(dv.getUint32(68, true), 2, 'z values 3 and 5');
+    const pointStream = dv.getUint32(72, true), zStream = dv.getUint32(76, true);
+    const vertexStream = dv.getUint32(80, true), indexStream = dv.getUint32(84, true);
+    // Face ids at 88 (3 x u32), classes at 100 (3 x u16, padded to 108), then the streams.
+    assert.deepEqual([0, 1, 2].map((i) => dv.getUint32(88 + 4 * i, true)), [7, 0, 8], 'in order of first mention, upper before lower');
+    assert.deepEqual([0, 1, 2].map((i) => dv.getUint16(100 + 2 * i, true)), [2, 0xffff, 4]);
+    assert.equal(bytes[108], 0xa1, 'the point stream starts at 108 with the vertex codec\'s version-1 header byte');
+    const zAt = (108 + pointStream + 3) & ~3;
+    assert.equal(bytes[zAt], 0xa1, 'the z stream at the next multiple of 4');
+    const vertexAt = (zAt + zStream + 3) & ~3;
     assert.equal(bytes[vertexAt], 0xa1, 'the vertex stream at the next multiple of 4');
     const indexAt = (vertexAt + vertexStream + 3) & ~3;
     assert.equal(bytes[indexAt], 0xe1, 'the index stream at the next multiple of 4, with the index codec\'s header byte');
@@ -199,25 +208,51 @@ describe('chunk file', () => {
     assert.deepEqual(encodeChunk(await decodeChunk(bytes)), bytes);
   });
 
-  test('more than 65535 vertices take 32-bit indices, more than 65535 faces 32-bit face indices', async () => {
-    const V = 65536 + 2;
-    const positions = new Float32Array(3 * V);
-    for (let i = 0; i < V; i++) positions[3 * i] = i % 100;
-    // Every vertex in a (degenerate) triangle of its own face: V / 3 triangles and faces.
-    const indices = Uint32Array.from({ length: V }, (_, i) => i);
-    const c: ChunkInput = {
-      originX: 0, originY: 0, box: new Float32Array([0, 0, 0, 100, 0, 0]), positions,
-      upper: Uint32Array.from({ length: V }, (_, i) => 1 + Math.floor(i / 3)), lower: new Uint32Array(V), upperClass: new Uint16Array(V),
-      lowerClass: new Uint16Array(V).fill(0xffff), indices,
+  test('more than 65535 vertices take 32-bit indices; more than 65535 points, z values or faces 32-bit table indices', async () => {
+    // Degenerate triangles, each of its own face; `V` vertices, `pointAt` and `zAt` say how many distinct.
+    const chunk = (V: number, pointAt: (i: number) => [number, number], zAt: (i: number) => number): ChunkInput => {
+      const positions = new Float32Array(3 * V);
+      for (let i = 0; i < V; i++) positions.set([...pointAt(i), zAt(i)], 3 * i);
+      const faces = Uint32Array.from({ length: V }, (_, i) => 1 + Math.floor(i / 3));
+      return {
+        originX: 0, originY: 0, box: new Float32Array([0, 0, 0, 1000, 1000, 70000]), positions,
+        upper: faces, lower: new Uint32Array(V), upperClass: new Uint16Array(V), lowerClass: new Uint16Array(V).fill(0xffff),
+        indices: Uint32Array.from({ length: V }, (_, i) => i),
+      };
     };
-    const d = await decodeChunk(encodeChunk(c));
+    const few = chunk(65538, (i) => [i % 100, 0], () => 0);
+    const d = await decodeChunk(encodeChunk(few));
     assert.ok(d.indices instanceof Uint32Array);
-    assertSame(d, c, 0);
-    // Faces 1.. each on two vertices: more than 65535 of them.
-    const many: ChunkInput = { ...c, upper: Uint32Array.from({ length: V }, (_, i) => 1 + (i >> 1)) };
-    const bytes = encodeChunk(many);
-    assert.equal(new DataView(bytes.buffer).getUint32(60, true), V / 2 + 1, 'every face and "nothing below"');
-    assertSame(await decodeChunk(bytes), many, 0);
+    assertSame(d, few, 0);
+    // Each would wrap round in a u16 lane and name the wrong point, z or face.
+    assertSame(await decodeChunk(encodeChunk(chunk(65538, (i) => [i % 1000, Math.floor(i / 1000)], () => 0))), chunk(65538, (i) => [i % 1000, Math.floor(i / 1000)], () => 0), 0);
+    const manyZ = chunk(65538, () => [0, 0], (i) => i);
+    assertSame(await decodeChunk(encodeChunk(manyZ)), manyZ, 0);
+    const manyFaces = chunk(3 * 65536, (i) => [i % 100, 0], () => 0);
+    const bytes = encodeChunk(manyFaces);
+    assert.equal(new DataView(bytes.buffer).getUint32(60, true), 65537, 'every face and "nothing below"');
+    assertSame(await decodeChunk(bytes), manyFaces, 0);
+  });
+
+  test('the codecs\' order keeps every triangle and its winding, and the chunk gets smaller', () => {
+    const c = gridChunk(40, 700, 5);
+    // The triangles in a scattered order, as a build might hand them over.
+    const T = c.indices.length / 3, V = c.upper.length;
+    const scattered = Uint32Array.from({ length: 3 * T }, (_, i) => c.indices[3 * ((Math.floor(i / 3) * 7919) % T) + (i % 3)]!);
+    const input = { ...c, indices: scattered };
+    const tri = scattered.slice();
+    const renumber = orderForCodecs(tri, V);
+    const old = new Uint32Array(V);
+    for (let k = 0; k < V; k++) old[renumber[k]!] = k;
+    assert.deepEqual(triangles(Array.from(tri, (v) => old[v]!)).sort(), triangles(scattered).sort());
+    const reordered: ChunkInput = {
+      ...input, indices: tri,
+      positions: Float64Array.from({ length: 3 * V }, (_, i) => c.positions[3 * old[Math.floor(i / 3)]! + (i % 3)]!),
+      upper: Uint32Array.from(old, (k) => c.upper[k]!), lower: Uint32Array.from(old, (k) => c.lower[k]!),
+      upperClass: Uint16Array.from(old, (k) => c.upperClass[k]!), lowerClass: Uint16Array.from(old, (k) => c.lowerClass[k]!),
+    };
+    const before = encodeChunk(input).byteLength, after = encodeChunk(reordered).byteLength;
+    assert.ok(after < before, `${after} bytes reordered, ${before} scattered`);
   });
 
   test('the encoder refuses a face with two classes, a vertex outside the box and a vertex in no triangle', () => {
@@ -242,20 +277,25 @@ describe('chunk file', () => {
     const refuses = async (b: Uint8Array, pattern: RegExp): Promise<void> => {
       await assert.rejects(decodeChunk(b, 'c-x.bin'), (e: unknown) => e instanceof ChunkFormatError && e.message.startsWith('c-x.bin: ') && pattern.test(e.message));
     };
-    await refuses(good.subarray(0, 40), /truncated \(40 bytes, the header alone is 80\)/);
+    await refuses(good.subarray(0, 40), /truncated \(40 bytes, the header alone is 88\)/);
     await refuses(good.subarray(0, 3), /truncated/);
     await refuses(damaged((dv) => dv.setUint32(0, CHUNK_MAGIC + 1, true)), /bad magic/);
-    await refuses(damaged((dv) => dv.setUint32(4, 1, true)), /chunk version 1, this reader knows only versions 2 and 3 \(rebuild the cube with ssc build\)/);
-    await refuses(damaged((dv) => dv.setUint32(4, 4, true)), /chunk version 4/);
+    await refuses(damaged((dv) => dv.setUint32(4, 1, true)), /chunk version 1, this reader knows only versions 2 to 4 \(rebuild the cube with ssc build\)/);
+    await refuses(damaged((dv) => dv.setUint32(4, 5, true)), /chunk version 5/);
     await refuses(good.subarray(0, good.length - 4), new RegExp(`${good.length - 4} bytes, its header .* needs ${good.length}`));
     await refuses(damaged((dv) => dv.setInt32(56, -24, true)), /position step 2\^-24 does not fit its box \(2\^-23 to 2\^64\)/);
     await refuses(damaged((dv) => dv.setInt32(56, 65, true)), /position step 2\^65 does not fit its box \(2\^-23 to 2\^64\)/);
-    // Version 2 knew only the box's own grid.
-    await refuses(damaged((dv) => { dv.setUint32(4, 2, true); dv.setInt32(56, -20, true); }), /position step 2\^-20 does not fit its box \(2\^-23\)/);
+    // Version 2 knew only the box's own grid: the version-3 fixture, on a coarser one, called version 2.
+    const v3 = readFileSync(fixture('chunk-v3.bin'));
+    new DataView(v3.buffer, v3.byteOffset).setUint32(4, 2, true);
+    await refuses(v3, /position step 2\^-12 does not fit its box \(2\^-14\)/);
+    await refuses(readFileSync(fixture('chunk-v3.bin')).subarray(0, 84), /84 bytes, its header \(\d+ faces, \d+ \+ \d+ \+ \d+ bytes of streams\) needs \d+/);
+    await refuses(readFileSync(fixture('chunk-v3.bin')).subarray(0, 60), /truncated \(60 bytes, the header alone is 80\)/);
     await refuses(damaged((dv) => dv.setUint32(8, 2 ** 30, true)), /counts out of bounds \(2 triangles, 1073741824 vertices/);
     await refuses(damaged((dv) => dv.setUint32(12, 2 ** 30, true)), /1073741824 triangles cannot fit an index stream of \d+ bytes/);
-    await refuses(damaged((dv) => dv.setUint32(64, 5, true)), /counts out of bounds \(2 triangles, 4 vertices, 5 points, 3 faces\)/);
-    await refuses(damaged((_, b) => { b[100] = 0; }), /compressed points, vertices or triangles do not decode/);
+    await refuses(damaged((dv) => dv.setUint32(64, 5, true)), /counts out of bounds \(2 triangles, 4 vertices, 5 points, 2 z values, 3 faces\)/);
+    await refuses(damaged((dv) => dv.setUint32(68, 5, true)), /counts out of bounds \(2 triangles, 4 vertices, 4 points, 5 z values, 3 faces\)/);
+    await refuses(damaged((_, b) => { b[108] = 0; }), /compressed points, z values, vertices or triangles do not decode/);
   });
 
   test('a file of version 1 (24 bytes a vertex) is refused, not misread', async () => {
@@ -266,14 +306,18 @@ describe('chunk file', () => {
     dv.setUint32(4, 1, true);
     dv.setUint32(8, 4, true);
     dv.setUint32(12, 2, true);
-    await assert.rejects(decodeChunk(v1, 'c-old.bin'), /c-old\.bin: chunk version 1, this reader knows only versions 2 and 3/);
+    await assert.rejects(decodeChunk(v1, 'c-old.bin'), /c-old\.bin: chunk version 1, this reader knows only versions 2 to 4/);
   });
 
-  test('a file of version 2 (the box\'s own grid, the same layout) is still read', async () => {
-    const c = square();
-    const v2 = encodeChunk(c).slice();
-    new DataView(v2.buffer).setUint32(4, 2, true);
-    assertSame(await decodeChunk(v2), c, 0);
+  test('files of versions 3 and 2 (a z in each vertex, 80-byte header) are still read', async () => {
+    // Written by the version-3 encoder from these chunks (testdata/README.md): version 3 on a
+    // grid of 2^-12, version 2 on its box's own, 2^-14.
+    const v3 = await decodeChunk(readFileSync(fixture('chunk-v3.bin')));
+    assert.equal(v3.gridExponent, -12);
+    assertSame(v3, gridChunk(12, 700, 3), 2 ** -13);
+    const v2 = await decodeChunk(readFileSync(fixture('chunk-v2.bin')));
+    assert.equal(v2.gridExponent, -14);
+    assertSame(v2, gridChunk(12, 700, 4), 2 ** -15);
   });
 
   test('on the cube\'s grid, a point two chunks share decodes to the same value in both', async () => {

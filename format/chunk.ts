@@ -1,8 +1,8 @@
-// The chunk file (docs/FORMAT.md, "Chunk file", version 3): surface triangles of one chunk,
+// The chunk file (docs/FORMAT.md, "Chunk file", version 4): surface triangles of one chunk,
 // compact. Ground points relative to the chunk's origin on a power-of-two grid, each once (the
-// corners of several surfaces share it); a vertex is a point, its z as float32 and the faces
-// above and below as indices into a chunk-local face table (which gives each face's class).
-// Points, vertices and triangles are compressed with meshoptimizer's vertex and index codecs
+// corners of several surfaces share it), and each z (float32) once; a vertex is a point, a z
+// and the faces above and below, all as indices into chunk-local tables (the face table gives
+// each face's class). Points, z values, vertices and triangles are compressed with meshoptimizer's vertex and index codecs
 // (the glTF EXT_meshopt_compression codecs). The decoder expands a file to the vertex columns
 // the GPU binds as they are (chunk-layout.ts). Pure: used by the CPU slicer and the map's
 // worker; the encoder is in chunk-encode.ts so that the map does not load its WebAssembly.
@@ -11,14 +11,17 @@ import { VERTEX_BYTES, vertexColumnOffset, type VertexColumn } from './chunk-lay
 import { FormatError } from './format-error.js';
 
 export const CHUNK_MAGIC = 0x43435353; // "SSCC"
-export const CHUNK_VERSION = 3;
-/** The older version this reader still reads: the same layout, with the grid always the box's own. */
+export const CHUNK_VERSION = 4;
+/** The older version this reader still reads: no z table, a vertex holds its z (80-byte header). */
+export const CHUNK_VERSION_3 = 3;
+/** Version 3's layout with the grid always the box's own. */
 export const CHUNK_VERSION_2 = 2;
 /** The coarsest position grid a reader accepts, 2^MAX_POSITION_EXPONENT (every grid value stays finite in float32). */
 export const MAX_POSITION_EXPONENT = 64;
 export const NO_CLASS = 0xffff;
-/** Header bytes (docs/FORMAT.md). */
-export const CHUNK_HEADER_BYTES = 80;
+/** Header bytes (docs/FORMAT.md), and those of versions 2 and 3. */
+export const CHUNK_HEADER_BYTES = 88;
+const OLD_HEADER_BYTES = 80;
 /**
  * Bits of the position grid: x and y are whole steps of `2^e`, with `e` at least the box's own
  * exponent, the smallest with its largest |x| or |y| below `2^(e + POSITION_BITS)`. Every grid
@@ -57,14 +60,20 @@ export const pad4 = (n: number): number => (n + 3) & ~3;
 /** Bytes per index: 2 while every vertex fits a u16. */
 export const indexSizeFor = (vertices: number): 2 | 4 => (vertices <= 0xffff ? 2 : 4);
 
-/** Bytes per face-table index in an encoded vertex: 2 while the table fits a u16. */
-export const faceIndexSizeFor = (faces: number): 2 | 4 => (faces <= 0xffff ? 2 : 4);
+/**
+ * Bytes per table index in an encoded vertex: 2 while the point, z and face tables all fit a
+ * u16 (in versions 2 and 3, the face table alone decided, and the point index was a u32).
+ */
+export const tableIndexSizeFor = (largestTable: number): 2 | 4 => (largestTable <= 0xffff ? 2 : 4);
 
 /** Bytes of one encoded point: i32 x, i32 y in grid steps. */
 export const POINT_BYTES = 8;
 
-/** Bytes of one encoded vertex: u32 point index, f32 z, upper and lower face-table index. */
-export const encodedVertexBytes = (faceIndexSize: 2 | 4): number => 8 + 2 * faceIndexSize;
+/** Bytes of one encoded z: f32. */
+export const Z_BYTES = 4;
+
+/** Bytes of one encoded vertex: its point, z, upper and lower face as table indices of `size` bytes each. */
+export const encodedVertexBytes = (size: 2 | 4): number => 4 * size;
 
 /** The grid exponent `e` of a box (x0, y0, _, x1, y1, _): the smallest with every |x|, |y| of it below 2^(e + POSITION_BITS). */
 function positionExponent(box: ArrayLike<number>): number {
@@ -108,19 +117,31 @@ export interface ChunkSections {
   faceIds: number;
   faceClasses: number;
   points: number;
+  /** The z stream (none in versions 2 and 3: there it starts and ends where the vertices start). */
+  zs: number;
   vertices: number;
   indices: number;
   /** The file's length. */
   end: number;
 }
 
-export function chunkSections(faces: number, pointStreamBytes: number, vertexStreamBytes: number, indexStreamBytes: number): ChunkSections {
-  const faceIds = CHUNK_HEADER_BYTES;
-  const faceClasses = faceIds + 4 * faces;
-  const points = pad4(faceClasses + 2 * faces);
-  const vertices = pad4(points + pointStreamBytes);
-  const indices = pad4(vertices + vertexStreamBytes);
-  return { faceIds, faceClasses, points, vertices, indices, end: pad4(indices + indexStreamBytes) };
+/** The lengths a header gives: of the face table (entries) and of each compressed stream (bytes). */
+export interface ChunkStreams {
+  faces: number;
+  points: number;
+  zs: number;
+  vertices: number;
+  indices: number;
+}
+
+export function chunkSections(s: ChunkStreams, headerBytes = CHUNK_HEADER_BYTES): ChunkSections {
+  const faceIds = headerBytes;
+  const faceClasses = faceIds + 4 * s.faces;
+  const points = pad4(faceClasses + 2 * s.faces);
+  const zs = pad4(points + s.points);
+  const vertices = pad4(zs + s.zs);
+  const indices = pad4(vertices + s.vertices);
+  return { faceIds, faceClasses, points, zs, vertices, indices, end: pad4(indices + s.indices) };
 }
 
 /** Bytes of a decoded chunk: the vertex columns, then the indices. */
@@ -162,8 +183,13 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   const dv = new DataView(b.buffer, b.byteOffset, b.byteLength);
   if (dv.getUint32(0, true) !== CHUNK_MAGIC) throw fail('not a chunk file (bad magic)');
   const version = dv.getUint32(4, true);
-  if (version !== CHUNK_VERSION && version !== CHUNK_VERSION_2) throw fail(`chunk version ${version}, this reader knows only versions ${CHUNK_VERSION_2} and ${CHUNK_VERSION} (rebuild the cube with ssc build)`);
-  if (b.byteLength < CHUNK_HEADER_BYTES) throw fail(`truncated (${b.byteLength} bytes, the header alone is ${CHUNK_HEADER_BYTES})`);
+  if (version !== CHUNK_VERSION && version !== CHUNK_VERSION_3 && version !== CHUNK_VERSION_2) {
+    throw fail(`chunk version ${version}, this reader knows only versions ${CHUNK_VERSION_2} to ${CHUNK_VERSION} (rebuild the cube with ssc build)`);
+  }
+  // Versions 2 and 3: no z table, the z in each vertex.
+  const zTable = version === CHUNK_VERSION;
+  const headerBytes = zTable ? CHUNK_HEADER_BYTES : OLD_HEADER_BYTES;
+  if (b.byteLength < headerBytes) throw fail(`truncated (${b.byteLength} bytes, the header alone is ${headerBytes})`);
   const V = dv.getUint32(8, true), T = dv.getUint32(12, true);
   const box = new Float32Array(6);
   for (let i = 0; i < 6; i++) box[i] = dv.getFloat32(32 + 4 * i, true);
@@ -173,46 +199,69 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   const gridProblem = positionGridProblem(e, box, version === CHUNK_VERSION_2);
   if (gridProblem) throw fail(gridProblem);
   const F = dv.getUint32(60, true), P = dv.getUint32(64, true);
-  const pointStream = dv.getUint32(68, true), vertexStream = dv.getUint32(72, true), indexStream = dv.getUint32(76, true);
-  // Bounds that hold in every chunk (each point used by a vertex, each vertex by a triangle, the
-  // index codec's byte per triangle): a damaged count is refused before anything is allocated.
-  if (T > indexStream) throw fail(`${T} triangles cannot fit an index stream of ${indexStream} bytes`);
-  if (V > 3 * T || P > V || F > 2 * V) throw fail(`counts out of bounds (${T} triangles, ${V} vertices, ${P} points, ${F} faces)`);
-  const sec = chunkSections(F, pointStream, vertexStream, indexStream);
-  if (b.byteLength !== sec.end) throw fail(`${b.byteLength} bytes, its header (${F} faces, ${pointStream} + ${vertexStream} + ${indexStream} bytes of streams) needs ${sec.end}`);
-  const faceIndexSize = faceIndexSizeFor(F), indexSize = indexSizeFor(V);
+  const u32 = (o: number): number => dv.getUint32(o, true);
+  const Z = zTable ? u32(68) : 0;
+  const streams: ChunkStreams = zTable
+    ? { faces: F, points: u32(72), zs: u32(76), vertices: u32(80), indices: u32(84) }
+    : { faces: F, points: u32(68), zs: 0, vertices: u32(72), indices: u32(76) };
+  // Bounds that hold in every chunk (each point and z used by a vertex, each vertex by a
+  // triangle, the index codec's byte per triangle): a damaged count is refused before anything
+  // is allocated.
+  if (T > streams.indices) throw fail(`${T} triangles cannot fit an index stream of ${streams.indices} bytes`);
+  if (V > 3 * T || P > V || Z > V || F > 2 * V) {
+    throw fail(`counts out of bounds (${T} triangles, ${V} vertices, ${P} points,${zTable ? ` ${Z} z values,` : ''} ${F} faces)`);
+  }
+  const sec = chunkSections(streams, headerBytes);
+  if (b.byteLength !== sec.end) {
+    const lengths = [streams.points, ...(zTable ? [streams.zs] : []), streams.vertices, streams.indices].join(' + ');
+    throw fail(`${b.byteLength} bytes, its header (${F} faces, ${lengths} bytes of streams) needs ${sec.end}`);
+  }
+  const localSize = zTable ? tableIndexSizeFor(Math.max(P, Z, F)) : tableIndexSizeFor(F), indexSize = indexSizeFor(V);
   await MeshoptDecoder.ready;
 
-  const stride = encodedVertexBytes(faceIndexSize);
+  // Versions 2 and 3: u32 point, f32 z, then the two face indices.
+  const stride = zTable ? encodedVertexBytes(localSize) : 8 + 2 * localSize;
   const rawPoints = new Uint8Array(P * POINT_BYTES);
+  const rawZs = new Uint8Array(Z * Z_BYTES);
   const raw = new Uint8Array(V * stride);
   const out = new ArrayBuffer(decodedByteLength(V, T));
   const indexOffset = pad4(V * VERTEX_BYTES);
   const indexBytes = new Uint8Array(out, indexOffset, 3 * T * indexSize);
+  const stream = (at: number, length: number): Uint8Array => b.subarray(at, at + length);
   try {
-    if (P > 0) MeshoptDecoder.decodeVertexBuffer(rawPoints, P, POINT_BYTES, b.subarray(sec.points, sec.points + pointStream));
-    if (V > 0) MeshoptDecoder.decodeVertexBuffer(raw, V, stride, b.subarray(sec.vertices, sec.vertices + vertexStream));
-    if (T > 0) MeshoptDecoder.decodeIndexBuffer(indexBytes, 3 * T, indexSize, b.subarray(sec.indices, sec.indices + indexStream));
+    if (P > 0) MeshoptDecoder.decodeVertexBuffer(rawPoints, P, POINT_BYTES, stream(sec.points, streams.points));
+    if (Z > 0) MeshoptDecoder.decodeVertexBuffer(rawZs, Z, Z_BYTES, stream(sec.zs, streams.zs));
+    if (V > 0) MeshoptDecoder.decodeVertexBuffer(raw, V, stride, stream(sec.vertices, streams.vertices));
+    if (T > 0) MeshoptDecoder.decodeIndexBuffer(indexBytes, 3 * T, indexSize, stream(sec.indices, streams.indices));
   } catch (err) {
-    throw fail(`its compressed points, vertices or triangles do not decode (${(err as Error).message})`);
+    throw fail(`its compressed points, z values, vertices or triangles do not decode (${(err as Error).message})`);
   }
 
   const faceIds = new Uint32Array(b.buffer, b.byteOffset + sec.faceIds, F);
   const faceClasses = new Uint16Array(b.buffer, b.byteOffset + sec.faceClasses, F);
   const { positions, upper, lower, upperClass, lowerClass } = columnViews(out, V);
   const points = new Int32Array(rawPoints.buffer);
-  const pointOf = new Uint32Array(raw.buffer), floats = new Float32Array(raw.buffer);
-  const locals = faceIndexSize === 2 ? new Uint16Array(raw.buffer) : new Uint32Array(raw.buffer);
-  const w = stride / 4, h = stride / faceIndexSize, l0 = 8 / faceIndexSize;
+  const zs = new Float32Array(rawZs.buffer);
+  const lanes = localSize === 2 ? new Uint16Array(raw.buffer) : new Uint32Array(raw.buffer);
+  const words = new Uint32Array(raw.buffer), floats = new Float32Array(raw.buffer);
+  const w = stride / 4, h = stride / localSize, faceLane = zTable ? 2 : 8 / localSize;
   const step = 2 ** e;
   for (let k = 0; k < V; k++) {
-    const p = pointOf[k * w]!, z = floats[k * w + 1]!;
+    const p = zTable ? lanes[k * h]! : words[k * w]!;
     if (p >= P) throw fail(`vertex ${k} names point ${p} of ${P}`);
+    let z: number;
+    if (zTable) {
+      const zi = lanes[k * h + 1]!;
+      if (zi >= Z) throw fail(`vertex ${k} names z value ${zi} of ${Z}`);
+      z = zs[zi]!;
+    } else {
+      z = floats[k * w + 1]!;
+    }
     if (!Number.isFinite(z)) throw fail(`vertex ${k} has a non-finite coordinate`);
     positions[3 * k] = points[2 * p]! * step;
     positions[3 * k + 1] = points[2 * p + 1]! * step;
     positions[3 * k + 2] = z;
-    const u = locals[k * h + l0]!, d = locals[k * h + l0 + 1]!;
+    const u = lanes[k * h + faceLane]!, d = lanes[k * h + faceLane + 1]!;
     if (u >= F || d >= F) throw fail(`vertex ${k} names face ${Math.max(u, d)} of a table of ${F}`);
     upper[k] = faceIds[u]!;
     lower[k] = faceIds[d]!;

@@ -2,7 +2,7 @@
 // (across pieces a corner differs in z or faces), positions relative to a whole-unit origin
 // near the chunk, on the cube's grid (position-grid.ts).
 import { NO_CLASS } from '../../format/chunk.js';
-import { encodeChunk } from '../../format/chunk-encode.js';
+import { encodeChunk, orderForCodecs } from '../../format/chunk-encode.js';
 import type { Box3 } from '../../format/cube-index.js';
 import type { Surfaces } from './surfaces.js';
 
@@ -41,6 +41,11 @@ export function assembleChunk(
     z1 = Math.max(z1, s.zEnd[i]!);
   }
   const V = verts.length / 2;
+  // In the order that compresses best (the index stream 0.28 -> 0.18 MB gzip on bgt_otterlo_1800m).
+  const tri = Uint32Array.from(indices);
+  const renumber = orderForCodecs(tri, V);
+  const order = new Uint32Array(V);
+  for (let k = 0; k < V; k++) order[renumber[k]!] = k;
   // A whole-unit origin: exact in float64, and every position is then within the chunk's size of it.
   const ox = Math.floor(x0), oy = Math.floor(y0);
   // float64: the encoder puts x, y on its grid from the exact values.
@@ -48,7 +53,7 @@ export function assembleChunk(
   const upper = new Uint32Array(V), lower = new Uint32Array(V);
   const upperClass = new Uint16Array(V), lowerClass = new Uint16Array(V);
   for (let k = 0; k < V; k++) {
-    const v = verts[2 * k]!, corner = verts[2 * k + 1]!, i = Math.floor(corner / 3);
+    const v = verts[2 * order[k]!]!, corner = verts[2 * order[k]! + 1]!, i = Math.floor(corner / 3);
     positions[3 * k] = xs[v]! - ox;
     positions[3 * k + 1] = ys[v]! - oy;
     positions[3 * k + 2] = s.z[corner]!;
@@ -60,7 +65,7 @@ export function assembleChunk(
   const box = Float32Array.of(x0 - ox, y0 - oy, z0, x1 - ox, y1 - oy, z1);
   const bytes = encodeChunk({
     originX: ox, originY: oy, box, positions, upper, lower, upperClass, lowerClass,
-    indices: V <= 0xffff ? Uint16Array.from(indices) : Uint32Array.from(indices), gridExponent,
+    indices: V <= 0xffff ? Uint16Array.from(tri) : tri, gridExponent,
   });
   return { bytes, triangles: tris.length, vertices: V, bbox: [x0, y0, z0, x1, y1, z1] };
 }
