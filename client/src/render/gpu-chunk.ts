@@ -1,9 +1,10 @@
 // A chunk on the GPU: its vertex section as one buffer (attributes at offsets into it, exactly
 // as the file lays them out) and its triangle indices, bound in a vertex array object. It draws
-// only the triangles that are not above the slice everywhere (draw-ranges.ts).
+// only the triangles the view can show: in a ground cell that meets the view, not above the
+// slice everywhere (draw-ranges.ts), in one call where WEBGL_multi_draw is there.
 import { VERTEX_COLUMNS, vertexColumnOffset } from '../../../format/chunk-layout.js';
 import type { Box3 } from '../../../format/cube-index.js';
-import { trianglesUpTo, type DrawBlocks } from '../source/draw-ranges.js';
+import { drawRanges, rangesFor, type DrawBlocks, type DrawRanges } from '../source/draw-ranges.js';
 import type { ChunkPayload } from '../source/worker-protocol.js';
 
 export class GpuChunk {
@@ -18,6 +19,11 @@ export class GpuChunk {
   /** Frame number of the last frame that drew it (least recently used goes first). */
   lastUsed = 0;
   private readonly blocks: DrawBlocks;
+  private readonly ranges: DrawRanges;
+  /** The ranges as the GPU takes them: index counts and byte offsets. */
+  private readonly counts: Int32Array;
+  private readonly offsets: Int32Array;
+  private readonly rect = new Float64Array(4);
   private readonly vao: WebGLVertexArrayObject;
   private readonly buffers: WebGLBuffer[];
 
@@ -28,6 +34,9 @@ export class GpuChunk {
     this.originY = c.originY;
     this.triangleCount = c.triangleCount;
     this.blocks = c.blocks;
+    this.ranges = drawRanges(c.blocks);
+    this.counts = new Int32Array(this.ranges.first.length);
+    this.offsets = new Int32Array(this.ranges.first.length);
     const V = c.vertexCount;
     const indexBytes = c.indexSize * 3 * c.triangleCount;
     this.bytes = c.vertexByteLength + indexBytes;
@@ -53,13 +62,27 @@ export class GpuChunk {
     this.buffers = [vbo, ibo];
   }
 
-  /** Draws the triangles a slicing surface up to zMax can show; returns how many. */
-  draw(gl: WebGL2RenderingContext, zMax: number): number {
-    const n = trianglesUpTo(this.blocks, zMax);
-    if (n === 0) return 0;
+  /**
+   * Draws the triangles that a slicing surface up to zMax over the ground box `view` (x0, y0,
+   * x1, y1, absolute) can show; returns how many.
+   */
+  draw(gl: WebGL2RenderingContext, zMax: number, view: ArrayLike<number>, multiDraw: WEBGL_multi_draw | null): number {
+    const rect = this.rect;
+    rect[0] = view[0]! - this.originX;
+    rect[1] = view[1]! - this.originY;
+    rect[2] = view[2]! - this.originX;
+    rect[3] = view[3]! - this.originY;
+    const r = rangesFor(this.blocks, zMax, rect, this.ranges);
+    if (r.n === 0) return 0;
     gl.bindVertexArray(this.vao);
-    gl.drawElements(gl.TRIANGLES, 3 * n, this.indexType, 0);
-    return n;
+    const indexBytes = this.indexType === gl.UNSIGNED_SHORT ? 2 : 4;
+    for (let i = 0; i < r.n; i++) {
+      this.counts[i] = 3 * r.count[i]!;
+      this.offsets[i] = 3 * indexBytes * r.first[i]!;
+    }
+    if (multiDraw && r.n > 1) multiDraw.multiDrawElementsWEBGL(gl.TRIANGLES, this.counts, 0, this.indexType, this.offsets, 0, r.n);
+    else for (let i = 0; i < r.n; i++) gl.drawElements(gl.TRIANGLES, this.counts[i]!, this.indexType, this.offsets[i]!);
+    return r.triangles;
   }
 
   delete(gl: WebGL2RenderingContext): void {

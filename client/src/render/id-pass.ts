@@ -5,12 +5,22 @@ import { mat4 } from 'gl-matrix';
 import idFrag from '../../shaders/id.frag?raw';
 import idVert from '../../shaders/id.vert?raw';
 import type { Surface } from '../../../format/slicing-surface.js';
-import type { ViewGeometry } from '../geometry/view.js';
+import { viewBbox, type ViewGeometry } from '../geometry/view.js';
 import type { GpuChunk } from './gpu-chunk.js';
 import { Program } from './program.js';
 import { withDefines } from './shader-defines.js';
 import { flatSliceZ } from './surface-params.js';
 import type { Targets } from './targets.js';
+
+/** What the ID pass draws of each chunk. */
+export interface DrawLimits {
+  /** The slicing surface's highest z over the view: triangles wholly above it are not drawn. */
+  sliceTop: number;
+  /** Also the ground cells beside the view (to compare with drawing whole chunks). */
+  beside: boolean;
+}
+
+const growBy = (b: number[], d: number): number[] => [b[0]! - d, b[1]! - d, b[2]! + d, b[3]! + d];
 
 export class IdPass {
   private readonly program: Program;
@@ -21,19 +31,21 @@ export class IdPass {
   private readonly projection = new Float64Array(16);
   private readonly matrix = new Float64Array(16);
   private readonly matrix32 = new Float32Array(16);
+  /** One call for a chunk's ranges (draw-ranges.ts), where the GPU has it. */
+  private readonly multiDraw: WEBGL_multi_draw | null;
 
   constructor(private readonly gl: WebGL2RenderingContext) {
     this.program = new Program(gl, idVert, idFrag, 'id pass');
     this.flat = new Program(gl, idVert, withDefines(idFrag, ['FLAT']), 'id pass (flat)');
+    this.multiDraw = gl.getExtension('WEBGL_multi_draw');
   }
 
   /**
    * Draws the chunks sliced by `surface` (whose z per pixel is in the surface target);
-   * `jitter` shifts the image by a fraction of a pixel (supersampling); `sliceTop` is the
-   * surface's highest z over the view: triangles wholly above it are not drawn. Returns the
-   * triangles submitted.
+   * `jitter` shifts the image by a fraction of a pixel (supersampling); `limits` says what of
+   * each chunk is left out (DrawLimits). Returns the triangles submitted.
    */
-  draw(targets: Targets, view: ViewGeometry, chunks: Iterable<GpuChunk>, surface: Surface, zMax: number, sliceTop: number, jitter: [number, number]): number {
+  draw(targets: Targets, view: ViewGeometry, chunks: Iterable<GpuChunk>, surface: Surface, zMax: number, limits: DrawLimits, jitter: [number, number]): number {
     const gl = this.gl;
     const flat = flatSliceZ(surface, zMax);
     const p = flat === null ? this.program : this.flat;
@@ -71,10 +83,14 @@ export class IdPass {
     this.matrix32.set(this.matrix);
     gl.uniformMatrix4fv(p.loc('uMatrix'), false, this.matrix32);
     const uOffset = p.loc('uOffset');
+    // The ground under the targets, with two pixels to spare for the jitter (under one pixel)
+    // and rounding: a chunk's cells wholly outside it cover none of its pixels.
+    const pad = 2 * view.resolution;
+    const ground = limits.beside ? [-Infinity, -Infinity, Infinity, Infinity] : growBy(viewBbox(view), pad);
     let triangles = 0;
     for (const c of chunks) {
       gl.uniform2f(uOffset, c.originX - rx, c.originY - ry);
-      triangles += c.draw(gl, sliceTop);
+      triangles += c.draw(gl, limits.sliceTop, ground, this.multiDraw);
     }
     gl.bindVertexArray(null);
     gl.disable(gl.CULL_FACE);

@@ -13,7 +13,7 @@ import { FaceStateTexture } from './face-state-texture.js';
 import type { GpuChunk } from './gpu-chunk.js';
 import type { GpuLineChunk } from './gpu-line-chunk.js';
 import type { IdBuffer } from './id-buffer.js';
-import { IdPass } from './id-pass.js';
+import { IdPass, type DrawLimits } from './id-pass.js';
 import { LinePass } from './line-pass.js';
 import { createLineRuleTexture, drawnLineRules, type LineRule } from './line-rules.js';
 import { lineAt, type LineHit } from '../engine/line-hit.js';
@@ -219,7 +219,7 @@ export class Renderer {
       this.canvasOnly = null;
     }
     g.surface.draw(g.targets, f.view, f.surface, f.zMax);
-    const triangles = g.id.draw(g.targets, f.view, chunks, f.surface, f.zMax, this.sliceTop(f), f.jitter);
+    const triangles = g.id.draw(g.targets, f.view, chunks, f.surface, f.zMax, this.drawLimits(f), f.jitter);
     this.idsJittered = f.jitter[0] !== 0 || f.jitter[1] !== 0;
     gl.bindVertexArray(g.emptyVao);
     const toCanvas = f.colour.weight >= 1;
@@ -269,9 +269,12 @@ export class Renderer {
     this.overlaysDrawn = { layers: this.overlays, view: v, ratio: f.pixelRatio };
   }
 
-  /** The highest z the id pass draws triangles from (all of them with wholeChunks). */
-  private sliceTop(f: FrameParams): number {
-    return this.wholeChunks ? Infinity : f.sliceRange[1];
+  /**
+   * The highest z the id pass draws triangles from, and whether it leaves out the parts of a
+   * chunk beside the view (all of every chunk with wholeChunks).
+   */
+  private drawLimits(f: FrameParams): DrawLimits {
+    return this.wholeChunks ? { sliceTop: Infinity, beside: true } : { sliceTop: f.sliceRange[1], beside: false };
   }
 
   /** The ID targets as drawn without jitter (drawn again if the last frame was jittered); null when lost. */
@@ -282,7 +285,7 @@ export class Renderer {
     if (this.idsJittered) {
       // Only chunks still on the GPU (some may have been evicted since).
       const chunks = this.lastChunks.filter((c) => this.store.get(c.file) === c);
-      g.id.draw(g.targets, f.view, chunks, f.surface, f.zMax, this.sliceTop(f), [0, 0]);
+      g.id.draw(g.targets, f.view, chunks, f.surface, f.zMax, this.drawLimits(f), [0, 0]);
       this.idsJittered = false;
     }
     return g;

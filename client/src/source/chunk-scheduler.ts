@@ -163,7 +163,7 @@ export class ChunkScheduler {
           if (e.controller !== controller) return; // aborted meanwhile
           e.controller = null;
           this.setStatus(e, 'received');
-          const transfer = chunk.kind === 'lines' ? [chunk.segments.buffer, chunk.segmentLine.buffer, chunk.segmentRule.buffer, chunk.lineClass.buffer, chunk.lineFeature.buffer, chunk.lineRamp.buffer] : [chunk.buffer, chunk.blocks.zLow.buffer, chunk.blocks.first.buffer];
+          const transfer = chunk.kind === 'lines' ? [chunk.segments.buffer, chunk.segmentLine.buffer, chunk.segmentRule.buffer, chunk.lineClass.buffer, chunk.lineFeature.buffer, chunk.lineRamp.buffer] : [chunk.buffer, chunk.blocks.cellBox.buffer, chunk.blocks.cellBlocks.buffer, chunk.blocks.zLow.buffer, chunk.blocks.first.buffer];
           this.post({ type: 'chunk', chunk }, transfer as ArrayBuffer[]);
         },
         (err: unknown) => {

@@ -1,10 +1,11 @@
-// The drawing order: every triangle a slice up to some z can show is in the prefix drawn
-// (checked triangle by triangle against its own lowest z), the reordering keeps every triangle
-// with its corners in order, and on a stack of states like a chunk's a slice low in the stack
-// draws a small part of it.
+// The drawing order: every triangle a slice up to some z over some ground can show is in a range
+// drawn (checked triangle by triangle against its own lowest z and ground box), the reordering
+// keeps every triangle with its corners in order, on a stack of states like a chunk's a slice
+// low in the stack draws a small part of it, and a view over a corner of a chunk's ground draws
+// little more than the triangles there.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { orderForDrawing, trianglesUpTo } from './draw-ranges.js';
+import { drawRanges, orderForDrawing, rangesFor, type DrawBlocks } from './draw-ranges.js';
 
 function random(seed: number): () => number {
   let s = seed >>> 0;
@@ -32,7 +33,18 @@ function stack(n: number, h: number, tilt: number, seed: number): { positions: F
   return { positions, indices, low };
 }
 
-test('every triangle at or below the slice is in the prefix, and triangles keep their corners', () => {
+const everywhere = [-Infinity, -Infinity, Infinity, Infinity];
+
+/** The triangles drawn for slices up to `zMax` over `rect`. */
+function drawn(b: DrawBlocks, zMax: number, rect: ArrayLike<number>): number[] {
+  const r = rangesFor(b, zMax, rect, drawRanges(b));
+  const out: number[] = [];
+  for (let i = 0; i < r.n; i++) for (let t = r.first[i]!; t < r.first[i]! + r.count[i]!; t++) out.push(t);
+  assert.equal(out.length, r.triangles);
+  return out;
+}
+
+test('every triangle at or below the slice is in a range, and triangles keep their corners', () => {
   for (const [n, seed] of [[4096, 1], [100, 2], [64, 6], [1, 3], [0, 4]] as const) {
     const s = stack(n, 100, 0.8, seed);
     const before = new Set<string>();
@@ -42,14 +54,14 @@ test('every triangle at or below the slice is in the prefix, and triangles keep 
     for (let t = 0; t < n; t++) after.add([...s.indices.subarray(3 * t, 3 * t + 3)].join());
     assert.deepEqual(after, before, `n=${n}: the same triangles, each with its own corners in order`);
     for (const z of [-1, 0, 0.5, 30, 50, 99.9, 100, 200]) {
-      const k = trianglesUpTo(blocks, z);
-      const drawn = new Set<number>();
-      for (let t = 0; t < k; t++) drawn.add(s.indices[3 * t]! / 3);
+      const ts = drawn(blocks, z, everywhere);
+      const got = new Set(ts.map((t) => s.indices[3 * t]! / 3));
       for (let t = 0; t < n; t++) {
-        if (s.low[t]! <= z) assert.ok(drawn.has(t), `n=${n}, slice ${z}: triangle ${t} (from ${s.low[t]}) is drawn`);
+        if (s.low[t]! <= z) assert.ok(got.has(t), `n=${n}, slice ${z}: triangle ${t} (from ${s.low[t]}) is drawn`);
       }
       const needed = s.low.filter((l) => l <= z).length;
-      assert.ok(k - needed < 64, `n=${n}, slice ${z}: ${k} drawn for ${needed}, at most a block more`);
+      // One ground cell (every triangle over the same square): at most a block of 16 more.
+      assert.ok(ts.length - needed < 16, `n=${n}, slice ${z}: ${ts.length} drawn for ${needed}, at most a block more`);
     }
   }
 });
@@ -60,4 +72,42 @@ test('ties in lowest z keep the file order', () => {
   const indices = Uint16Array.from({ length: 9 }, (_, v) => v);
   orderForDrawing(positions, indices, 3);
   assert.deepEqual([...indices], [3, 4, 5, 0, 1, 2, 6, 7, 8]);
+});
+
+test('a view over part of the ground draws the triangles there and few others', () => {
+  // A 40 x 40 grid of unit squares, two triangles each, at z from 0 to 10 by a hash of the cell.
+  const n = 40, positions: number[] = [], indices: number[] = [];
+  const low: number[] = [];
+  for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
+    const z = Math.fround(((i * 7 + j * 13) % 11) * 1);
+    const v = positions.length / 3;
+    positions.push(i, j, z, i + 1, j, z, i + 1, j + 1, z, i, j + 1, z);
+    indices.push(v, v + 1, v + 2, v, v + 2, v + 3);
+    low.push(z, z);
+  }
+  const idx = Uint32Array.from(indices);
+  const b = orderForDrawing(positions, idx, idx.length / 3);
+  const T = idx.length / 3;
+  // Where each triangle is after the reordering: its first corner's square.
+  const squareOf = (t: number): [number, number] => [positions[3 * idx[3 * t]!]!, positions[3 * idx[3 * t]! + 1]!];
+  for (const [rect, z] of [[[3.5, 2.5, 8.2, 6], 4], [[30, 30, 45, 45], 10], [[-5, 12, 0, 13], 3], [[20, 20, 20, 20], 0]] as const) {
+    const ts = drawn(b, z, rect);
+    const got = new Set(ts);
+    let needed = 0;
+    for (let t = 0; t < T; t++) {
+      const [x, y] = squareOf(t);
+      const zt = positions[3 * idx[3 * t]! + 2]!;
+      if (zt <= z && x <= rect[2] && x + 1 >= rect[0] && y <= rect[3] && y + 1 >= rect[1]) {
+        needed++;
+        assert.ok(got.has(t), `triangle over square ${x}, ${y} at z ${zt} is drawn for a view over ${rect.join(', ')} up to ${z}`);
+      }
+    }
+    // The cells are 10 x 10 squares (200 triangles): a view that meets at most four of them
+    // draws at most a quarter of the chunk.
+    assert.ok(ts.length <= T / 4, `${ts.length} of ${T} drawn for ${needed} needed over ${rect.join(', ')}`);
+  }
+  // The whole ground and every z: one range of everything.
+  const all = rangesFor(b, 100, everywhere, drawRanges(b));
+  assert.deepEqual([all.n, all.first[0], all.count[0]], [1, 0, T]);
+  assert.deepEqual(drawn(b, 100, [1000, 1000, 1001, 1001]), [], 'a view beside the chunk draws nothing');
 });

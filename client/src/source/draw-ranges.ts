@@ -1,9 +1,12 @@
-// Which of a chunk's triangles a slice can show. A chunk holds many states stacked over the same
-// ground; a triangle whose lowest corner lies above the slicing surface everywhere in the view
-// is discarded pixel by pixel by id.frag, after being rasterized (it writes its depth, so nothing
-// is rejected early). Here the triangles are ordered by their lowest z, so those at or below the
-// view's highest slice z are a prefix, found from a small table of blocks: at the base scale that
-// skips almost the whole chunk.
+// Which of a chunk's triangles a view can show. A chunk holds many states stacked over the same
+// ground, often over far more ground than a view at its lowest z covers (at the base scale a
+// chunk of 1 to 2 km under a view of 340 m). Two things keep a view from drawing all of it:
+// - Ground cells: the worker splits the chunk's ground into CELLS x CELLS cells and groups the
+//   triangles by the cell of their centroid. A cell whose triangles' ground box misses the view
+//   is not drawn: none of its triangles could cover a pixel of it.
+// - Lowest z: within a cell the triangles are ordered by their lowest z, so those at or below the
+//   view's highest slice z are a prefix, found from a small table of blocks. A triangle above the
+//   slice everywhere would be discarded pixel by pixel by id.frag, after being rasterized.
 //
 // Triangles whose upper face has ended below the slice are still drawn: newer surfaces cover
 // them, but where the GPU leaves a pixel between current triangles uncovered they fill it.
@@ -12,29 +15,53 @@
 // corner lies on another's edge, a software GPU's sub-pixel snapping opens pixel-wide gaps.
 // Leaving the ended triangles out (tried: blocks ordered by end z within) opened such pixels on
 // bgt_otterlo_400m at z 420, and filled them differently as the slice's z range changed.
-// Pure: the worker orders a decoded chunk; the renderer picks the prefix each frame.
+// Leaving out a cell that misses the view leaves no such gap: it covers no pixel of the view.
+// Pure: the worker orders a decoded chunk; the renderer picks the ranges each frame.
 
 /** The blocks of a chunk ordered for drawing, as transferred to the renderer. */
 export interface DrawBlocks {
-  /** Lowest vertex z of each block's first triangle (the blocks ascend). */
+  /** Per cell, the ground box of its triangles (x0, y0, x1, y1, relative to the chunk's origin); empty cells are left out. */
+  cellBox: Float32Array;
+  /** Per cell, its first block; the block count last (cells + 1 entries). */
+  cellBlocks: Uint32Array;
+  /** Lowest vertex z of each block's first triangle (ascending within a cell). */
   zLow: Float32Array;
   /** First triangle of each block, and the triangle count last (blocks + 1 entries). */
   first: Uint32Array;
 }
 
-/** Triangles a block holds at least: the table stays small, and the prefix ends at most this much late. */
-const BLOCK = 64;
+/** Cells along each side of a chunk's ground. */
+const CELLS = 4;
+/** Triangles a block holds at least: the table stays small, and a cell's prefix ends at most this much late. */
+const BLOCK = 16;
 
 /**
- * Reorders the first `count` triangles of `indices` in place by their lowest vertex z
- * (`positions` holds x, y, z per vertex; ties keep their order) and returns their blocks.
+ * Reorders the first `count` triangles of `indices` in place by ground cell, then by their
+ * lowest vertex z (`positions` holds x, y, z per vertex; ties keep their order), and returns
+ * their cells and blocks.
  */
 export function orderForDrawing(positions: ArrayLike<number>, indices: Uint16Array | Uint32Array, count: number): DrawBlocks {
   const low = new Float64Array(count);
+  const box = new Float64Array(4 * count);
+  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
   for (let t = 0; t < count; t++) {
-    low[t] = Math.min(positions[3 * indices[3 * t]! + 2]!, positions[3 * indices[3 * t + 1]! + 2]!, positions[3 * indices[3 * t + 2]! + 2]!);
+    const a = 3 * indices[3 * t]!, b = 3 * indices[3 * t + 1]!, c = 3 * indices[3 * t + 2]!;
+    low[t] = Math.min(positions[a + 2]!, positions[b + 2]!, positions[c + 2]!);
+    box[4 * t] = Math.min(positions[a]!, positions[b]!, positions[c]!);
+    box[4 * t + 1] = Math.min(positions[a + 1]!, positions[b + 1]!, positions[c + 1]!);
+    box[4 * t + 2] = Math.max(positions[a]!, positions[b]!, positions[c]!);
+    box[4 * t + 3] = Math.max(positions[a + 1]!, positions[b + 1]!, positions[c + 1]!);
+    x0 = Math.min(x0, box[4 * t]!); y0 = Math.min(y0, box[4 * t + 1]!);
+    x1 = Math.max(x1, box[4 * t + 2]!); y1 = Math.max(y1, box[4 * t + 3]!);
   }
-  const order = Array.from({ length: count }, (_, t) => t).sort((p, q) => low[p]! - low[q]! || p - q);
+  // The cell of each triangle's ground box centre.
+  const cellOf = new Uint8Array(count);
+  const along = (v: number, lo: number, hi: number): number => (hi > lo ? Math.min(CELLS - 1, Math.floor(((v - lo) / (hi - lo)) * CELLS)) : 0);
+  for (let t = 0; t < count; t++) {
+    const i = along((box[4 * t]! + box[4 * t + 2]!) / 2, x0, x1), j = along((box[4 * t + 1]! + box[4 * t + 3]!) / 2, y0, y1);
+    cellOf[t] = j * CELLS + i;
+  }
+  const order = Array.from({ length: count }, (_, t) => t).sort((p, q) => cellOf[p]! - cellOf[q]! || low[p]! - low[q]! || p - q);
   const copy = indices.slice(0, 3 * count);
   for (let i = 0; i < count; i++) {
     const t = order[i]!;
@@ -42,24 +69,75 @@ export function orderForDrawing(positions: ArrayLike<number>, indices: Uint16Arr
     indices[3 * i + 1] = copy[3 * t + 1]!;
     indices[3 * i + 2] = copy[3 * t + 2]!;
   }
-  const blocks = Math.ceil(count / BLOCK);
-  // positions are float32, so the lowest z of a block is exact in the float32 table.
-  const zLow = Float32Array.from({ length: blocks }, (_, k) => low[order[k * BLOCK]!]!);
-  const first = Uint32Array.from({ length: blocks + 1 }, (_, k) => Math.min(count, k * BLOCK));
-  return { zLow, first };
+  const boxes: number[] = [], cellBlocks: number[] = [], zLow: number[] = [], first: number[] = [];
+  for (let s = 0; s < count;) {
+    const cell = cellOf[order[s]!]!;
+    let e = s;
+    let bx0 = Infinity, by0 = Infinity, bx1 = -Infinity, by1 = -Infinity;
+    for (; e < count && cellOf[order[e]!] === cell; e++) {
+      const t = order[e]!;
+      bx0 = Math.min(bx0, box[4 * t]!); by0 = Math.min(by0, box[4 * t + 1]!);
+      bx1 = Math.max(bx1, box[4 * t + 2]!); by1 = Math.max(by1, box[4 * t + 3]!);
+    }
+    // positions are float32, so the box and the blocks' lowest z are exact in float32.
+    boxes.push(bx0, by0, bx1, by1);
+    cellBlocks.push(zLow.length);
+    for (let k = s; k < e; k += BLOCK) {
+      zLow.push(low[order[k]!]!);
+      first.push(k);
+    }
+    s = e;
+  }
+  cellBlocks.push(zLow.length);
+  first.push(count);
+  return { cellBox: Float32Array.from(boxes), cellBlocks: Uint32Array.from(cellBlocks), zLow: Float32Array.from(zLow), first: Uint32Array.from(first) };
+}
+
+/** The triangle ranges a view draws: `n` of them, each from `first[i]`, `count[i]` long. */
+export interface DrawRanges {
+  n: number;
+  first: Uint32Array;
+  count: Uint32Array;
+  /** Triangles over all ranges. */
+  triangles: number;
+}
+
+/** Room for the ranges of a chunk of these blocks (one per cell at most). */
+export function drawRanges(b: DrawBlocks): DrawRanges {
+  const cells = b.cellBlocks.length - 1;
+  return { n: 0, first: new Uint32Array(cells), count: new Uint32Array(cells), triangles: 0 };
 }
 
 /**
- * How many triangles, from the first, slices up to `zMax` can show: every triangle whose
- * lowest z is at or below zMax is among them (the index's test for a chunk's z0).
+ * The ranges that slices up to `zMax` over the ground box `rect` (x0, y0, x1, y1 relative to
+ * the chunk's origin) can show, into `out`: every triangle whose lowest z is at or below zMax
+ * (the index's test for a chunk's z0) and whose cell's box meets `rect` is in one of them.
  */
-export function trianglesUpTo(b: DrawBlocks, zMax: number): number {
-  let lo = 0, hi = b.zLow.length;
-  // The first block that starts above zMax: it and all after it are skipped.
-  while (lo < hi) {
-    const mid = (lo + hi) >> 1;
-    if (b.zLow[mid]! <= zMax) lo = mid + 1;
-    else hi = mid;
+export function rangesFor(b: DrawBlocks, zMax: number, rect: ArrayLike<number>, out: DrawRanges): DrawRanges {
+  out.n = 0;
+  out.triangles = 0;
+  const cells = b.cellBlocks.length - 1;
+  for (let c = 0; c < cells; c++) {
+    if (b.cellBox[4 * c]! > rect[2]! || b.cellBox[4 * c + 2]! < rect[0]! || b.cellBox[4 * c + 1]! > rect[3]! || b.cellBox[4 * c + 3]! < rect[1]!) continue;
+    let lo = b.cellBlocks[c]!, hi = b.cellBlocks[c + 1]!;
+    const start = b.first[lo]!;
+    // The first block of the cell that starts above zMax: it and all after it in the cell are skipped.
+    while (lo < hi) {
+      const mid = (lo + hi) >> 1;
+      if (b.zLow[mid]! <= zMax) lo = mid + 1;
+      else hi = mid;
+    }
+    const n = b.first[lo]! - start;
+    if (n === 0) continue;
+    out.triangles += n;
+    // A range that goes on where the last one ended (a whole cell before it) joins it: one call.
+    if (out.n > 0 && out.first[out.n - 1]! + out.count[out.n - 1]! === start) {
+      out.count[out.n - 1]! += n;
+      continue;
+    }
+    out.first[out.n] = start;
+    out.count[out.n] = n;
+    out.n++;
   }
-  return b.first[lo]!;
+  return out;
 }
