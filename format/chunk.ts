@@ -2,10 +2,11 @@
 // compact. Ground points relative to the chunk's origin on a power-of-two grid, each once (the
 // corners of several surfaces share it), and each z (float32) once; a vertex is a point, a z
 // and the faces above and below, all as indices into chunk-local tables (the face table gives
-// each face's class). Points, z values, vertices and triangles are compressed with meshoptimizer's vertex and index codecs
-// (the glTF EXT_meshopt_compression codecs). The decoder expands a file to the vertex columns
-// the GPU binds as they are (chunk-layout.ts). Pure: used by the CPU slicer and the map's
-// worker; the encoder is in chunk-encode.ts so that the map does not load its WebAssembly.
+// each face's class). Points, z values, vertices and triangles are compressed with
+// meshoptimizer's vertex and index codecs (the glTF EXT_meshopt_compression codecs). The
+// decoder expands a file to the vertex columns the GPU binds as they are (chunk-layout.ts).
+// Pure: used by the CPU slicer and the map's worker; the encoder is in chunk-encode.ts so that
+// the map does not load its WebAssembly.
 import { MeshoptDecoder } from 'meshoptimizer/decoder';
 import { VERTEX_BYTES, vertexColumnOffset, type VertexColumn } from './chunk-layout.js';
 import { FormatError } from './format-error.js';

@@ -2,8 +2,9 @@
 // ground, often over far more ground than a view at its lowest z covers (at the base scale a
 // chunk of 1 to 2 km under a view of 340 m). Two things keep a view from drawing all of it:
 // - Ground cells: the worker splits the chunk's ground into CELLS x CELLS cells and groups the
-//   triangles by the cell of their centroid. A cell whose triangles' ground box misses the view
-//   is not drawn: none of its triangles could cover a pixel of it.
+//   triangles by the cell of their ground box's centre. A cell whose triangles' ground box
+//   misses the view is not drawn: none of its triangles could cover a pixel of it. On
+//   bgt_otterlo_1800m at 1:1,000 (bench:render) a frame drew 8,640 triangles before, 2,701 now.
 // - Lowest z: within a cell the triangles are ordered by their lowest z, so those at or below the
 //   view's highest slice z are a prefix, found from a small table of blocks. A triangle above the
 //   slice everywhere would be discarded pixel by pixel by id.frag, after being rasterized.
