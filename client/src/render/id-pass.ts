@@ -20,8 +20,6 @@ export interface DrawLimits {
   beside: boolean;
 }
 
-const growBy = (b: number[], d: number): number[] => [b[0]! - d, b[1]! - d, b[2]! + d, b[3]! + d];
-
 export class IdPass {
   private readonly program: Program;
   /** For a flat slice: its z a uniform, no texture read per fragment (a tenth of a frame on a software GPU). */
@@ -83,10 +81,9 @@ export class IdPass {
     this.matrix32.set(this.matrix);
     gl.uniformMatrix4fv(p.loc('uMatrix'), false, this.matrix32);
     const uOffset = p.loc('uOffset');
-    // The ground under the targets, with two pixels to spare for the jitter (under one pixel)
-    // and rounding: a chunk's cells wholly outside it cover none of its pixels.
-    const pad = 2 * view.resolution;
-    const ground = limits.beside ? [-Infinity, -Infinity, Infinity, Infinity] : growBy(viewBbox(view), pad);
+    // The ground under the targets, with two pixels to spare on each side for the jitter (under
+    // one pixel) and rounding: a chunk's cells wholly outside it cover none of its pixels.
+    const ground = limits.beside ? [-Infinity, -Infinity, Infinity, Infinity] : viewBbox({ ...view, width: view.width + 4, height: view.height + 4 });
     let triangles = 0;
     for (const c of chunks) {
       gl.uniform2f(uOffset, c.originX - rx, c.originY - ry);
