@@ -232,6 +232,36 @@ describe('lines of the cube (bgt_otterlo_400m)', () => {
     assert.deepEqual(beads.slice(0, 20), [], `${beads.length} pixels darker than one segment makes them (${darkest})`);
   });
 
+  test('with supersampling the lines are painted sharp over the accumulated map: the same pixels as without it', async () => {
+    const { all, cube } = await lines();
+    const meta = cube.index.meta;
+    const z = busiestZ(all, meta.zMax);
+    const bbox = meta.extent;
+    const shots: Rgba[] = [];
+    let hidden: Bbox[] = [];
+    for (const supersampling of [1, 8]) {
+      bed.page = await openMap(bed.browser, bed.server.url, { source: 'cube/', bbox: bbox.join(','), z, supersampling });
+      const page = bed.page.page;
+      assert.equal(await waitIdle(page), true);
+      // A white map: accumulated, it stays white; lines blurred by the jitter would show grey.
+      await blackOnWhite(page);
+      hidden = await covered(page);
+      shots.push(await screenshot(page));
+      await bed.page.close();
+      bed.page = null;
+    }
+    const [one, many] = shots as [Rgba, Rgba];
+    let dark = 0;
+    const unlike: string[] = [];
+    for (let j = 0; j < H; j++) for (let i = 0; i < W; i++) {
+      if (under(hidden, i, j)) continue;
+      if (Math.max(...pixel(one, i, j)) < 128) dark++;
+      if (diff(pixel(one, i, j), pixel(many, i, j)) > 2) unlike.push(`(${i}, ${j}): ${pixel(one, i, j).join(' ')} and ${pixel(many, i, j).join(' ')}`);
+    }
+    assert.ok(dark > 1000, `${dark} line pixels`);
+    assert.deepEqual(unlike.slice(0, 20), [], `${unlike.length} pixels unlike with 8 frames of supersampling`);
+  });
+
   test('a click on a line gives the line first, with its class and its feature\'s attributes, then the face under it', async () => {
     const { all, cube } = await lines();
     const meta = cube.index.meta;

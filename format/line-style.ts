@@ -74,6 +74,14 @@ export const LineStyleSchema = v.pipe(
 
 export type LineStyleJson = v.InferOutput<typeof LineStyleSchema>;
 
+/** The most line rules a style may have: the map's line pass keeps a rule's number in 7 bits of a byte (line.frag). */
+export const MAX_LINE_RULES = 127;
+
+/** How many rules the `line` of a class resolves to (lineRules): its defaults, then each of `rules`. */
+export function lineRuleCount(line: LineStyleJson | undefined): number {
+  return line ? 1 + (line.rules?.length ?? 0) : 0;
+}
+
 /** A line rule resolved: everything the drawers need, inherited from the line's defaults. */
 export interface LineRule {
   classIndex: number;
@@ -104,6 +112,7 @@ export interface LinedClass {
 export function lineRules(classes: readonly LinedClass[]): LineRule[] {
   const out: LineRule[] = [];
   classes.forEach((c, classIndex) => {
+    // One rule each, in lineRuleCount's count.
     const l = c.line;
     if (!l) return;
     const base = resolve(classIndex, null, null, l, { width: l.width, color: c.color, casing: null, weight: c.weight });

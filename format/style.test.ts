@@ -6,7 +6,8 @@ import { describe, test } from 'node:test';
 import * as v from 'valibot';
 import { styleFile } from '../testing/paths.js';
 import { describeIssues } from './schema-issues.js';
-import { styleClasses, StyleSchema } from './style.js';
+import { MAX_LINE_RULES } from './line-style.js';
+import { drawnStyle, styleClasses, StyleSchema } from './style.js';
 
 describe('style', () => {
   test('the bundled styles are valid', () => {
@@ -48,6 +49,16 @@ describe('style', () => {
       'compatibility.road.water: must be a number',
       'defaultCompatibility: must be in [0, 1]',
     ]);
+  });
+
+  test('a style with more line rules than the map draws is refused, naming how many it has', () => {
+    const road = (n: number) => ({ color: '#808080', linear: true, line: { width: 1, by: 'kind', rules: Array.from({ length: n }, (_, i) => ({ values: [i], width: 2 })) } });
+    // 1 + 126 rules: the most there may be.
+    const most = v.safeParse(StyleSchema, { classes: { road: road(126) } });
+    assert.ok(most.success && drawnStyle(most.output).lines.length === MAX_LINE_RULES);
+    const over = v.safeParse(StyleSchema, { classes: [{ key: 'road', ...road(126) }, { key: 'rail', ...road(0) }] });
+    assert.ok(!over.success);
+    assert.deepEqual(describeIssues(over.issues), [`classes: has 128 line rules (each class's line and each of its rules), more than the map draws (${MAX_LINE_RULES})`]);
   });
 
   test('no classes at all is refused', () => {

@@ -3,7 +3,7 @@
 // (line-style.ts). One schema for the file a cartographer writes (`ssc generalize --style`)
 // and for the copy stored in the tGAP and in index.json (meta.style), which the map reads.
 import * as v from 'valibot';
-import { lineRules, LineStyleSchema, type LineRule, type LineStyleJson } from './line-style.js';
+import { lineRuleCount, lineRules, LineStyleSchema, MAX_LINE_RULES, type LineRule, type LineStyleJson } from './line-style.js';
 import { PIXEL_SIZE_MM } from './pixel-size.js';
 import { bool, finite, hex, positive, str, unit } from './schema-values.js';
 
@@ -40,7 +40,7 @@ const ClassSchema = v.pipe(v.object(classEntries), linesAreLinear());
 /** In an array the key is given in the class: JSON objects put numeric keys first, arrays keep order. */
 const KeyedClassSchema = v.pipe(v.object({ key: v.union([v.string(), v.number()], 'must be a string or a number'), ...classEntries }), linesAreLinear());
 
-export const StyleSchema = v.object({
+export const StyleSchema = v.pipe(v.object({
   name: v.optional(str(), 'unnamed'),
   classProperty: v.optional(v.nullable(str()), null),
   idProperty: v.optional(v.nullable(str()), null),
@@ -64,7 +64,16 @@ export const StyleSchema = v.object({
   ),
   /** compatibility[loser][neighbour] in [0, 1]: how well the neighbour takes the loser's area. */
   compatibility: v.optional(v.record(v.string(), v.record(v.string(), unit())), {}),
-});
+}), v.forward(
+  v.check((s) => lineRuleTotal(s.classes) <= MAX_LINE_RULES, (issue) => `has ${lineRuleTotal((issue.input as { classes: ClassesJson }).classes)} line rules (each class's line and each of its rules), more than the map draws (${MAX_LINE_RULES})`),
+  ['classes'],
+));
+
+type ClassesJson = Record<string, { line?: LineStyleJson | undefined }> | { line?: LineStyleJson | undefined }[];
+
+function lineRuleTotal(classes: ClassesJson): number {
+  return Object.values(classes).reduce((n, c) => n + lineRuleCount(c.line), 0);
+}
 
 /**
  * A change to one class at run time (the map's setClassStyle): what the map draws and names,

@@ -11,6 +11,7 @@
 // Blending, boundaries and states are compiled in only when a frame draws them (BLENDING,
 // BOUNDARIES, STATES; colour-pass.ts): a software GPU runs an untaken branch's texture reads
 // for every pixel, and these cost more than half of the frame. FLAT: the slice's z is uSliceZ.
+// LINES: the cube's lines painted over the map (a frame drawn straight onto the canvas).
 precision highp float;
 precision highp int;
 precision highp usampler2D;
@@ -38,6 +39,10 @@ uniform vec4 uStateOutline[2]; // rgb, alpha = opacity
 uniform int uStateWidth[2];    // outline inside the face, device pixels; 0: none
 
 out vec4 oColour;
+
+#ifdef LINES
+#include "line-paint.glsl"
+#endif
 
 // Shifts, not division (face-state-texture.ts has a power of two texels a row): on a software
 // GPU integer division costs as much as a texture read.
@@ -133,6 +138,9 @@ void main() {
     // The outline: pixels of the face within its width of another face (or of nothing).
     if (uStateWidth[s] > 0 && nearOtherFace(p, size, ids.x, uStateWidth[s])) colour = mix(colour, uStateOutline[s].rgb, uStateOutline[s].a);
   }
+#endif
+#ifdef LINES
+  colour = withLines(colour, p);
 #endif
   oColour = vec4(colour, 1.0);
 }

@@ -1,9 +1,10 @@
 // Colour pass: the ID targets to colours (colour.frag), accumulated into the colour target
 // with weight 1 / n for the n-th supersampling frame (a running mean), or drawn straight onto
-// the canvas (renderer.ts says when).
+// the canvas (renderer.ts says when), then with the cube's lines painted over it.
 import colourFrag from '../../shaders/colour.frag?raw';
 import fullscreenVert from '../../shaders/fullscreen.vert?raw';
 import { FACE_STATE_SHIFT, type FaceStateTexture } from './face-state-texture.js';
+import { bindDrawnLines, withLinePaint, type DrawnLines } from './line-paint.js';
 import { Program } from './program.js';
 import { withDefines } from './shader-defines.js';
 import type { Rgba } from './style-texture.js';
@@ -57,14 +58,17 @@ export class ColourPass {
   private program(features: string[]): Program {
     const key = features.join(' ');
     let p = this.programs.get(key);
-    if (!p) this.programs.set(key, (p = new Program(this.gl, fullscreenVert, withDefines(colourFrag, features), `colour pass${key ? ` (${key})` : ''}`)));
+    if (!p) this.programs.set(key, (p = new Program(this.gl, fullscreenVert, withLinePaint(withDefines(colourFrag, features)), `colour pass${key ? ` (${key})` : ''}`)));
     return p;
   }
 
-  /** Into the colour target, or with `toCanvas` onto the canvas (weight 1 only). */
-  draw(targets: Targets, c: ColourParams, toCanvas = false): void {
+  /** Into the colour target, or with `toCanvas` onto the canvas (weight 1 only) with `lines` over it. */
+  draw(targets: Targets, c: ColourParams, toCanvas = false, lines: DrawnLines | null = null): void {
     const gl = this.gl;
     const features: string[] = [];
+    // Lines are not accumulated: they go over the canvas only, sharp.
+    const drawnLines = toCanvas ? lines : null;
+    if (drawnLines) features.push('LINES');
     if (c.blendDistance > 0) features.push('BLENDING');
     if (c.boundaryBefore + c.boundaryAfter > 0) features.push('BOUNDARIES');
     if (c.anyState) features.push('STATES');
@@ -81,6 +85,7 @@ export class ColourPass {
     bind(2, targets.surface, 'uSurface');
     bind(3, c.style, 'uStyle');
     bind(4, c.faceState.texture, 'uFaceState');
+    if (drawnLines) bindDrawnLines(gl, p, drawnLines, 5);
     gl.uniform1ui(p.loc('uFaceCount'), c.faceState.faceCount);
     gl.uniform1ui(p.loc('uFaceStateShift'), FACE_STATE_SHIFT);
     gl.uniform1i(p.loc('uClassCount'), c.classCount);
@@ -109,7 +114,7 @@ export class ColourPass {
     }
     gl.drawArrays(gl.TRIANGLES, 0, 3);
     gl.disable(gl.BLEND);
-    for (let u = 4; u >= 0; u--) {
+    for (let u = drawnLines ? 6 : 4; u >= 0; u--) {
       gl.activeTexture(gl.TEXTURE0 + u);
       gl.bindTexture(gl.TEXTURE_2D, null);
     }

@@ -1,31 +1,41 @@
-// Copies the colour target to the canvas.
+// Copies the colour target to the canvas, with the cube's lines painted over it when given.
 import fullscreenVert from '../../shaders/fullscreen.vert?raw';
 import presentFrag from '../../shaders/present.frag?raw';
+import { bindDrawnLines, withLinePaint, type DrawnLines } from './line-paint.js';
 import { Program } from './program.js';
+import { withDefines } from './shader-defines.js';
 import type { Targets } from './targets.js';
 
 export class PresentPass {
-  private readonly program: Program;
+  private readonly plain: Program;
+  private readonly withLines: Program;
 
   constructor(private readonly gl: WebGL2RenderingContext) {
-    this.program = new Program(gl, fullscreenVert, presentFrag, 'present pass');
+    this.plain = new Program(gl, fullscreenVert, withLinePaint(presentFrag), 'present pass');
+    this.withLines = new Program(gl, fullscreenVert, withLinePaint(withDefines(presentFrag, ['LINES'])), 'present pass (LINES)');
   }
 
-  draw(targets: Targets): void {
+  draw(targets: Targets, lines: DrawnLines | null = null): void {
     const gl = this.gl;
-    this.program.use();
+    const p = lines ? this.withLines : this.plain;
+    p.use();
     gl.activeTexture(gl.TEXTURE0);
     gl.bindTexture(gl.TEXTURE_2D, targets.colour);
-    gl.uniform1i(this.program.loc('uColour'), 0);
+    gl.uniform1i(p.loc('uColour'), 0);
+    if (lines) bindDrawnLines(gl, p, lines, 1);
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
     gl.viewport(0, 0, targets.width, targets.height);
     gl.disable(gl.DEPTH_TEST);
     gl.disable(gl.BLEND);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
-    gl.bindTexture(gl.TEXTURE_2D, null);
+    for (let u = lines ? 2 : 0; u >= 0; u--) {
+      gl.activeTexture(gl.TEXTURE0 + u);
+      gl.bindTexture(gl.TEXTURE_2D, null);
+    }
   }
 
   delete(): void {
-    this.program.delete();
+    this.plain.delete();
+    this.withLines.delete();
   }
 }

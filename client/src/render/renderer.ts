@@ -15,6 +15,7 @@ import type { GpuLineChunk } from './gpu-line-chunk.js';
 import type { IdBuffer } from './id-buffer.js';
 import { IdPass, type DrawLimits } from './id-pass.js';
 import { LinePass } from './line-pass.js';
+import type { DrawnLines } from './line-paint.js';
 import { createLineRuleTexture, drawnLineRules, type LineRule } from './line-rules.js';
 import { lineAt, type LineHit } from '../engine/line-hit.js';
 import { OverlayPass, type OverlayDrawable } from './overlay-pass.js';
@@ -70,6 +71,8 @@ export class Renderer {
   private canvasOnly: FrameParams | null = null;
   private lastChunks: GpuChunk[] = [];
   private lastLineChunks: GpuLineChunk[] = [];
+  /** Whether the line target holds the last frame's lines (painted again by present). */
+  private linesDrawn = false;
   /** The line rules drawn (the texture's contents, for picking). */
   private lineRules: LineRule[] = [];
   private idsJittered = false;
@@ -117,6 +120,7 @@ export class Renderer {
     const targets = new Targets(gl, { floatTargets });
     this.overlaysDrawn = null;
     this.canvasOnly = null;
+    this.linesDrawn = false;
     this.gpu = {
       surface: new SurfacePass(gl),
       id: new IdPass(gl),
@@ -221,12 +225,13 @@ export class Renderer {
     g.surface.draw(g.targets, f.view, f.surface, f.zMax);
     const triangles = g.id.draw(g.targets, f.view, chunks, f.surface, f.zMax, this.drawLimits(f), f.jitter);
     this.idsJittered = f.jitter[0] !== 0 || f.jitter[1] !== 0;
+    const segments = this.drawLines(g, f, lineChunks);
+    const lines = this.paintedLines(g);
     gl.bindVertexArray(g.emptyVao);
     const toCanvas = f.colour.weight >= 1;
-    g.colour.draw(g.targets, this.colourParams(ready, this.style, f), toCanvas);
+    g.colour.draw(g.targets, this.colourParams(ready, this.style, f), toCanvas, lines);
     if (toCanvas) this.canvasOnly = f;
-    else g.present.draw(g.targets);
-    const segments = this.drawLines(g, f, lineChunks);
+    else g.present.draw(g.targets, lines);
     this.drawOverlays(g, f);
     gl.bindVertexArray(null);
     this.lastFrame = f;
@@ -246,19 +251,27 @@ export class Renderer {
     // Nothing drawn since the context came back: the next frame draws everything.
     if (!g || !f || g.targets.width === 0) return;
     const { style, faceState } = g;
+    const lines = this.paintedLines(g);
     if (this.canvasOnly && style && faceState && this.style) {
-      g.colour.draw(g.targets, this.colourParams({ style, faceState }, this.style, this.canvasOnly), true);
-    } else g.present.draw(g.targets);
-    this.drawLines(g, f, this.lastLineChunks.filter((c) => this.store.get(c.file) === c));
+      g.colour.draw(g.targets, this.colourParams({ style, faceState }, this.style, this.canvasOnly), true, lines);
+    } else g.present.draw(g.targets, lines);
     this.drawOverlays(g, f);
   }
 
-  /** The cube's lines over the map just presented; returns the segments submitted. */
+  /** The cube's lines' coverage for frame f (the map is painted over it next); returns the segments submitted. */
   private drawLines(g: Gpu, f: FrameParams, lineChunks: readonly GpuLineChunk[]): number {
+    this.linesDrawn = false;
     if (!g.lineRules || lineChunks.length === 0) return 0;
     // A window of 0.5% of the cube's z either side (a few dozen steps): refilled every few
     // frames of a zoom, a pass over the chunk's segments each time.
-    return g.lines.draw(g.targets, f.view, f.pixelRatio, lineChunks, g.lineRules, f.sliceRange, 0.005 * f.zMax);
+    const drawn = g.lines.draw(g.targets, f.view, f.pixelRatio, lineChunks, g.lineRules, f.sliceRange, 0.005 * f.zMax);
+    this.linesDrawn = drawn.lines !== null;
+    return drawn.segments;
+  }
+
+  /** The last frame's lines, to paint over its map (null: it had none). */
+  private paintedLines(g: Gpu): DrawnLines | null {
+    return this.linesDrawn && g.lineRules ? { cover: g.targets.lineCover, rules: g.lineRules } : null;
   }
 
   /** The overlays over the canvas, drawn again only if the view or the layers changed. */

@@ -2,8 +2,9 @@
 // - ids: RG32UI upper/lower face + RG32UI classes/surface z, with a float depth buffer (MRT);
 // - surface: R32F slicing surface z;
 // - colour: the accumulated (supersampled) colour (a frame of weight 1 goes to the canvas only, renderer.ts);
-// - coverage: scratch RGBA8, the cube's lines' coverage (line-pass.ts, with its own depth buffer)
-//   and then each overlay layer's (overlay-pass.ts);
+// - lineCover: RGBA8, the cube's lines' coverage (line-pass.ts), kept until the next frame
+//   (the pass putting the map on the canvas paints them, and so does Renderer.present);
+// - coverage: scratch RGBA8, each overlay layer's coverage (overlay-pass.ts);
 // - overlays: every overlay layer painted (premultiplied), in the colour target's format.
 // Integer and float textures are sampled with texelFetch and NEAREST filtering (integer
 // textures read as zero with any other filter).
@@ -52,8 +53,7 @@ export class Targets {
   colourFloat = false;
   coverage!: WebGLTexture;
   coverageFb!: WebGLFramebuffer;
-  lineDepth!: WebGLRenderbuffer;
-  /** The coverage target with lineDepth: the line pass keeps the largest coverage per pixel by depth. */
+  lineCover!: WebGLTexture;
   linesFb!: WebGLFramebuffer;
   overlays!: WebGLTexture;
   overlaysFb!: WebGLFramebuffer;
@@ -85,11 +85,8 @@ export class Targets {
     this.colourFb = framebuffer(gl, [this.colour], null, 'colour');
     this.coverage = texture2d(gl, gl.RGBA8, width, height);
     this.coverageFb = framebuffer(gl, [this.coverage], null, 'overlay coverage');
-    this.lineDepth = gl.createRenderbuffer();
-    gl.bindRenderbuffer(gl.RENDERBUFFER, this.lineDepth);
-    gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT24, width, height);
-    gl.bindRenderbuffer(gl.RENDERBUFFER, null);
-    this.linesFb = framebuffer(gl, [this.coverage], this.lineDepth, 'line coverage');
+    this.lineCover = texture2d(gl, gl.RGBA8, width, height);
+    this.linesFb = framebuffer(gl, [this.lineCover], null, 'line coverage');
     this.overlays = texture2d(gl, this.colourFloat ? gl.RGBA16F : gl.RGBA8, width, height);
     this.overlaysFb = framebuffer(gl, [this.overlays], null, 'overlays');
     this.live = true;
@@ -98,9 +95,8 @@ export class Targets {
   delete(): void {
     if (!this.live) return;
     const gl = this.gl;
-    for (const t of [this.ids, this.aux, this.surface, this.colour, this.coverage, this.overlays]) gl.deleteTexture(t);
+    for (const t of [this.ids, this.aux, this.surface, this.colour, this.coverage, this.lineCover, this.overlays]) gl.deleteTexture(t);
     gl.deleteRenderbuffer(this.depth);
-    gl.deleteRenderbuffer(this.lineDepth);
     for (const f of [this.idFb, this.surfaceFb, this.colourFb, this.coverageFb, this.linesFb, this.overlaysFb]) if (f) gl.deleteFramebuffer(f);
     this.live = false;
   }
