@@ -27,7 +27,7 @@ uniform float uBlendDistance; // c in steps (BLENDING)
 uniform int uBoundaryBefore;  // boundary band: neighbours from -before to +after (device pixels)
 uniform int uBoundaryAfter;   // (BOUNDARIES)
 uniform vec4 uBoundaryColour; // rgb, alpha = opacity
-uniform float uPatternCell;   // pattern period, device pixels
+uniform float uPatternInvCell; // 1 / the pattern's period in device pixels
 uniform float uPatternLine;   // pattern line width / dot radius, device pixels
 uniform vec2 uPatternShift;   // anchors patterns to the ground, device pixels
 uniform usampler2D uFaceState; // R8UI, one texel per face id (rows of 2^uFaceStateShift): bit i, state i
@@ -63,23 +63,19 @@ bool nearOtherFace(ivec2 p, ivec2 size, uint face, int width) {
   return false;
 }
 
-float patternMask(int kind) {
-  vec2 q = gl_FragCoord.xy + uPatternShift;
-  float c = uPatternCell;
-  if (kind == 1 || kind == 3) {
-    if (mod(q.x + q.y, c) < uPatternLine) return 1.0;
-  }
-  if (kind == 3) {
-    if (mod(q.x - q.y, c) < uPatternLine) return 1.0;
-  }
-  if (kind == 2) {
-    vec2 m = mod(q, c) - 0.5 * c;
-    if (dot(m, m) < uPatternLine * uPatternLine) return 1.0;
-  }
-  return 0.0;
+// Every pattern's mask at this pixel, worked out once for both classes a pixel may show
+// (hatch, dots, cross): a software GPU runs a branch's work whether taken or not, so a class
+// without a pattern costs this anyway. In cells (fract, not mod, whose division is dear there).
+vec3 patternMasks() {
+  vec2 q = (gl_FragCoord.xy + uPatternShift) * uPatternInvCell;
+  float w = uPatternLine * uPatternInvCell;
+  float hatch = fract(q.x + q.y) < w ? 1.0 : 0.0;
+  float other = fract(q.x - q.y) < w ? 1.0 : 0.0;
+  vec2 m = fract(q) - 0.5;
+  return vec3(hatch, dot(m, m) < w * w ? 1.0 : 0.0, max(hatch, other));
 }
 
-vec3 classColour(uint cls, float zSlice) {
+vec3 classColour(uint cls, float zSlice, vec3 masks) {
   int i = int(cls);
   if (i >= uClassCount) return uBackground.rgb;
   // The pattern's kind beside the fill: a class without a pattern costs one read.
@@ -88,7 +84,7 @@ vec3 classColour(uint cls, float zSlice) {
   if (kind != 0) {
     vec3 pat = texelFetch(uStyle, ivec2(i, 1), 0).rgb;
     vec2 range = texelFetch(uStyle, ivec2(i, 2), 0).xy;
-    if (zSlice >= range.x && zSlice <= range.y) return mix(fill.rgb, pat, patternMask(kind));
+    if (zSlice >= range.x && zSlice <= range.y) return mix(fill.rgb, pat, masks[kind - 1]);
   }
   return fill.rgb;
 }
@@ -109,11 +105,12 @@ void main() {
 #endif
     uint upperClass = aux.x & 0xffffu;
     uint lowerClass = aux.x >> 16;
-    colour = classColour(upperClass, zSlice);
+    vec3 masks = patternMasks();
+    colour = classColour(upperClass, zSlice, masks);
 #ifdef BLENDING
     if (ids.y != 0u && lowerClass != 0xffffu) {
       float d = zSlice - uintBitsToFloat(aux.y);
-      if (d < uBlendDistance) colour = mix(classColour(lowerClass, zSlice), colour, d / uBlendDistance);
+      if (d < uBlendDistance) colour = mix(classColour(lowerClass, zSlice, masks), colour, d / uBlendDistance);
     }
 #endif
   }

@@ -95,7 +95,7 @@ export class ColourPass {
     gl.uniform1i(p.loc('uBoundaryBefore'), c.boundaryBefore);
     gl.uniform1i(p.loc('uBoundaryAfter'), c.boundaryAfter);
     gl.uniform4fv(p.loc('uBoundaryColour'), c.boundaryColour);
-    gl.uniform1f(p.loc('uPatternCell'), c.patternCell);
+    gl.uniform1f(p.loc('uPatternInvCell'), 1 / c.patternCell);
     gl.uniform1f(p.loc('uPatternLine'), c.patternLine);
     gl.uniform2f(p.loc('uPatternShift'), c.patternShift[0], c.patternShift[1]);
     gl.uniform4fv(p.loc('uStateFill'), c.statePaints.flatMap((s) => s.fill));
