@@ -1,5 +1,5 @@
 #version 300 es
-// Shows the accumulated (supersampled) colour on the canvas; LINES: with the cube's lines
+// Present pass: the accumulated (supersampled) colour on the canvas; LINES: with the cube's lines
 // painted over it, sharp (they are not accumulated).
 precision highp float;
 uniform sampler2D uColour;

@@ -1,6 +1,6 @@
 #version 300 es
-// The slicing surface: z (steps) at the ground point under each pixel, with the definitions of
-// client/src/shared/surfaces.ts. Positions are offsets from the view centre (small numbers);
+// Surface pass: the slicing surface's z (steps) at the ground point under each pixel, with the
+// definitions of client/src/shared/surfaces.ts. Positions are offsets from the view centre (small numbers);
 // everything that involves absolute coordinates was worked out on the CPU in float64
 // (client/src/shared/surface-params.ts), so float32 keeps the precision.
 precision highp float;
