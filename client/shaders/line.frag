@@ -6,6 +6,7 @@
 // width). The width is the rule's times the smaller of the line's and the rule's ramp shares at
 // that z (format/line-ramp.ts, rampShare), so lines grow as they appear and shrink as they go;
 // the segment's ends are where their glides have taken them at that z (format/line-glide.ts).
+// FLAT (a flat slice): one z for every pixel, so line.vert works these out once per segment.
 // Written into the line pass's coverage target with blend MAX, not painted: where segments
 // overlap (a line's joins, crossings) a pixel keeps the largest coverage and is painted once,
 // later (line-paint.glsl). The rule goes beside each coverage with 128 added where it covers
@@ -13,7 +14,7 @@
 // a rule's anti-aliased fringe does not take the pixel from one that covers it whole.
 precision highp float;
 
-uniform sampler2D uSurface;  // R32F: z of the slicing surface per pixel
+uniform sampler2D uSurface;  // R32F: z of the slicing surface per pixel (not FLAT)
 
 flat in vec2 vA;
 flat in vec2 vB;
@@ -29,18 +30,7 @@ in vec2 vP;
 
 out vec4 oCover;  // casing (rule, coverage), fill (rule, coverage), in 255ths
 
-// z0, z0Full, z1Full, z1: 0 at the ends, 1 between the full points, linear in z between.
-float share(vec4 r, float z) {
-  float grow = r.y > r.x ? (z - r.x) / (r.y - r.x) : 1.0;
-  float shrink = r.w > r.z ? (r.w - z) / (r.w - r.z) : 1.0;
-  return clamp(min(grow, shrink), 0.0, 1.0);
-}
-
-// How far along its glide an end is at z, gliding over [from, to]: 0 before it, 1 at its end and after (glideShare).
-float glide(float from, float to, float z) {
-  if (!(to > from)) return z >= to ? 1.0 : 0.0;
-  return clamp((z - from) / (to - from), 0.0, 1.0);
-}
+#include "line-z.glsl"
 
 // (rule as kept, coverage) in 255ths, at distance d from the segment, of a band reaching half_ either side (0: none).
 vec2 cover(float half_, float d) {
@@ -49,17 +39,23 @@ vec2 cover(float half_, float d) {
 }
 
 void main() {
+#ifdef FLAT
+  // line.vert placed the ends and narrowed the line at the slice's one z.
+  vec2 a = vA, b = vB, bands = vHalf;
+#else
   float z = texelFetch(uSurface, ivec2(gl_FragCoord.xy), 0).r;
   if (z < vZ.x || z >= vZ.y) discard;
   float s = min(share(vLineRamp, z), share(vRuleRamp, z));
   if (s <= 0.0) discard;
   vec2 a = mix(vA, vAT, glide(vGlide.x, vGlide.y, z));
   vec2 b = mix(vB, vBT, glide(vGlide.z, vGlide.w, z));
+  vec2 bands = vHalf * s;
+#endif
   vec2 ab = b - a;
   float l2 = dot(ab, ab);
   float t = l2 > 0.0 ? clamp(dot(vP - a, ab) / l2, 0.0, 1.0) : 0.0;
   float d = length(vP - (a + t * ab));
-  vec2 casing = cover(vHalf.x * s, d), fill = cover(vHalf.y * s, d);
+  vec2 casing = cover(bands.x, d), fill = cover(bands.y, d);
   if (casing.y <= 0.0 && fill.y <= 0.0) discard;
   oCover = vec4(casing, fill) / 255.0;
 }

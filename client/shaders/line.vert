@@ -6,7 +6,8 @@
 // z range over the view is moved out of clip space: at a flat slice that is every segment not on the map, so they cost no fragments. The quad is
 // as wide as the line at full width, and long and wide enough to hold its ends wherever their
 // glides take them; line.frag places the ends and narrows the line by the line's and the rule's
-// ramps at the pixel's z (format/line-glide.ts, format/line-ramp.ts).
+// ramps at the pixel's z (format/line-glide.ts, format/line-ramp.ts). FLAT (a flat slice): the
+// ends and the width at the slice's one z are worked out here, and the quad holds just them.
 precision highp float;
 precision highp int;
 
@@ -23,6 +24,7 @@ uniform vec2 uOffset;      // chunk origin - view centre, ground units
 uniform float uRes;        // ground units per device pixel
 uniform vec2 uHalfSize;    // half the target, device pixels
 uniform vec2 uSliceRange;  // the slicing surface's z range over the view
+uniform float uSliceZ;     // FLAT: the slice's one z
 
 flat out vec2 vA;          // the segment's ends, device pixels from the view centre
 flat out vec2 vB;
@@ -35,6 +37,8 @@ flat out vec4 vGlide;
 flat out vec2 vHalf;       // half the casing's and the fill's width, device pixels (0: not drawn)
 flat out float vRule;
 out vec2 vP;               // this point, device pixels from the view centre
+
+#include "line-z.glsl"
 
 void main() {
   int rule = int(aRule);
@@ -55,6 +59,20 @@ void main() {
   vAT = (aTargets.xy + uOffset) / uRes;
   vBT = (aTargets.zw + uOffset) / uRes;
   vGlide = aGlide;
+#ifdef FLAT
+  // One z everywhere: the segment's ends and width there, for every pixel (line.frag).
+  float s = min(share(vLineRamp, uSliceZ), share(vRuleRamp, uSliceZ));
+  if (uSliceZ < vZ.x || uSliceZ >= vZ.y || s <= 0.0) {
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+    return;
+  }
+  vA = mix(vA, vAT, glide(aGlide.x, aGlide.y, uSliceZ));
+  vB = mix(vB, vBT, glide(aGlide.z, aGlide.w, uSliceZ));
+  vAT = vA;
+  vBT = vB;
+  vHalf *= s;
+  band = max(vHalf.x, vHalf.y);
+#endif
   vec2 ab = vB - vA;
   float len = length(ab);
   vec2 t = len > 0.0 ? ab / len : vec2(1.0, 0.0);

@@ -8,33 +8,41 @@
 // one draw of each segment, no depth test, and no full-screen pass of its own.
 import lineFrag from '../../shaders/line.frag?raw';
 import lineVert from '../../shaders/line.vert?raw';
+import lineZ from '../../shaders/line-z.glsl?raw';
 import { PIXEL_SIZE_MM } from '../../../format/pixel-size.js';
 import type { ViewGeometry } from '../geometry/view.js';
 import type { GpuLineChunk } from './gpu-line-chunk.js';
 import type { DrawnLines } from './line-paint.js';
 import { Program } from './program.js';
+import { withDefines } from './shader-defines.js';
+import { withIncludes } from './shader-include.js';
 import type { Targets } from './targets.js';
 
 export class LinePass {
   private readonly program: Program;
+  /** For a flat slice: each segment's ends and width worked out once, in line.vert, and a quad just around them. */
+  private readonly flat: Program;
 
   constructor(private readonly gl: WebGL2RenderingContext) {
-    this.program = new Program(gl, lineVert, lineFrag, 'line pass');
+    const source = (s: string, defines: string[]): string => withIncludes(withDefines(s, defines), { 'line-z.glsl': lineZ });
+    this.program = new Program(gl, source(lineVert, []), source(lineFrag, []), 'line pass');
+    this.flat = new Program(gl, source(lineVert, ['FLAT']), source(lineFrag, ['FLAT']), 'line pass (flat)');
   }
 
   /**
    * The chunks' lines' coverage, `ratio` device px per CSS px (a standard pixel of 0.28 mm is a
-   * CSS pixel); `sliceRange` the slicing surface's z range over the view, and `zWindow` how far
-   * beyond it the chunks keep segments ready (gpu-line-chunk.ts). Returns the segments
-   * submitted, and what to paint (null: no segment at this slice, nothing to paint).
+   * CSS pixel); `sliceRange` the slicing surface's z range over the view, `flatZ` its one z when
+   * it is flat (surface-params.ts flatSliceZ), and `zWindow` how far beyond it the chunks keep
+   * segments ready (gpu-line-chunk.ts). Returns the segments submitted, and what to paint (null:
+   * no segment at this slice, nothing to paint).
    */
-  draw(targets: Targets, view: ViewGeometry, ratio: number, chunks: readonly GpuLineChunk[], rules: WebGLTexture, sliceRange: [number, number], zWindow: number): { segments: number; lines: DrawnLines | null } {
+  draw(targets: Targets, view: ViewGeometry, ratio: number, chunks: readonly GpuLineChunk[], rules: WebGLTexture, sliceRange: [number, number], flatZ: number | null, zWindow: number): { segments: number; lines: DrawnLines | null } {
     const gl = this.gl;
     let segments = 0;
     for (const c of chunks) segments += c.prepare(gl, sliceRange[0], sliceRange[1], zWindow);
     // No segment at this slice (the base scale, where roads are areas): no clear, nothing painted.
     if (segments === 0) return { segments, lines: null };
-    const p = this.program;
+    const p = flatZ === null ? this.program : this.flat;
     p.use();
     gl.bindFramebuffer(gl.FRAMEBUFFER, targets.linesFb);
     gl.viewport(0, 0, targets.width, targets.height);
@@ -52,6 +60,7 @@ export class LinePass {
     gl.uniform1f(p.loc('uRes'), view.resolution);
     gl.uniform2f(p.loc('uHalfSize'), view.width / 2, view.height / 2);
     gl.uniform2f(p.loc('uSliceRange'), sliceRange[0], sliceRange[1]);
+    if (flatZ !== null) gl.uniform1f(p.loc('uSliceZ'), flatZ);
     const uOffset = p.loc('uOffset');
     for (const c of chunks) {
       // The origin's offset in float64, rounded once: positions stay small.
@@ -71,5 +80,6 @@ export class LinePass {
 
   delete(): void {
     this.program.delete();
+    this.flat.delete();
   }
 }

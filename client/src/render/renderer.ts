@@ -264,7 +264,7 @@ export class Renderer {
     if (!g.lineRules || lineChunks.length === 0) return 0;
     // A window of 0.5% of the cube's z either side (a few dozen steps): refilled every few
     // frames of a zoom, a pass over the chunk's segments each time.
-    const drawn = g.lines.draw(g.targets, f.view, f.pixelRatio, lineChunks, g.lineRules, f.sliceRange, 0.005 * f.zMax);
+    const drawn = g.lines.draw(g.targets, f.view, f.pixelRatio, lineChunks, g.lineRules, f.sliceRange, flatSliceZ(f.surface, f.zMax), 0.005 * f.zMax);
     this.linesDrawn = drawn.lines !== null;
     return drawn.segments;
   }
