@@ -4,9 +4,8 @@
 import colourFrag from '../../shaders/colour.frag?raw';
 import fullscreenVert from '../../shaders/fullscreen.vert?raw';
 import { FACE_STATE_SHIFT, type FaceStateTexture } from './face-state-texture.js';
-import { bindDrawnLines, withLinePaint, type DrawnLines } from './line-paint.js';
-import { Program } from './program.js';
-import { withDefines } from './shader-defines.js';
+import { bindDrawnLines, LINE_PAINT_INCLUDE, type DrawnLines } from './line-paint.js';
+import { ProgramVariants } from './program-variants.js';
 import type { Rgba } from './style-texture.js';
 import type { Targets } from './targets.js';
 
@@ -47,19 +46,13 @@ export interface StatePaintParams {
 }
 
 export class ColourPass {
-  /** colour.frag compiled with the features a frame draws, by their names (a few at most). */
-  private readonly programs = new Map<string, Program>();
+  /** colour.frag compiled with the features a frame draws (a few at most). */
+  private readonly programs: ProgramVariants;
 
   constructor(private readonly gl: WebGL2RenderingContext) {
+    this.programs = new ProgramVariants(gl, fullscreenVert, colourFrag, 'colour pass', LINE_PAINT_INCLUDE);
     // The plain variant, compiled now so that a shader error shows at once.
-    this.program([]);
-  }
-
-  private program(features: string[]): Program {
-    const key = features.join(' ');
-    let p = this.programs.get(key);
-    if (!p) this.programs.set(key, (p = new Program(this.gl, fullscreenVert, withLinePaint(withDefines(colourFrag, features)), `colour pass${key ? ` (${key})` : ''}`)));
-    return p;
+    this.programs.get();
   }
 
   /** Into the colour target, or with `toCanvas` onto the canvas (weight 1 only) with `lines` over it. */
@@ -73,7 +66,7 @@ export class ColourPass {
     if (c.boundaryBefore + c.boundaryAfter > 0) features.push('BOUNDARIES');
     if (c.anyState) features.push('STATES');
     if (c.flatZ !== null) features.push('FLAT');
-    const p = this.program(features);
+    const p = this.programs.get(features);
     p.use();
     const bind = (unit: number, tex: WebGLTexture, name: string): void => {
       gl.activeTexture(gl.TEXTURE0 + unit);
@@ -121,7 +114,6 @@ export class ColourPass {
   }
 
   delete(): void {
-    for (const p of this.programs.values()) p.delete();
-    this.programs.clear();
+    this.programs.delete();
   }
 }

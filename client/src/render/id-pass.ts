@@ -7,8 +7,7 @@ import idVert from '../../shaders/id.vert?raw';
 import type { Surface } from '../../../format/slicing-surface.js';
 import { viewBbox, type ViewGeometry } from '../geometry/view.js';
 import type { GpuChunk } from './gpu-chunk.js';
-import { Program } from './program.js';
-import { withDefines } from './shader-defines.js';
+import { ProgramVariants } from './program-variants.js';
 import { flatSliceZ } from './surface-params.js';
 import type { Targets } from './targets.js';
 
@@ -21,9 +20,8 @@ export interface DrawLimits {
 }
 
 export class IdPass {
-  private readonly program: Program;
-  /** For a flat slice: its z a uniform, no texture read per fragment (a tenth of a frame on a software GPU). */
-  private readonly flat: Program;
+  /** FLAT for a flat slice: its z a uniform, no texture read per fragment (a tenth of a frame on a software GPU). */
+  private readonly programs: ProgramVariants;
   // Float64 matrices: the offset of a whole-unit point from the view centre is composed in
   // double precision and only the (small) result is rounded to float32.
   private readonly projection = new Float64Array(16);
@@ -33,8 +31,7 @@ export class IdPass {
   private readonly multiDraw: WEBGL_multi_draw | null;
 
   constructor(private readonly gl: WebGL2RenderingContext) {
-    this.program = new Program(gl, idVert, idFrag, 'id pass');
-    this.flat = new Program(gl, idVert, withDefines(idFrag, ['FLAT']), 'id pass (flat)');
+    this.programs = new ProgramVariants(gl, idVert, idFrag, 'id pass');
     this.multiDraw = gl.getExtension('WEBGL_multi_draw');
   }
 
@@ -46,7 +43,7 @@ export class IdPass {
   draw(targets: Targets, view: ViewGeometry, chunks: Iterable<GpuChunk>, surface: Surface, zMax: number, limits: DrawLimits, jitter: [number, number]): number {
     const gl = this.gl;
     const flat = flatSliceZ(surface, zMax);
-    const p = flat === null ? this.program : this.flat;
+    const p = this.programs.get(flat === null ? [] : ['FLAT']);
     const hw = (view.width * view.resolution) / 2, hh = (view.height * view.resolution) / 2;
     mat4.ortho(this.projection, -hw, hw, -hh, hh, -1, 1);
     // Jitter in pixels -> clip space, applied after the projection.
@@ -96,7 +93,6 @@ export class IdPass {
   }
 
   delete(): void {
-    this.program.delete();
-    this.flat.delete();
+    this.programs.delete();
   }
 }

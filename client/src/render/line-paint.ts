@@ -3,7 +3,6 @@
 // it reads, the line pass's coverage and the line rules.
 import linePaintGlsl from '../../shaders/line-paint.glsl?raw';
 import type { Program } from './program.js';
-import { withIncludes } from './shader-include.js';
 
 /** What the line pass left for this frame: its coverage target and the rules' texture. */
 export interface DrawnLines {
@@ -11,10 +10,8 @@ export interface DrawnLines {
   rules: WebGLTexture;
 }
 
-/** `source` with line-paint.glsl in place of its include. */
-export function withLinePaint(source: string): string {
-  return withIncludes(source, { 'line-paint.glsl': linePaintGlsl });
-}
+/** What a pass that paints them includes (ProgramVariants' includes). */
+export const LINE_PAINT_INCLUDE = { 'line-paint.glsl': linePaintGlsl };
 
 /** Binds the lines' textures to `p` on texture units `unit` and `unit + 1`. */
 export function bindDrawnLines(gl: WebGL2RenderingContext, p: Program, lines: DrawnLines, unit: number): void {

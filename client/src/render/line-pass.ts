@@ -13,20 +13,15 @@ import { PIXEL_SIZE_MM } from '../../../format/pixel-size.js';
 import type { ViewGeometry } from '../geometry/view.js';
 import type { GpuLineChunk } from './gpu-line-chunk.js';
 import type { DrawnLines } from './line-paint.js';
-import { Program } from './program.js';
-import { withDefines } from './shader-defines.js';
-import { withIncludes } from './shader-include.js';
+import { ProgramVariants } from './program-variants.js';
 import type { Targets } from './targets.js';
 
 export class LinePass {
-  private readonly program: Program;
-  /** For a flat slice: each segment's ends and width worked out once, in line.vert, and a quad just around them. */
-  private readonly flat: Program;
+  /** FLAT for a flat slice: each segment's ends and width worked out once, in line.vert, and a quad just around them. */
+  private readonly programs: ProgramVariants;
 
   constructor(private readonly gl: WebGL2RenderingContext) {
-    const source = (s: string, defines: string[]): string => withIncludes(withDefines(s, defines), { 'line-z.glsl': lineZ });
-    this.program = new Program(gl, source(lineVert, []), source(lineFrag, []), 'line pass');
-    this.flat = new Program(gl, source(lineVert, ['FLAT']), source(lineFrag, ['FLAT']), 'line pass (flat)');
+    this.programs = new ProgramVariants(gl, lineVert, lineFrag, 'line pass', { 'line-z.glsl': lineZ });
   }
 
   /**
@@ -42,7 +37,7 @@ export class LinePass {
     for (const c of chunks) segments += c.prepare(gl, sliceRange[0], sliceRange[1], zWindow);
     // No segment at this slice (the base scale, where roads are areas): no clear, nothing painted.
     if (segments === 0) return { segments, lines: null };
-    const p = flatZ === null ? this.program : this.flat;
+    const p = this.programs.get(flatZ === null ? [] : ['FLAT']);
     p.use();
     gl.bindFramebuffer(gl.FRAMEBUFFER, targets.linesFb);
     gl.viewport(0, 0, targets.width, targets.height);
@@ -79,7 +74,6 @@ export class LinePass {
   }
 
   delete(): void {
-    this.program.delete();
-    this.flat.delete();
+    this.programs.delete();
   }
 }

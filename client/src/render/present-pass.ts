@@ -1,23 +1,20 @@
 // Copies the colour target to the canvas, with the cube's lines painted over it when given.
 import fullscreenVert from '../../shaders/fullscreen.vert?raw';
 import presentFrag from '../../shaders/present.frag?raw';
-import { bindDrawnLines, withLinePaint, type DrawnLines } from './line-paint.js';
-import { Program } from './program.js';
-import { withDefines } from './shader-defines.js';
+import { bindDrawnLines, LINE_PAINT_INCLUDE, type DrawnLines } from './line-paint.js';
+import { ProgramVariants } from './program-variants.js';
 import type { Targets } from './targets.js';
 
 export class PresentPass {
-  private readonly plain: Program;
-  private readonly withLines: Program;
+  private readonly programs: ProgramVariants;
 
   constructor(private readonly gl: WebGL2RenderingContext) {
-    this.plain = new Program(gl, fullscreenVert, withLinePaint(presentFrag), 'present pass');
-    this.withLines = new Program(gl, fullscreenVert, withLinePaint(withDefines(presentFrag, ['LINES'])), 'present pass (LINES)');
+    this.programs = new ProgramVariants(gl, fullscreenVert, presentFrag, 'present pass', LINE_PAINT_INCLUDE);
   }
 
   draw(targets: Targets, lines: DrawnLines | null = null): void {
     const gl = this.gl;
-    const p = lines ? this.withLines : this.plain;
+    const p = this.programs.get(lines ? ['LINES'] : []);
     p.use();
     gl.activeTexture(gl.TEXTURE0);
     gl.bindTexture(gl.TEXTURE_2D, targets.colour);
@@ -35,7 +32,6 @@ export class PresentPass {
   }
 
   delete(): void {
-    this.plain.delete();
-    this.withLines.delete();
+    this.programs.delete();
   }
 }
