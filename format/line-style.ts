@@ -112,7 +112,7 @@ export interface LinedClass {
 export function lineRules(classes: readonly LinedClass[]): LineRule[] {
   const out: LineRule[] = [];
   classes.forEach((c, classIndex) => {
-    // One rule each, in lineRuleCount's count.
+    // What this pushes for a class is what lineRuleCount counts: the defaults, then each of `rules`.
     const l = c.line;
     if (!l) return;
     const base = resolve(classIndex, null, null, l, { width: l.width, color: c.color, casing: null, weight: c.weight });

@@ -12,7 +12,6 @@ import lineZ from '../../shaders/line-z.glsl?raw';
 import { PIXEL_SIZE_MM } from '../../../format/pixel-size.js';
 import type { ViewGeometry } from '../geometry/view.js';
 import type { GpuLineChunk } from './gpu-line-chunk.js';
-import type { DrawnLines } from './line-paint.js';
 import { ProgramVariants } from './program-variants.js';
 import type { Targets } from './targets.js';
 
@@ -28,15 +27,15 @@ export class LinePass {
    * The chunks' lines' coverage, `ratio` device px per CSS px (a standard pixel of 0.28 mm is a
    * CSS pixel); `sliceRange` the slicing surface's z range over the view, `flatZ` its one z when
    * it is flat (surface-params.ts flatSliceZ), and `zWindow` how far beyond it the chunks keep
-   * segments ready (gpu-line-chunk.ts). Returns the segments submitted, and what to paint (null:
-   * no segment at this slice, nothing to paint).
+   * segments ready (gpu-line-chunk.ts). Returns the segments submitted (0: the line target was
+   * left as it was, and there is nothing to paint).
    */
-  draw(targets: Targets, view: ViewGeometry, ratio: number, chunks: readonly GpuLineChunk[], rules: WebGLTexture, sliceRange: [number, number], flatZ: number | null, zWindow: number): { segments: number; lines: DrawnLines | null } {
+  draw(targets: Targets, view: ViewGeometry, ratio: number, chunks: readonly GpuLineChunk[], rules: WebGLTexture, sliceRange: [number, number], flatZ: number | null, zWindow: number): number {
     const gl = this.gl;
     let segments = 0;
     for (const c of chunks) segments += c.prepare(gl, sliceRange[0], sliceRange[1], zWindow);
     // No segment at this slice (the base scale, where roads are areas): no clear, nothing painted.
-    if (segments === 0) return { segments, lines: null };
+    if (segments === 0) return 0;
     const p = this.programs.get(flatZ === null ? [] : ['FLAT']);
     p.use();
     gl.bindFramebuffer(gl.FRAMEBUFFER, targets.linesFb);
@@ -70,7 +69,7 @@ export class LinePass {
       gl.activeTexture(gl.TEXTURE0 + u);
       gl.bindTexture(gl.TEXTURE_2D, null);
     }
-    return { segments, lines: { cover: targets.lineCover, rules } };
+    return segments;
   }
 
   delete(): void {

@@ -260,13 +260,11 @@ export class Renderer {
 
   /** The cube's lines' coverage for frame f (the map is painted over it next); returns the segments submitted. */
   private drawLines(g: Gpu, f: FrameParams, lineChunks: readonly GpuLineChunk[]): number {
-    this.linesDrawn = false;
-    if (!g.lineRules || lineChunks.length === 0) return 0;
     // A window of 0.5% of the cube's z either side (a few dozen steps): refilled every few
     // frames of a zoom, a pass over the chunk's segments each time.
-    const drawn = g.lines.draw(g.targets, f.view, f.pixelRatio, lineChunks, g.lineRules, f.sliceRange, flatSliceZ(f.surface, f.zMax), 0.005 * f.zMax);
-    this.linesDrawn = drawn.lines !== null;
-    return drawn.segments;
+    const segments = g.lineRules && lineChunks.length > 0 ? g.lines.draw(g.targets, f.view, f.pixelRatio, lineChunks, g.lineRules, f.sliceRange, flatSliceZ(f.surface, f.zMax), 0.005 * f.zMax) : 0;
+    this.linesDrawn = segments > 0;
+    return segments;
   }
 
   /** The last frame's lines, to paint over its map (null: it had none). */
