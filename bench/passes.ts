@@ -8,14 +8,12 @@
 // line and colour passes by their shaders' names, the clears of the targets, and the rest. Timed alone, passes cannot overlap, so their sum exceeds the frame time; they
 // say which pass to work on, not what a frame costs. Medians over `runs` turns (3) of 10 frames.
 // SwiftShader is a software GPU: the numbers compare versions on one machine, nothing more.
-import { cp, mkdtemp, rm } from 'node:fs/promises';
-import { tmpdir } from 'node:os';
 import path from 'node:path';
 import type { Page } from 'playwright-core';
 import { launchChromium } from '../e2e/helpers/browser.js';
-import { createStaticServer } from '../server/static-server.js';
 import { buildBenchCube } from './bench-cube.js';
-import { benchArgs, datasets, median, root } from './datasets.js';
+import { withClientSite } from './client-site.js';
+import { benchArgs, datasets, median } from './datasets.js';
 import { printTable } from './table.js';
 
 const WIDTH = 1280, HEIGHT = 720, FRAMES = 10;
@@ -179,53 +177,43 @@ async function main(): Promise<void> {
   const rows: string[][] = [['dataset', 'scale', 'mode', 'frame ms', ...passNames.map((p) => `${p.replace(' pass', '')} ms`), 'other ms', 'triangles', 'segments']];
   try {
     for (const d of sets) {
-      const dir = await mkdtemp(path.join(tmpdir(), 'ssc-bench-passes-'));
-      try {
+      await withClientSite('ssc-bench-passes-', async ({ dir, url }) => {
         const cube = buildBenchCube(d, path.join(dir, 'cube'));
-        await cp(path.join(root, 'dist/client'), dir, { recursive: true, filter: (src) => !src.includes(`${path.sep}src${path.sep}`) });
         const meta = cube.index.meta;
         const [x0, y0, x1, y1] = meta.extent;
         const centre: [number, number] = [(x0 + x1) / 2, (y0 + y1) / 2];
         const full = (Math.max((x1 - x0) / WIDTH, (y1 - y0) / HEIGHT) * 1000) / meta.pixelSizeMm;
         // Base, a third and two thirds of the way to the full extent (geometric), and the full extent.
         const scales = [0, 1 / 3, 2 / 3, 1].map((t) => meta.baseScale * (full / meta.baseScale) ** t);
-        const server = createStaticServer({ root: dir });
-        await server.listen(0, '127.0.0.1');
-        try {
-          for (const scale of scales) {
-            const context = await browser.newContext({ viewport: { width: WIDTH, height: HEIGHT } });
-            const page = await context.newPage();
-            await page.addInitScript(installPassTimer);
-            await page.goto(`${server.url}index.html?source=cube/&center=${centre.join(',')}&scale=${scale}&supersampling=1`);
-            await page.waitForFunction(() => typeof map !== 'undefined' && map.getMetadata() !== null);
-            await page.evaluate(() => map.whenIdle());
-            const frames = new Map<Mode, number[]>(MODES.map((m) => [m, []]));
-            const passes = new Map<Mode, Record<string, number>[]>(MODES.map((m) => [m, []]));
-            const counts = new Map<Mode, Turn>();
-            for (let r = 0; r < runs; r++) {
-              for (const mode of MODES) {
-                const plain = await turn(page, mode, false);
-                frames.get(mode)!.push(median(plain.frameMs));
-                counts.set(mode, plain);
-                passes.get(mode)!.push(...(await turn(page, mode, true)).passMs);
-              }
-            }
-            await context.close();
+        for (const scale of scales) {
+          const context = await browser.newContext({ viewport: { width: WIDTH, height: HEIGHT } });
+          const page = await context.newPage();
+          await page.addInitScript(installPassTimer);
+          await page.goto(`${url}index.html?source=cube/&center=${centre.join(',')}&scale=${scale}&supersampling=1`);
+          await page.waitForFunction(() => typeof map !== 'undefined' && map.getMetadata() !== null);
+          await page.evaluate(() => map.whenIdle());
+          const frames = new Map<Mode, number[]>(MODES.map((m) => [m, []]));
+          const passes = new Map<Mode, Record<string, number>[]>(MODES.map((m) => [m, []]));
+          const counts = new Map<Mode, Turn>();
+          for (let r = 0; r < runs; r++) {
             for (const mode of MODES) {
-              const per = passes.get(mode)!;
-              const known = passNames.map((p) => median(per.map((f) => f[p] ?? 0)));
-              const other = median(per.map((f) => Object.entries(f).filter(([k]) => !passNames.includes(k)).reduce((s, [, v]) => s + v, 0)));
-              const c = counts.get(mode)!;
-              rows.push([d.name, `1:${Math.round(scale)}`, mode, median(frames.get(mode)!).toFixed(0), ...known.map((v) => v.toFixed(1)), other.toFixed(1), Math.round(c.triangles).toString(), Math.round(c.segments).toString()]);
+              const plain = await turn(page, mode, false);
+              frames.get(mode)!.push(median(plain.frameMs));
+              counts.set(mode, plain);
+              passes.get(mode)!.push(...(await turn(page, mode, true)).passMs);
             }
-            process.stderr.write(`${d.name} 1:${Math.round(scale)} done\n`);
           }
-        } finally {
-          await server.close();
+          await context.close();
+          for (const mode of MODES) {
+            const per = passes.get(mode)!;
+            const known = passNames.map((p) => median(per.map((f) => f[p] ?? 0)));
+            const other = median(per.map((f) => Object.entries(f).filter(([k]) => !passNames.includes(k)).reduce((s, [, v]) => s + v, 0)));
+            const c = counts.get(mode)!;
+            rows.push([d.name, `1:${Math.round(scale)}`, mode, median(frames.get(mode)!).toFixed(0), ...known.map((v) => v.toFixed(1)), other.toFixed(1), Math.round(c.triangles).toString(), Math.round(c.segments).toString()]);
+          }
+          process.stderr.write(`${d.name} 1:${Math.round(scale)} done\n`);
         }
-      } finally {
-        await rm(dir, { recursive: true, force: true });
-      }
+      });
     }
   } finally {
     await browser.close();
