@@ -10,10 +10,12 @@
 // supersampling frame; MapLibre: 'idle'), recording the data bytes sent so far (server side),
 // setView-to-complete ms and the triangles drawn. The next frame follows at once, as in a
 // user's zoom: the vario map's redraw once the slice has stopped (blending off) is not waited for.
-// Prints, per dataset, the medians over `runs` runs (3) and their ratio; `csv=<file>` also
+// Prints, per dataset, the medians over `runs` runs (3) and their ratio, the vario map's data
+// bytes by kind of file, and what the session's views need of the surface chunks
+// (triangles-in-view.ts: a floor for the chunk encoding as it is); `csv=<file>` also
 // writes every frame (medians over the runs). SwiftShader is a software GPU: the times compare
 // the two maps on one machine, nothing more.
-import { cp, mkdir, mkdtemp, rm, writeFile } from 'node:fs/promises';
+import { cp, mkdir, mkdtemp, rm, stat, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import type { Browser } from 'playwright-core';
@@ -28,6 +30,7 @@ import { logResponses, type Sent } from './response-log.js';
 import { toMapLibreView, type LngLatView, type ProjectedView } from './scale-zoom.js';
 import { writeSessionPages, type FirstMap, type FrameResult } from './session-pages.js';
 import { printTable } from './table.js';
+import { sessionNeeds } from './triangles-in-view.js';
 import { buildTiles, tippecanoeVersion, TIPPECANOE_MISSING, writeWgs84GeoJson } from './tippecanoe-tiles.js';
 
 const WIDTH = 1280, HEIGHT = 720;
@@ -70,7 +73,20 @@ interface RunResult {
   frames: FrameResult[];
   /** Everything sent that is not data (the page, the library), bytes. */
   codeBytes: number;
+  /** Data bytes for the session, and before the first map, by kind of file (`fileKind`). */
+  byKind: Map<string, number>;
+  byKindBeforeFirst: Map<string, number>;
 }
+
+/** What a cube's file holds, from its name (docs/FORMAT.md, "Cube directory"). */
+const CUBE_FILE_KINDS: [RegExp, string][] = [
+  [/\/c-[^/]*$/, 'surface chunks'],
+  [/\/l-[^/]*$/, 'line chunks'],
+  [/\/(index\.json|i-[^/]*)$/, 'index'],
+  [/\/f-[^/]*$/, 'face tables'],
+  [/\/a-[^/]*$/, 'attributes'],
+];
+const fileKind = (p: string): string => CUBE_FILE_KINDS.find(([re]) => re.test(p.split('?')[0]!))?.[1] ?? 'other';
 
 /** Opens `page` in a fresh context (an empty cache), runs the session, and sums up the server's log. */
 async function runPage(browser: Browser, url: string, views: (ProjectedView | LngLatView)[], log: Sent[], isData: (p: string) => boolean): Promise<RunResult> {
@@ -94,12 +110,19 @@ async function runPage(browser: Browser, url: string, views: (ProjectedView | Ln
     if (problems.length > 0) throw new Error(`${url}: ${problems.join('; ')}`);
     const dataUpTo = (at: number): number => log.reduce((s, r) => s + (r.at <= at && isData(r.path) ? r.bytes : 0), 0);
     const end = frames[frames.length - 1]!.at;
+    const dataByKind = (at: number): Map<string, number> => {
+      const m = new Map<string, number>();
+      for (const r of log) if (r.at <= at && isData(r.path)) m.set(fileKind(r.path), (m.get(fileKind(r.path)) ?? 0) + r.bytes);
+      return m;
+    };
     return {
       firstMs: first.ms,
       bytesBeforeFirst: dataUpTo(first.at),
       bytesSoFar: frames.map((f) => dataUpTo(f.at)),
       frames,
       codeBytes: log.reduce((s, r) => s + (r.at <= end && !isData(r.path) ? r.bytes : 0), 0),
+      byKind: dataByKind(end),
+      byKindBeforeFirst: dataByKind(first.at),
     };
   } finally {
     await context.close();
@@ -136,6 +159,7 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
     for (const f of MAPLIBRE_FILES) await cp(path.join(root, 'node_modules/maplibre-gl/dist', f), path.join(site, 'maplibre', f));
     await writeSessionPages(site, s.start, toLngLat(s.start), { ...style, classProperty }, tiles);
     const gz = await gzipSiblings(site, ['cube', 'tiles']);
+    const needs = await sessionNeeds(cube.dir, [s.start, ...s.frames.map((f) => f.view)].map((v) => ({ scale: v.scale, centre: v.center })), async (f) => (await stat(path.join(cube.dir, `${f}.gz`))).size, WIDTH, HEIGHT);
 
     const server = createStaticServer({ root: site });
     const log = logResponses(server.server);
@@ -199,6 +223,11 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
       rows.push([p, String(idx.length), med(v.ms), med(m.ms), med(v.tri), med(m.tri), (v.bytes[last]! / 1e6).toFixed(2), (m.bytes[last]! / 1e6).toFixed(2)]);
     }
     printTable(rows);
+    const kinds = CUBE_FILE_KINDS.map(([, k]) => k).concat('other');
+    const byKind = (f: (r: RunResult) => Map<string, number>): string =>
+      kinds.map((k) => [k, median(results.vario.map((r) => f(r).get(k) ?? 0))] as const).filter(([, b]) => b > 0).map(([k, b]) => `${k} ${mb(b)}`).join(', ');
+    process.stdout.write(`vario data bytes by kind of file: session ${byKind((r) => r.byKind)}; before the first map ${byKind((r) => r.byKindBeforeFirst)}\n`);
+    process.stdout.write(`surface chunks the session's views query (each once, no margin): ${mb(needs.queriedBytes)}; their share that some view needs: ${mb(needs.neededBytes)}\n`);
     process.stdout.write(`whole dataset, gzip: cube ${mb(gz.get('cube')!)}, tiles (z${tiles.minZoom}-${tiles.maxZoom}) ${mb(gz.get('tiles')!)}, ratio ${ratio(gz.get('cube')!, gz.get('tiles')!)}\n`);
     process.stdout.write(`tiles: ${tiles.command}\n`);
     for (let i = 0; i < n; i++) {

@@ -7,6 +7,8 @@
 // reference slicer, counting per pixel every triangle over its centre at or below the slice,
 // which the GPU's ID pass shades and keeps (it discards only what lies above the slice), per
 // pixel with a face. One fragment per pixel is the floor.
+// sessionNeeds takes the union over the views of a session: the bytes of the chunks they query,
+// and of the share of each chunk's triangles some view needs (bench:session).
 import { readFile } from 'node:fs/promises';
 import path from 'node:path';
 import { decodeFacePage, faceRecord } from '../format/face-page.js';
@@ -14,6 +16,7 @@ import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
 import { zAtScale } from '../format/scale.js';
 import { CpuSlicer, sliceChunk } from '../preprocess/ssc/cpu-slicer.js';
 import { CubeReader } from '../preprocess/ssc/read-cube.js';
+import type { ChunkData } from '../format/chunk.js';
 
 export interface ViewNeeds {
   /** Triangles the view needs. */
@@ -29,6 +32,35 @@ export type TrianglesInView = (scale: number, centre: [number, number], width?: 
 export async function trianglesInView(cubeDir: string): Promise<TrianglesInView> {
   const cube = await CubeReader.open(cubeDir);
   const meta = cube.index.meta;
+  const endOf = await faceEnds(cube, cubeDir);
+  return async (scale, centre, width = 1280, height = 720) => {
+    const z = zAtScale(meta, scale);
+    const [x0, y0, x1, y1] = viewBox(scale, centre, width, height);
+    let n = 0;
+    const sl = new CpuSlicer({ width, height, bbox: [x0, y0, x1, y1] }, () => z, true);
+    for (const leaf of await cube.query({ ground: [x0, y0, x1, y1], zMin: z, zMax: z })) {
+      const c = await cube.chunk(leaf);
+      sliceChunk(sl, c);
+      n += neededTriangles(c, z, [x0, y0, x1, y1], endOf).length;
+    }
+    let fragments = 0, covered = 0;
+    sl.fragments!.forEach((f, p) => {
+      fragments += f;
+      if (sl.ids[p] !== 0) covered++;
+    });
+    return { triangles: n, fragmentsPerPixel: covered === 0 ? 0 : fragments / covered };
+  };
+}
+
+/** The ground box of a `width` x `height` px view at 1:scale centred on `centre`. */
+function viewBox(scale: number, centre: [number, number], width: number, height: number): [number, number, number, number] {
+  const res = (scale * PIXEL_SIZE_MM) / 1000;
+  return [centre[0] - (width / 2) * res, centre[1] - (height / 2) * res, centre[0] + (width / 2) * res, centre[1] + (height / 2) * res];
+}
+
+/** Each face's end (its stepHigh, at or just above its true end), read from the cube's face pages once. */
+async function faceEnds(cube: CubeReader, cubeDir: string): Promise<(face: number) => number> {
+  const meta = cube.index.meta;
   const pages = await Promise.all(meta.faces.pages.map(async (p) => {
     const b = await readFile(path.join(cubeDir, p.file));
     return decodeFacePage(b.buffer.slice(b.byteOffset, b.byteOffset + b.byteLength));
@@ -42,29 +74,55 @@ export async function trianglesInView(cubeDir: string): Promise<TrianglesInView>
     }
     return e;
   };
-  return async (scale, centre, width = 1280, height = 720) => {
-    const z = zAtScale(meta, scale);
-    const res = (scale * PIXEL_SIZE_MM) / 1000;
-    const [x0, y0, x1, y1] = [centre[0] - (width / 2) * res, centre[1] - (height / 2) * res, centre[0] + (width / 2) * res, centre[1] + (height / 2) * res];
-    let n = 0;
-    const sl = new CpuSlicer({ width, height, bbox: [x0, y0, x1, y1] }, () => z, true);
-    for (const leaf of await cube.query({ ground: [x0, y0, x1, y1], zMin: z, zMax: z })) {
+  return endOf;
+}
+
+/** The triangles of chunk `c` a slice at `z` needs within the ground box `box`, by index. */
+function neededTriangles(c: ChunkData, z: number, box: [number, number, number, number], endOf: (face: number) => number): number[] {
+  const [x0, y0, x1, y1] = box;
+  const P = c.positions, I = c.indices;
+  const out: number[] = [];
+  for (let t = 0; t < c.triangleCount; t++) {
+    const a = I[3 * t]!, b = I[3 * t + 1]!, d = I[3 * t + 2]!;
+    if (Math.min(P[3 * a + 2]!, P[3 * b + 2]!, P[3 * d + 2]!) > z || endOf(c.upper[a]!) <= z) continue;
+    const tx0 = c.originX + Math.min(P[3 * a]!, P[3 * b]!, P[3 * d]!), tx1 = c.originX + Math.max(P[3 * a]!, P[3 * b]!, P[3 * d]!);
+    const ty0 = c.originY + Math.min(P[3 * a + 1]!, P[3 * b + 1]!, P[3 * d + 1]!), ty1 = c.originY + Math.max(P[3 * a + 1]!, P[3 * b + 1]!, P[3 * d + 1]!);
+    if (tx1 >= x0 && tx0 <= x1 && ty1 >= y0 && ty0 <= y1) out.push(t);
+  }
+  return out;
+}
+
+export interface SessionNeeds {
+  /** Bytes of the chunks some view of the session queries (each once). */
+  queriedBytes: number;
+  /** Those chunks' bytes in proportion to the triangles some view needs of each: a floor for this encoding. */
+  neededBytes: number;
+}
+
+/**
+ * What a session of `views` (1:scale, centre) needs of the cube in `cubeDir`, in bytes of each
+ * chunk's file as `bytesOf` weighs it (e.g. its gzip copy): the chunks the views query, and the
+ * share of each that some view needs (the triangles counted by `trianglesInView`).
+ */
+export async function sessionNeeds(cubeDir: string, views: { scale: number; centre: [number, number] }[], bytesOf: (file: string) => Promise<number>, width = 1280, height = 720): Promise<SessionNeeds> {
+  const cube = await CubeReader.open(cubeDir);
+  const endOf = await faceEnds(cube, cubeDir);
+  const needed = new Map<string, { triangles: number; used: Set<number> }>();
+  for (const v of views) {
+    const z = zAtScale(cube.index.meta, v.scale);
+    const box = viewBox(v.scale, v.centre, width, height);
+    for (const leaf of await cube.query({ ground: box, zMin: z, zMax: z })) {
       const c = await cube.chunk(leaf);
-      sliceChunk(sl, c);
-      const P = c.positions, I = c.indices;
-      for (let t = 0; t < c.triangleCount; t++) {
-        const a = I[3 * t]!, b = I[3 * t + 1]!, d = I[3 * t + 2]!;
-        if (Math.min(P[3 * a + 2]!, P[3 * b + 2]!, P[3 * d + 2]!) > z || endOf(c.upper[a]!) <= z) continue;
-        const tx0 = c.originX + Math.min(P[3 * a]!, P[3 * b]!, P[3 * d]!), tx1 = c.originX + Math.max(P[3 * a]!, P[3 * b]!, P[3 * d]!);
-        const ty0 = c.originY + Math.min(P[3 * a + 1]!, P[3 * b + 1]!, P[3 * d + 1]!), ty1 = c.originY + Math.max(P[3 * a + 1]!, P[3 * b + 1]!, P[3 * d + 1]!);
-        if (tx1 >= x0 && tx0 <= x1 && ty1 >= y0 && ty0 <= y1) n++;
-      }
+      let e = needed.get(leaf.file);
+      if (!e) needed.set(leaf.file, (e = { triangles: c.triangleCount, used: new Set() }));
+      for (const t of neededTriangles(c, z, box, endOf)) e.used.add(t);
     }
-    let fragments = 0, covered = 0;
-    sl.fragments!.forEach((f, p) => {
-      fragments += f;
-      if (sl.ids[p] !== 0) covered++;
-    });
-    return { triangles: n, fragmentsPerPixel: covered === 0 ? 0 : fragments / covered };
-  };
+  }
+  let queriedBytes = 0, neededBytes = 0;
+  for (const [file, e] of needed) {
+    const b = await bytesOf(file);
+    queriedBytes += b;
+    neededBytes += (b * e.used.size) / e.triangles;
+  }
+  return { queriedBytes, neededBytes };
 }
