@@ -264,6 +264,8 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     const newOnes = late(a);
     const p = await open(a, z);
     assert.equal(await waitIdle(p.page), true);
+    // The margin comes once the view has rested (sourceOptions.marginRestMs), after 'idle'.
+    await p.page.waitForFunction((files) => files.every((f) => engine.chunkStatuses().get(f) === 'gpu'), needed(a, z).all.map((l) => l.file));
     type Ev = { type: string; frame: number; loaded?: boolean; late?: (string | undefined)[]; drew?: { frame: number; chunks: number } };
     const events = async (): Promise<Ev[]> => p.page.evaluate(() => (globalThis as unknown as { evs: Ev[] }).evs.splice(0));
     await p.page.evaluate((late) => {

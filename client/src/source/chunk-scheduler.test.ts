@@ -1,6 +1,6 @@
 // The chunk scheduler over a fake server and hand-made cubes of real chunks: how many requests
 // are in flight, which chunk goes first (nearest the view centre, on-screen before margin, the
-// views ahead last and in their order), what happens to chunks the view no longer needs
+// views ahead last and in their order; the margin once the view has rested), what happens to chunks the view no longer needs
 // (queued ones never fetched, a request in flight aborted), and the status and error messages
 // the map gets for each chunk (received, on the GPU, evicted and fetched again, failed).
 import assert from 'node:assert/strict';
@@ -53,7 +53,7 @@ interface Harness {
 async function harness(t: TestContext, files: Map<string, Uint8Array>, options: Partial<SourceOptions>, answer?: (url: string, n: number) => Answer): Promise<Harness> {
   const serve = serveFiles(BASE, files);
   const fetch = installFakeFetch(t, (url, n) => (url.endsWith('index.json') ? serve(url) : (answer ?? serve)(url, n)));
-  const opts: SourceOptions = { concurrency: 4, retries: 0, backoffMs: 0, maxBackoffMs: 0, ...options };
+  const opts: SourceOptions = { concurrency: 4, retries: 0, backoffMs: 0, maxBackoffMs: 0, marginRestMs: 0, ...options };
   const tree = await IndexTree.load(`${BASE}index.json`, opts);
   const posted: FromWorker[] = [];
   const scheduler = new ChunkScheduler(tree, opts, (msg) => posted.push(msg));
@@ -131,6 +131,24 @@ describe('the chunk scheduler', () => {
     assert.deepEqual(n.margin, ['c-margin.bin']);
     assert.deepEqual(n.ahead, ['c-ahead-far.bin', 'c-ahead-near.bin']);
     assert.equal(n.indexComplete, true);
+  });
+
+  test('the margin waits until the view has rested: a new view before then starts the wait again', async (t) => {
+    const rest = 200;
+    const h = await harness(t, handMadeCube(row(4)).files, { concurrency: 4, marginRestMs: rest });
+    // On screen: c-0 (x 0..9.5); the margin (to x 29) holds c-1, c-2.
+    h.scheduler.setView(view(1, 0, 9.5, { centerX: 5, margin: [0, 29] }));
+    await eventually(() => h.received().length === 1, 'the chunk on screen');
+    await new Promise((r) => setTimeout(r, rest / 2));
+    assert.deepEqual(h.fetched(), ['c-0.bin'], 'the view has not rested yet');
+    // The view moves a little (a new view, the same chunks): the rest starts again.
+    const moved = performance.now();
+    h.scheduler.setView(view(2, 0.5, 9.5, { centerX: 5.5, margin: [0, 29] }));
+    await new Promise((r) => setTimeout(r, (3 * rest) / 4));
+    assert.deepEqual(h.fetched(), ['c-0.bin'], 'rested since the first view, not since the second');
+    await eventually(() => h.fetched().length === 3, 'the margin requested');
+    assert.ok(performance.now() - moved >= rest - 1, 'not before the second view has rested');
+    assert.deepEqual(h.fetched().slice(1), ['c-1.bin', 'c-2.bin']);
   });
 
   test('the margin waits until every chunk on screen has come, even with requests to spare; a flight\'s path does not wait', async (t) => {

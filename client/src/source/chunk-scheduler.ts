@@ -5,8 +5,11 @@
 // - the nearest to the view centre and base z go first, the on-screen ones before the margin,
 //   then those of the views ahead (a flight's path), in the order they will be shown;
 // - the margin waits until every on-screen chunk has come (or failed): on a slow link it would
-//   share its bandwidth and hold back the complete map. The views ahead do not wait: during a
-//   flight some on-screen chunk is nearly always coming, and the path must be fetched ahead.
+//   share its bandwidth and hold back the complete map. It also waits until the view has rested
+//   (`marginRestMs`): during a zoom or a pan each view's margin is soon left behind, and
+//   fetching it only costs data (bench:session, bgt_otterlo_1800m: 2.18 -> 1.90 MB). The views
+//   ahead do not wait: during a flight some on-screen chunk is nearly always coming, and the
+//   path must be fetched ahead.
 import type { ChunkLeaf, LineChunkLeaf } from '../../../format/cube-index.js';
 import { boxMeets, chunkPriority, queryLineChunks, type QueryBox } from '../../../format/index-query.js';
 import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
@@ -40,6 +43,9 @@ export class ChunkScheduler {
   private needed = new Set<string>();
   private inFlight = 0;
   private view: ViewRequest | null = null;
+  /** When the view last changed (performance.now()), and the timer that starts the margin once it has rested. */
+  private viewSince = 0;
+  private restTimer: ReturnType<typeof setTimeout> | null = null;
 
   constructor(
     private readonly tree: IndexTree,
@@ -48,6 +54,8 @@ export class ChunkScheduler {
   ) {}
 
   setView(view: ViewRequest): void {
+    // The same view again (its sub-index files came in) has not moved.
+    if (this.view?.seq !== view.seq) this.viewSince = performance.now();
     this.view = view;
     const t0 = performance.now();
     const q = { ground: view.margin, zMin: view.zMin, zMax: view.zMax };
@@ -143,10 +151,21 @@ export class ChunkScheduler {
       if (e.priority < MARGIN_TIER && (toStart || e.status === 'requested')) onScreenComing = true;
     }
     waiting.sort((a, b) => a.priority - b.priority);
+    const restLeft = this.viewSince + this.opts.marginRestMs - performance.now();
+    let marginWaits = false;
     for (const e of waiting) {
       if (this.inFlight >= this.opts.concurrency) break;
-      if (onScreenComing && e.priority >= MARGIN_TIER && e.priority < AHEAD_TIER) continue;
+      if (e.priority >= MARGIN_TIER && e.priority < AHEAD_TIER && (onScreenComing || restLeft > 0)) {
+        marginWaits = true;
+        continue;
+      }
       this.start(e);
+    }
+    if (marginWaits && !onScreenComing && restLeft > 0 && this.restTimer === null) {
+      this.restTimer = setTimeout(() => {
+        this.restTimer = null;
+        this.pump();
+      }, restLeft);
     }
   }
 

@@ -16,7 +16,7 @@ export interface ChunkSourceEvents {
   failed: SourceErrorInfo;
 }
 
-export const defaultSourceOptions: SourceOptions = { concurrency: 6, retries: 5, backoffMs: 250, maxBackoffMs: 4000 };
+export const defaultSourceOptions: SourceOptions = { concurrency: 6, retries: 5, backoffMs: 250, maxBackoffMs: 4000, marginRestMs: 300 };
 
 export class ChunkSource extends Evented<ChunkSourceEvents> {
   readonly url: string;

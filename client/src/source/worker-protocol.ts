@@ -12,6 +12,11 @@ export interface SourceOptions {
   retries: number;
   backoffMs: number;
   maxBackoffMs: number;
+  /**
+   * The prefetch margin is fetched once the view has rested this long (ms): during a zoom or a
+   * pan each view's margin is soon left behind, and would only take bandwidth and data.
+   */
+  marginRestMs: number;
 }
 
 export interface ViewRequest {
