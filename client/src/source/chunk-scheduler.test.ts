@@ -1,8 +1,9 @@
 // The chunk scheduler over a fake server and hand-made cubes of real chunks: how many requests
 // are in flight, which chunk goes first (nearest the view centre, on-screen before margin, the
-// views ahead last and in their order; the margin once the view has rested), what happens to chunks the view no longer needs
-// (queued ones never fetched, a request in flight aborted), and the status and error messages
-// the map gets for each chunk (received, on the GPU, evicted and fetched again, failed).
+// views ahead last and in their order; the margin once the view has rested), what happens to
+// chunks the view no longer needs (queued ones never fetched, a request in flight aborted), and
+// the status and error messages the map gets for each chunk (received, on the GPU, evicted and
+// fetched again, failed).
 import assert from 'node:assert/strict';
 import { describe, test, type TestContext } from 'node:test';
 import type { Box3 } from '../../../format/cube-index.js';
@@ -134,7 +135,8 @@ describe('the chunk scheduler', () => {
   });
 
   test('the margin waits until the view has rested: a new view before then starts the wait again', async (t) => {
-    const rest = 200;
+    // Long enough that a timer firing late on a busy machine does not reach the next step.
+    const rest = 800;
     const h = await harness(t, handMadeCube(row(4)).files, { concurrency: 4, marginRestMs: rest });
     // On screen: c-0 (x 0..9.5); the margin (to x 29) holds c-1, c-2.
     h.scheduler.setView(view(1, 0, 9.5, { centerX: 5, margin: [0, 29] }));
