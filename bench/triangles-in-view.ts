@@ -107,22 +107,22 @@ export interface SessionNeeds {
 export async function sessionNeeds(cubeDir: string, views: { scale: number; centre: [number, number] }[], bytesOf: (file: string) => Promise<number>, width = 1280, height = 720): Promise<SessionNeeds> {
   const cube = await CubeReader.open(cubeDir);
   const endOf = await faceEnds(cube, cubeDir);
-  const needed = new Map<string, { triangles: number; used: Set<number> }>();
+  // Each chunk read and decoded once, however many views query it.
+  const needed = new Map<string, { chunk: ChunkData; used: Set<number> }>();
   for (const v of views) {
     const z = zAtScale(cube.index.meta, v.scale);
     const box = viewBox(v.scale, v.centre, width, height);
     for (const leaf of await cube.query({ ground: box, zMin: z, zMax: z })) {
-      const c = await cube.chunk(leaf);
       let e = needed.get(leaf.file);
-      if (!e) needed.set(leaf.file, (e = { triangles: c.triangleCount, used: new Set() }));
-      for (const t of neededTriangles(c, z, box, endOf)) e.used.add(t);
+      if (!e) needed.set(leaf.file, (e = { chunk: await cube.chunk(leaf), used: new Set() }));
+      for (const t of neededTriangles(e.chunk, z, box, endOf)) e.used.add(t);
     }
   }
   let queriedBytes = 0, neededBytes = 0;
   for (const [file, e] of needed) {
     const b = await bytesOf(file);
     queriedBytes += b;
-    neededBytes += (b * e.used.size) / e.triangles;
+    neededBytes += (b * e.used.size) / e.chunk.triangleCount;
   }
   return { queriedBytes, neededBytes };
 }
