@@ -381,7 +381,7 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
     for (const m of picks) {
       // This merge's triangles: upper the winner, lower the loser.
       // This merge's ramp (the loser's area at the merge), as the build names it; its upper face
-      // is the winner, or the id the winner had before a re-emit during the transition.
+      // is the winner (its id at the merge, also below a re-emit during the transition).
       const mine = Array.from({ length: m.end - m.first }, (_, k) => m.first + k);
       // Below it lies the loser, or a face held back in its area (a cascade that would have sent
       // that face's area back to its class), which this merge carries on.

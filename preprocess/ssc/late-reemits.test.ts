@@ -39,7 +39,8 @@ test('bgt_otterlo_400m: skipping late re-emits changes no state of the map, only
   assert.ok(compared >= 40);
 
   // What it is for: a face that ends soon after a re-emit may start its transition before it.
-  const { transitions, tgap: cube } = buildSurfaces(tgap, { smooth: true });
+  const built = buildSurfaces(tgap, { smooth: true });
+  const { transitions, tgap: cube } = built;
   assert.equal(cube.faces.length, out.faces.length);
   const reemitZ = new Map<number, number>();
   for (const g of gone) reemitZ.set(root(g), Math.max(reemitZ.get(root(g)) ?? -Infinity, faceStartZ(tgap.faces[g]!)));
@@ -47,6 +48,23 @@ test('bgt_otterlo_400m: skipping late re-emits changes no state of the map, only
   const earlier = concerned.filter((m) => m.zStart < reemitZ.get(m.loser)!);
   t.diagnostic(`${concerned.length} merges of faces re-emitted within reach; ${earlier.length} start before that re-emit`);
   assert.ok(concerned.length > 0 && earlier.length >= 0.5 * concerned.length, `${earlier.length} of ${concerned.length}`);
+
+  // A merge into a kept new id may start before its re-emit: its ramp names the new id
+  // throughout, and the id's record in the cube starts at the state where it first shows.
+  const s = built.surfaces;
+  const across = built.transitions.filter((m) => !m.held && m.zStart < faceStartZ(tgap.faces[m.into]!));
+  let below = 0;
+  for (const m of across) {
+    assert.ok(!gone.has(m.into), `merge of ${m.loser} into ${m.into}: its re-emit is kept`);
+    for (let i = m.first; i < m.end; i++) {
+      assert.equal(s.upper[i], m.shownAs ?? m.into, `merge of ${m.loser}: triangle ${i}'s upper face`);
+      if (s.zMin[i]! >= faceStartZ(tgap.faces[m.into]!)) continue;
+      below++;
+      assert.ok(faceStartZ(cube.faces[s.upper[i]!]!) <= s.zMin[i]!, `merge of ${m.loser}: face ${s.upper[i]} is alive at z ${s.zMin[i]}`);
+    }
+  }
+  t.diagnostic(`${across.length} merges start before their winner's re-emit, ${below} triangles below it`);
+  assert.ok(across.length > 10 && below > across.length, `${across.length} merges, ${below} triangles`);
 });
 
 test('a re-emit of a face that lives to the top, or ends beyond reach, is kept', () => {
@@ -70,6 +88,14 @@ test('a re-emit of a face that lives to the top, or ends beyond reach, is kept',
   assert.equal(skip.tgap.faces[2]!.stepLow, skip.tgap.faces[2]!.stepHigh, 'the new id is never shown');
   // It may reach back only to z 5: after the re-emit, which stays.
   assert.equal(skipLateReemits(t, () => 5).skipped, 0);
+  // A merge into the new id (of 4 at step 9) that may reach back to z 2, across the re-emit:
+  // its ramp names the new id throughout, so the re-emit stays.
+  const into: Tgap = {
+    ...t,
+    faces: [...faces.map((f, i) => (i === 2 ? { ...f, stepHigh: 11, mergedInto: -1 } : f)), { classIndex: 1, feature: 2, stepLow: 0, stepHigh: 9, mergedInto: 2, endPhase: 0, area2: 1 }],
+    events: [t.events[0]!, { kind: EventKind.Merge, step: 9, loser: 4, into: 2 }],
+  };
+  assert.equal(skipLateReemits(into, () => 2).skipped, 0);
   // Living to the top: nothing to reach back from.
   faces[2] = { ...faces[2]!, stepHigh: 11, mergedInto: -1 };
   assert.equal(skipLateReemits({ ...t, events: t.events.slice(0, 1) }, () => 0).skipped, 0);

@@ -5,9 +5,9 @@
 // transition could start no earlier than the re-emit and was squeezed into the steps between.
 // On bgt_otterlo_1800m such transitions held three quarters of the merged area. When the face
 // ends within a transition's reach of its re-emit, it keeps its old id until it ends instead.
-// So it does when a merge into the new id reaches back across the re-emit: the merge's ramp
-// would have to be cut at the re-emit's z and the part taken by then drawn again.
-import { EventKind, faceEndZ, faceStartZ, phaseZ, REEMIT_PHASE, type Tgap, type TgapFace } from '../../format/tgap-model.js';
+// A merge into the new id may reach back across the re-emit: its ramp names the new id
+// throughout (surfaces.ts), so that re-emit stays.
+import { EventKind, faceEndZ, faceStartZ, REEMIT_PHASE, type Tgap, type TgapFace } from '../../format/tgap-model.js';
 
 /**
  * The tGAP with those re-emits taken out: the replaced face lives on until the new one would
@@ -22,9 +22,6 @@ export function skipLateReemits(t: Tgap, earliest: (z: number) => number, also: 
   const replacedBy = (f: TgapFace): number => (f.endPhase === REEMIT_PHASE && f.mergedInto > 0 ? f.mergedInto : -1);
   const alias = Int32Array.from({ length: faces.length }, (_, i) => i);
   let skipped = 0;
-  // Per face, the earliest start of a transition of a merge into it.
-  const intoReach = new Float64Array(faces.length).fill(Infinity);
-  for (const e of events) if (e.kind === EventKind.Merge) intoReach[e.into] = Math.min(intoReach[e.into]!, earliest(phaseZ(e.step, 0)));
   for (const e of events) {
     if (e.kind !== EventKind.Reemit) continue;
     // The face's last id: where its area finally merges, is split or lives to the top.
@@ -32,7 +29,7 @@ export function skipLateReemits(t: Tgap, earliest: (z: number) => number, also: 
     while (replacedBy(faces[last]!) > 0) last = replacedBy(faces[last]!);
     const end = faceEndZ(faces[last]!, steps);
     const start = faceStartZ(faces[e.into]!);
-    if ((end === Infinity || earliest(end) >= start) && !(intoReach[e.into]! < start) && !also.has(e.into)) continue;
+    if ((end === Infinity || earliest(end) >= start) && !also.has(e.into)) continue;
     alias[e.into] = alias[e.loser]!;
     skipped++;
   }

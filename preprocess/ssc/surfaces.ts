@@ -25,7 +25,6 @@ import { removalHeights } from './removal-heights.js';
 import { SurfacesByFace } from './surfaces-by-face.js';
 import { triangulateFace, type FaceEdge, type TriangulateStats } from './triangulate-face.js';
 import { ZoomTime } from './zoom-time.js';
-import { cutAtLevels } from './level-cuts.js';
 import { AreaIndex } from './area-index.js';
 import { meshPieces } from './mesh-pieces.js';
 
@@ -188,7 +187,7 @@ export type OriginKind = 'floor' | 'merge' | 'split' | 'simplify' | 'reemit';
 
 /**
  * Triangles first..end (not including end) of the surfaces came from one event of `step`:
- * a merge (with the copies at the winner's re-emits), one receiving face's part of a split,
+ * a merge, one receiving face's part of a split,
  * the removals of one edge version, a re-emit, or one face's floor. `face`: the loser (the
  * lower face of a removal), `into`: the winner (the upper face).
  */
@@ -263,12 +262,6 @@ interface Held {
   until: number;
 }
 
-/** The winner's ids over a transition: members[i] until levels[i], where members[i + 1] takes over. */
-interface WinnerIds {
-  members: number[];
-  levels: number[];
-}
-
 /**
  * A merge's transition: from zStart, the last z at which the loser is whole (half a gap below
  * its tilted surface's lowest vertex, above every older surface there), to zMerge, the merge's
@@ -305,8 +298,8 @@ export interface MergeTransition {
   takers?: number[];
   /**
    * Its ramp's triangles in the surfaces: from `first` up to (not including) `end`; their upper
-   * face is the winner (`shownAs` when set), or the id it had before a re-emit during the
-   * transition (copies of the part taken by then follow, at the re-emit's z).
+   * face is the winner (`shownAs` when set; the winner's id at the merge, also where the ramp
+   * lies below a re-emit of the winner).
    */
   first: number;
   end: number;
@@ -511,14 +504,9 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
    */
   const emitSmoothMerge = (byFace: SurfacesByFace, loser: number, into: number, s: number, sharedWithInto: number[], zFoot: number, zMerge: number, key: string, lowerOf?: (a: number, b: number, c: number) => number): Ramp => {
     triangulate(loser, s);
-    // The winner's earlier ids inside the transition: it may have been re-emitted meanwhile.
-    const members = [into];
-    const levels: number[] = [];
-    for (let g = into; replaced!.has(g) && faceStartZ(faces[g]!) > zFoot; g = replaced!.get(g)!) {
-      levels.unshift(faceStartZ(faces[g]!));
-      members.unshift(replaced!.get(g)!);
-    }
-    const ramp = emitTilted(byFace, tris, loser, into, s, sharedWithInto, zFoot, zMerge, key, 'merge', { members, levels }, lowerOf);
+    // The winner may have been re-emitted during the transition: the ramp names its id at the
+    // merge throughout (the same class and attributes as the ids before).
+    const ramp = emitTilted(byFace, tris, loser, into, s, sharedWithInto, zFoot, zMerge, key, 'merge', into, lowerOf);
     if (ramp.zStart < zMerge) stats.tiltedMerges++;
     return ramp;
   };
@@ -565,14 +553,14 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   /**
    * Part of the loser's area (`area`, triangles of state s) given to `into` at zMerge, tilted as
    * a smooth merge is (a front from their shared boundary); or flat at zMerge when it cannot
-   * tilt. Its upper face is the winner's id of the time (`winner`: into's, or a face held back in
-   * into that shows where the part lies; `holds` false then: a vertex may start once that face
-   * lies beside it). Returns where its transition starts (zMerge: flat) and where its ramp's
+   * tilt. Its upper face is `taker`: into (its id at zMerge, below a re-emit too), or a face held
+   * back in into that shows where the part lies (`holds` false then: a vertex may start once that
+   * face lies beside it). Returns where its transition starts (zMerge: flat) and where its ramp's
    * triangles end.
    */
   const emitTilted = (
     byFace: SurfacesByFace, area: number[], loser: number, into: number, s: number, sharedWithInto: number[], zFoot: number, zMerge: number, key: string, kind: 'merge' | 'split',
-    winner: WinnerIds = { members: [into], levels: [] }, lowerOf: (a: number, b: number, c: number) => number = () => loser, holds = true,
+    taker = into, lowerOf: (a: number, b: number, c: number) => number = () => loser, holds = true,
     upperOf?: (a: number, b: number, c: number) => number | undefined,
   ): Ramp => {
     // A vertex of the shared boundary may start once the winner lies beside it, and only where
@@ -580,15 +568,12 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     // area) shows beside it, not only another face held back in the winner: what the winner
     // takes stays attached to what shows of it.
     const shared = sharedTimes(sharedWithInto, loser, into, s, holds);
-    if (!held.has(into)) return emitRamp(byFace, area, loser, shared.times, shared.segments, zFoot, zMerge, key, kind, winner, lowerOf, upperOf);
-    const taker = winner.members[winner.members.length - 1]!;
+    if (!held.has(into)) return emitRamp(byFace, area, loser, shared.times, shared.segments, zFoot, zMerge, key, kind, taker, lowerOf, upperOf);
     const beside = facesBeside(sharedWithInto, loser, into, s);
     for (const [v, fs] of beside) if (!fs.has(taker)) shared.times.set(v, Math.max(shared.times.get(v) ?? zMerge, zMerge));
     // A piece of the area (connected) that the winner lies beside nowhere before zMerge goes to
     // the face shown beside most of its boundary (held back in the winner), from when that face
-    // lay there; else its ramp could not leave the boundary and would lie flat. With the
-    // winner's re-emit levels (one upper face per level) it stays the winner's, from the
-    // boundary's times without the holds.
+    // lay there; else its ramp could not leave the boundary and would lie flat.
     let own: Map<number, number> | undefined;
     const pieceFace = new Map<number, number>();
     for (const piece of meshPieces(area)) {
@@ -598,9 +583,8 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       let h = -1, most = 0;
       for (const [f, n] of count) if (n > most || (n === most && f < h)) [h, most] = [f, n];
       own ??= sharedTimes(sharedWithInto, loser, into, s, false).times;
-      // With no held face beside it, or with re-emit levels, the winner's, from the times
-      // without the holds.
-      const keep = h < 0 || winner.levels.length > 0;
+      // With no held face beside it, the winner's, from the times without the holds.
+      const keep = h < 0;
       for (const v of piece) {
         const z = own.get(v);
         if (z !== undefined && (keep || beside.get(v)?.has(h))) shared.times.set(v, z);
@@ -608,7 +592,6 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       }
       if (!keep) stats.piecesToHeld++;
     }
-    if (winner.levels.length > 0) return emitRamp(byFace, area, loser, shared.times, shared.segments, zFoot, zMerge, key, kind, winner, lowerOf, upperOf);
     // The pieces' own areas, for a triangle of new vertices only (the middle of a triangle whose
     // three sides are chords).
     const pieceAreas = new Map<number, AreaIndex>();
@@ -621,7 +604,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       else pieceAreas.set(f, new AreaIndex(tri, out.xs, out.ys));
     }
     const first = out.count;
-    const ramp = emitRamp(byFace, area, loser, shared.times, shared.segments, zFoot, zMerge, key, kind, winner, lowerOf, (a, b, c) => {
+    const ramp = emitRamp(byFace, area, loser, shared.times, shared.segments, zFoot, zMerge, key, kind, taker, lowerOf, (a, b, c) => {
       const f = upperOf?.(a, b, c) ?? pieceFace.get(a) ?? pieceFace.get(b) ?? pieceFace.get(c);
       if (f !== undefined || pieceAreas.size === 0) return f;
       const [x, y] = out.centre(a, b, c);
@@ -700,15 +683,12 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   /** emitTilted's ramp, from the shared boundary's times. */
   const emitRamp = (
     byFace: SurfacesByFace, area: number[], loser: number, shared: ReadonlyMap<number, number>, segments: ReadonlySet<string>, zFoot: number, zMerge: number, key: string, kind: 'merge' | 'split',
-    winner: WinnerIds, lowerOf: (a: number, b: number, c: number) => number, upperOf?: (a: number, b: number, c: number) => number | undefined,
+    upper: number, lowerOf: (a: number, b: number, c: number) => number, upperOf?: (a: number, b: number, c: number) => number | undefined,
   ): Ramp => {
-    if (upperOf && winner.levels.length > 0) throw new Error(`ramp ${key}: an upper face per triangle and the winner's re-emit levels do not go together`);
     const own = splitChords(area, out.xs, out.ys, (v) => shared.has(v), (a, b) => segments.has(edgeKey(a, b)), (x, y) => out.addVertex(x, y));
     stats[kind] += own.length / 3;
     stats.chordSplits += (own.length - area.length) / 3;
     const pairs = byFace.overlapping(loser, own, zFoot, SURFACE_GAP, reachBack(zMerge));
-    const { members, levels } = winner;
-    const upper = members[members.length - 1]!;
     const solve = (waits: ReadonlyMap<number, number>): Map<number, number> | null => smoothMergeZ(own, out.xs, out.ys, shared, { zFoot, zMerge, lowest: waits, time, evenArea: true });
     const aboveAll = (): ReadonlyMap<number, number> => byFace.waitsAbove(own, pairs, SURFACE_GAP);
     const z = exactRamp(own, pairs, zMerge, solve, aboveAll) ?? solve(aboveAll());
@@ -716,50 +696,10 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     const apexes = new Map<number, number>();
     const zOf = (v: number): number => apexes.get(v) ?? z?.get(v) ?? zMerge;
     let zLow = zMerge;
-    // Where an edge crosses one of the winner's re-emit levels: one vertex for both triangles beside it.
-    const cuts = new Map<string, number>();
-    const cut = (p: number, q: number, level: number): number => {
-      const [u, w] = p < q ? [p, q] : [q, p];
-      const key = `${u}:${w}:${level}`;
-      let id = cuts.get(key);
-      if (id === undefined) {
-        const t = (level - zOf(u)) / (zOf(w) - zOf(u));
-        id = out.addVertex(out.xs[u]! + t * (out.xs[w]! - out.xs[u]!), out.ys[u]! + t * (out.ys[w]! - out.ys[u]!));
-        cuts.set(key, id);
-      }
-      return id;
-    };
-    const hasArea = (o: readonly number[]): boolean => {
-      // Relative to the first corner: a sliver a centimetre wide still has area where
-      // coordinates are in the millions.
-      const x0 = out.xs[o[0]!]!, y0 = out.ys[o[0]!]!;
-      let twice = 0;
-      for (let i = 1; i + 1 < o.length; i++) {
-        const p = o[i]!, q = o[i + 1]!;
-        twice += (out.xs[p]! - x0) * (out.ys[q]! - y0) - (out.xs[q]! - x0) * (out.ys[p]! - y0);
-      }
-      return twice !== 0;
-    };
-    /** Per re-emit level, the outlines of what the winner has taken by then. */
-    const taken: number[][][] = levels.map(() => []);
     const emitOne = (a: number, b: number, c: number, lower: number, up: number): void => {
-      const zs = [zOf(a), zOf(b), zOf(c)];
-      zLow = Math.min(zLow, ...zs);
-      if (levels.length === 0) {
-        out.addTilted(a, b, c, zs[0]!, zs[1]!, zs[2]!, up, lower, `${key}${lower === loser ? '' : `/${lower}`}${up === upper ? '' : `^${up}`}`);
-        return;
-      }
-      // Each part between the winner's re-emits shows the id the winner has there (a piece has one upper and one lower face).
-      const { parts, below } = cutAtLevels([a, b, c], zs, levels, cut, hasArea);
-      for (const { verts, zs: pz, group: g } of parts) {
-        for (let j = 1; j + 1 < verts.length; j++) {
-          if (!hasArea([verts[0]!, verts[j]!, verts[j + 1]!])) continue;
-          out.addTilted(verts[0]!, verts[j]!, verts[j + 1]!, pz[0]!, pz[j]!, pz[j + 1]!, members[g]!, lower, `${key}${g === members.length - 1 ? '' : `:${g}`}${lower === loser ? '' : `/${lower}`}`);
-        }
-      }
-      below.forEach((o, li) => {
-        if (o) taken[li]!.push(o);
-      });
+      const za = zOf(a), zb = zOf(b), zc = zOf(c);
+      zLow = Math.min(zLow, za, zb, zc);
+      out.addTilted(a, b, c, za, zb, zc, up, lower, `${key}${lower === loser ? '' : `/${lower}`}${up === upper ? '' : `^${up}`}`);
     };
     for (let i = 0; i < own.length; i += 3) {
       const a = own[i]!, b = own[i + 1]!, c = own[i + 2]!;
@@ -788,13 +728,6 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       }
     }
     const end = out.count;
-    // At each re-emit inside the transition, what the winner has taken so far is drawn again
-    // with its new id, as the re-emit draws the rest of it.
-    levels.forEach((level, i) => {
-      for (const o of taken[i]!) {
-        for (let j = 1; j + 1 < o.length; j++) if (hasArea([o[0]!, o[j]!, o[j + 1]!])) out.add(o[0]!, o[j]!, o[j + 1]!, level, members[i + 1]!, members[i]!);
-      }
-    });
     let zFront = Infinity;
     for (const t of shared.values()) zFront = Math.min(zFront, Math.max(t, zFoot));
     return { zStart: z ? zLow - SURFACE_GAP / 2 : zMerge, end, zFront: Math.min(zFront, zMerge) };
@@ -1076,7 +1009,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
           const h = heldAlong(e.into, shared, k - 1, z0);
           if (h) {
             triangulate(e.loser, k - 1);
-            ramp = emitTilted(byFace, tris, e.loser, e.into, k - 1, shared, Math.max(zFoot, faceStartZ(faces[h.face]!) + SURFACE_GAP), z0, `m${ev}`, 'merge', { members: [h.face], levels: [] }, lowerUnder(e.loser), false);
+            ramp = emitTilted(byFace, tris, e.loser, e.into, k - 1, shared, Math.max(zFoot, faceStartZ(faces[h.face]!) + SURFACE_GAP), z0, `m${ev}`, 'merge', h.face, lowerUnder(e.loser), false);
             if (ramp.zStart < z0) stats.tiltedMerges++;
             // (emitTilted adds to h's area what it takes.)
             stats.mergesToHeld++;
@@ -1140,7 +1073,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
               const [x, y] = out.centre(a, b, c);
               return staying.find((q) => q.area.contains(x, y))?.face;
             });
-            const part = emitTilted(byFace, shown, e.loser, into, k - 1, shared, zFoot, z0, `p${ev}:${shownAs}`, 'split', { members: [shownAs], levels: [] }, lowerOf, !h, upperOf);
+            const part = emitTilted(byFace, shown, e.loser, into, k - 1, shared, zFoot, z0, `p${ev}:${shownAs}`, 'split', shownAs, lowerOf, !h, upperOf);
             // A face that stays shows from now on where this part's triangles are its own; the
             // rest of its area went to other parts. (emitTilted adds to h's area what it takes.)
             for (const q of staying ?? []) {
@@ -1293,10 +1226,20 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   }
   // Every hold ends at a step of its line (returnOnLine): none is left uncarried.
   if (held.size > 0) throw new Error(`smooth cube: faces held back never carried on: ${[...held.values()].flat().map((h) => h.face).join(', ')}`);
+  // An id a re-emit made may show before the re-emit, where a merge or removal into it reaches
+  // back across it: its record starts at the first state at or below the lowest z it shows
+  // from (phaseZ(s, REEMIT_PHASE) <= z), so that it is alive wherever the map shows it.
+  const shownFrom = new Map<number, number>();
+  for (let i = 0; i < out.count; i++) {
+    const u = out.upper[i]!;
+    if (u > 0 && out.zMin[i]! < faceStartZ(faces[u]!)) shownFrom.set(u, Math.min(shownFrom.get(u) ?? Infinity, out.zMin[i]!));
+  }
   // A face held back ends where the merge that carried it on ends it.
-  const cube: Tgap = carried.size === 0 ? t : { ...t, faces: faces.map((f, i) => {
+  const cube: Tgap = carried.size === 0 && shownFrom.size === 0 ? t : { ...t, faces: faces.map((f, i) => {
     const c = carried.get(i);
-    return c ? { ...f, stepHigh: c.step, mergedInto: c.into, endPhase: 0 } : f;
+    const z = shownFrom.get(i);
+    const g = z === undefined ? f : { ...f, stepLow: Math.max(0, Math.floor(z + 1 - phaseZ(1, REEMIT_PHASE))) };
+    return c ? { ...g, stepHigh: c.step, mergedInto: c.into, endPhase: 0 } : g;
   }) };
   // Each triangle matters until its upper face ends; after that newer surfaces cover it.
   for (let i = 0; i < out.count; i++) {
