@@ -737,13 +737,14 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
    * corner v (the receding vertex) up to its chord, at the removal's z or before it when later
    * removals of the step overlap it (removal-heights.ts), so the upper face takes
    * it from the corner, beside which it lies. No further back than reachBackZ, nor before
-   * the upper face was created or lay beside the corner (its side of the parent chain; a face
-   * held back there counts from its own time: that side shows it until the corner recedes), and
-   * above every older surface in the losing face's area.
+   * the upper face lay beside the corner (its side of the parent chain; a face held back there
+   * counts from its own time: that side shows it until the corner recedes), and above every
+   * older surface in the losing face's area. A re-emit of the upper face does not hold it: the
+   * triangle names the new id before it (the same face).
    */
-  const smoothRemovalStart = (byFace: SurfacesByFace, tri: number[], upper: number, lower: number, edge: number, side: Side, z: number): number => {
+  const smoothRemovalStart = (byFace: SurfacesByFace, tri: number[], lower: number, edge: number, side: Side, z: number): number => {
     const zCap = reachBack(z);
-    let start = Math.max(SURFACE_GAP, zCap, faceStartZ(faces[upper]!) + SURFACE_GAP);
+    let start = Math.max(SURFACE_GAP, zCap);
     const times = sides.parentTimes(edge, side, false);
     for (const w of tri) start = Math.max(start, (times.get(w) ?? z) + SURFACE_GAP);
     // Above the older surfaces it overlaps in the losing face's area.
@@ -1009,7 +1010,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
           const h = heldAlong(e.into, shared, k - 1, z0);
           if (h) {
             triangulate(e.loser, k - 1);
-            ramp = emitTilted(byFace, tris, e.loser, e.into, k - 1, shared, Math.max(zFoot, faceStartZ(faces[h.face]!) + SURFACE_GAP), z0, `m${ev}`, 'merge', h.face, lowerUnder(e.loser), false);
+            ramp = emitTilted(byFace, tris, e.loser, e.into, k - 1, shared, zFoot, z0, `m${ev}`, 'merge', h.face, lowerUnder(e.loser), false);
             if (ramp.zStart < z0) stats.tiltedMerges++;
             // (emitTilted adds to h's area what it takes.)
             stats.mergesToHeld++;
@@ -1066,7 +1067,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
             // Beside a face held back in `into` only: the part goes to that face, and moves on with it.
             const h = heldAlong(into, shared, k - 1, z0);
             const shownAs = h?.face ?? into;
-            const zFoot = Math.max(SURFACE_GAP, reachBack(z0), faceStartZ(faces[shownAs]!) + SURFACE_GAP);
+            const zFoot = Math.max(SURFACE_GAP, reachBack(z0));
             const shown = withoutSlivers(e.loser, area);
             const staying = follows.get(into);
             const upperOf = staying && ((a: number, b: number, c: number): number | undefined => {
@@ -1183,7 +1184,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       const h = byFace && heldBeside(upper, [0, 1, 2].flatMap((j) => (tri[j] === v || tri[(j + 1) % 3] === v ? [tri[j]!, tri[(j + 1) % 3]!] : [])), -1);
       const shownAs = h ? h.face : upper;
       if (byFace) {
-        zCorner = smoothRemovalStart(byFace, tri, shownAs, lower, edge, side, z);
+        zCorner = smoothRemovalStart(byFace, tri, lower, edge, side, z);
         zChord = zCorner + (z - zCorner) / (heights[r]! + 1);
       }
       if (h) {
