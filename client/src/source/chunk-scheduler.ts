@@ -4,8 +4,9 @@
 // - a request for a chunk that left the view (and its margin) is aborted;
 // - the nearest to the view centre and base z go first, the on-screen ones before the margin,
 //   then those of the views ahead (a flight's path), in the order they will be shown;
-// - the margin waits until every on-screen chunk has come (or failed): on a slow link it would
-//   share its bandwidth and hold back the complete map. It also waits until the view has rested
+// - the margin waits until every on-screen chunk is on the GPU (or failed): on a slow link it
+//   would share its bandwidth, and the map uploads every chunk that has come before it calls a
+//   frame complete, so it would hold back the complete map. It also waits until the view has rested
 //   (`marginRestMs`): during a zoom or a pan each view's margin is soon left behind, and
 //   fetching it only costs data (bench:session, bgt_otterlo_1800m: 2.18 -> 1.90 MB). The views
 //   ahead do not wait: during a flight some on-screen chunk is nearly always coming, and the
@@ -123,7 +124,10 @@ export class ChunkScheduler {
 
   uploaded(file: string): void {
     const e = this.entries.get(file);
-    if (e && e.status === 'received') this.setStatus(e, 'gpu');
+    if (!e || e.status !== 'received') return;
+    this.setStatus(e, 'gpu');
+    // The last on-screen chunk up lets the margin start.
+    if (e.priority < MARGIN_TIER) this.pump();
   }
 
   evicted(files: string[]): void {
@@ -148,7 +152,7 @@ export class ChunkScheduler {
       const e = this.entries.get(file)!;
       const toStart = e.status === 'not-requested' || e.status === 'evicted';
       if (toStart) waiting.push(e);
-      if (e.priority < MARGIN_TIER && (toStart || e.status === 'requested')) onScreenComing = true;
+      if (e.priority < MARGIN_TIER && (toStart || e.status === 'requested' || e.status === 'received')) onScreenComing = true;
     }
     waiting.sort((a, b) => a.priority - b.priority);
     const restLeft = this.viewSince + this.opts.marginRestMs - performance.now();
