@@ -277,8 +277,6 @@ function detachedGain(ids: Uint32Array, footprint: Uint8Array, winner: ReadonlyS
   return stray;
 }
 
-/** z from which face f is shown: the floor, or its re-emit. */
-
 test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the classic one)', async (t) => {
   const dir = tempDir(t);
   const tgapFile = path.join(dir, 'o.tgap');

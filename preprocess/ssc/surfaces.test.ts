@@ -106,8 +106,6 @@ test('a smooth merge tilts the loser from the shared boundary (hand-worked z and
   for (const [x, f] of [[5.05, W], [7.95, W], [8.05, Z], [9.95, Z]] as const) assert.equal(faceAt(row2, x), f, `x = ${x}`);
 });
 
-/** z from which face f is shown: the floor, or its re-emit. */
-
 test('a smooth cube is a partition at every z and equals the classic one at the floor and the top', async () => {
   // A 4 x 3 grid of rectangles of uneven sizes and two classes.
   const xsCut = [0, 3, 4, 8, 9], ysCut = [0, 2, 5, 6];
