@@ -83,7 +83,12 @@ describe('slicing surface tools (bgt_otterlo_400m)', () => {
         else far++;
       }
       assert.ok(near > 500, `${near} pixels changed under the lens`);
-      if (previous === flat.upper) assert.equal(far, 0, 'nothing changes outside the lens');
+      // Outside the lens the slice is the flat one, but the frame is another (its id pass another
+      // shader variant): a pixel centre a few hundredths of a pixel from a shared edge may fall
+      // on its other side (bgt_otterlo_400m: one, 0.016 px from an edge between two floor
+      // faces; the CPU slicer sides with the flat frame). A lens that reached beyond its radius
+      // would change thousands.
+      if (previous === flat.upper) assert.ok(far <= 3, `${far} pixels changed outside the lens`);
       previous = ids;
     }
   });

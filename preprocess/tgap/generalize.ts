@@ -23,6 +23,8 @@ export interface GeneralizeOptions {
    * A winner keeps its id (its surfaces in the cube stay valid) until what was drawn for it
    * exceeds this many times its current size; then it is replaced by a new face whose whole
    * area is drawn afresh with the current, simplified geometry (detail follows scale).
+   * Default 3: in a smooth cube, bench:session took nlcd_zion from 6.29 to 5.27 MB (frame
+   * 0.82x -> 0.80x MapLibre's) and bgt_otterlo_1800m from 1.89 to 1.82 MB against 2.
    */
   reemitFactor?: number;
   /** Vertices a face may cost beyond reemitFactor times its size (small faces are cheap to keep). */
@@ -92,7 +94,7 @@ class Generalization {
   constructor(topo: Topology, classOf: (face: number) => number, style: Style, private readonly opts: GeneralizeOptions) {
     const st = new PlanarState(topo, classOf);
     this.st = st;
-    this.reemitLimits = { factor: opts.reemitFactor ?? 2, slack: opts.reemitSlack ?? 8 };
+    this.reemitLimits = { factor: opts.reemitFactor ?? 3, slack: opts.reemitSlack ?? 8 };
     this.hysteresis = opts.hysteresis ?? 1.25;
     this.group = Math.max(1, Math.floor(opts.group ?? 1));
     this.nb = st.aliveFaces;
