@@ -393,7 +393,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     return out;
   };
   const tris: number[] = [];
-  /** The face each re-emitted face replaced (smooth merges run on through a winner's re-emits). */
+  /** The face each re-emitted face replaced (a sliver's lower face may have been re-emitted: givesBack). */
   const replaced = opts.smooth ? replacedFaces(faces) : undefined;
   const reachBack = (z: number): number => reachBackZ(scaleInfo, z);
   /** Fronts advance evenly in zoom, not in z (zoom-time.ts), and by the share of the area passed (evenArea). */
@@ -1107,7 +1107,8 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         relabel(e.loser, z0, before);
         faceEdges.delete(e.loser);
       } else {
-        // A re-emit: not a change of side, the same face under a new id (faceStartZ bounds what needs the id).
+        // A re-emit: not a change of side, the same face under a new id (what is given to the face
+        // before the re-emit may name the new id: its record's stepLow says so, below).
         handOn.push([e.loser, e.into]);
         reemits.push([e.loser, e.into]);
       }
@@ -1228,8 +1229,8 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   // Every hold ends at a step of its line (returnOnLine): none is left uncarried.
   if (held.size > 0) throw new Error(`smooth cube: faces held back never carried on: ${[...held.values()].flat().map((h) => h.face).join(', ')}`);
   // An id a re-emit made may show before the re-emit, where a merge or removal into it reaches
-  // back across it: its record starts at the first state at or below the lowest z it shows
-  // from (phaseZ(s, REEMIT_PHASE) <= z), so that it is alive wherever the map shows it.
+  // back across it: its record starts at the last state s with phaseZ(s, REEMIT_PHASE) <= z,
+  // z the lowest it shows from, so that it is alive wherever the map shows it.
   const shownFrom = new Map<number, number>();
   for (let i = 0; i < out.count; i++) {
     const u = out.upper[i]!;
