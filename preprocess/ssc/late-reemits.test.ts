@@ -39,8 +39,7 @@ test('bgt_otterlo_400m: skipping late re-emits changes no state of the map, only
   assert.ok(compared >= 40);
 
   // What it is for: a face that ends soon after a re-emit may start its transition before it.
-  const built = buildSurfaces(tgap, { smooth: true });
-  const { transitions, tgap: cube } = built;
+  const { transitions, tgap: cube, surfaces: s } = buildSurfaces(tgap, { smooth: true });
   assert.equal(cube.faces.length, out.faces.length);
   const reemitZ = new Map<number, number>();
   for (const g of gone) reemitZ.set(root(g), Math.max(reemitZ.get(root(g)) ?? -Infinity, faceStartZ(tgap.faces[g]!)));
@@ -51,8 +50,7 @@ test('bgt_otterlo_400m: skipping late re-emits changes no state of the map, only
 
   // A merge into a kept new id may start before its re-emit: its ramp names the new id
   // throughout, and the id's record in the cube starts at the state where it first shows.
-  const s = built.surfaces;
-  const across = built.transitions.filter((m) => !m.held && m.zStart < faceStartZ(tgap.faces[m.into]!));
+  const across = transitions.filter((m) => !m.held && m.zStart < faceStartZ(tgap.faces[m.into]!));
   let below = 0;
   for (const m of across) {
     assert.ok(!gone.has(m.into), `merge of ${m.loser} into ${m.into}: its re-emit is kept`);

@@ -126,7 +126,7 @@ export class ChunkScheduler {
     const e = this.entries.get(file);
     if (!e || e.status !== 'received') return;
     this.setStatus(e, 'gpu');
-    // The last on-screen chunk up lets the margin start.
+    // Once the last on-screen chunk is up, the margin may start.
     if (e.priority < MARGIN_TIER) this.pump();
   }
 
