@@ -235,6 +235,42 @@ for (const classic of [false, true]) describe(`rendering and picking (bgt_otterl
     assert.ok(off.length <= Math.max(10, diff.size / 1000), `${off.length} of ${diff.size} changed pixels away from edges: ${off.slice(0, 10).map((k) => `(${k % W},${Math.floor(k / W)})`).join(' ')}`);
   });
 
+  // The passes link each combination of their features when a frame first needs it, so a
+  // shader error in one shows only then: every combination is drawn here once.
+  smoothOnly('every combination of shader features compiles, links and draws: lines, blending, boundaries, feature state, a curved slice, supersampling', async () => {
+    const z = 100;
+    const p = await open({ z, lines: 1 });
+    assert.equal(await waitIdle(p.page), true);
+    const ids = await readIds(p.page);
+    const face = ids.upper[(H / 2) * W + W / 2]!;
+    assert.ok(face > 0, 'a face in the middle of the map');
+    const combos: { ss: number; lines: boolean; blending: boolean; boundaries: boolean; state: boolean; curved: boolean }[] = [];
+    for (let bits = 0; bits < 32; bits++) {
+      combos.push({ ss: 1, lines: (bits & 1) > 0, blending: (bits & 2) > 0, boundaries: (bits & 4) > 0, state: (bits & 8) > 0, curved: (bits & 16) > 0 });
+    }
+    // Supersampled, the frames accumulate off the canvas and the present pass paints them, with or without lines.
+    for (const lines of [false, true]) combos.push({ ss: 4, lines, blending: false, boundaries: false, state: false, curved: false });
+    for (const c of combos) {
+      const label = JSON.stringify(c);
+      const before = await p.page.evaluate(() => engine.stats().frame);
+      await p.page.evaluate(([c, face, z]) => {
+        engine.setSupersampling(c.ss);
+        map.setLinesVisible(c.lines);
+        map.setBlending({ mode: c.blending ? 'always' : 'off' });
+        map.setBoundaries({ enabled: c.boundaries });
+        if (c.state) map.setFeatureState({ face }, { highlight: true });
+        else map.removeFeatureState({ face });
+        map.setSlicingSurface(c.curved ? `sine:amplitude=${z / 2},wavelength=200,angle=30` : 'flat');
+      }, [c, face, z] as const);
+      assert.equal(await waitIdle(p.page), true, label);
+      const stats = await p.page.evaluate(() => engine.stats());
+      assert.ok(stats.frame > before && stats.triangles > 0, `${label}: drawn`);
+      // Lines on: the line pass drew some, so the colour or present pass painted them.
+      assert.equal(stats.segments > 0, c.lines, `${label}: ${stats.segments} line segments`);
+      assert.deepEqual(p.problems, [], label);
+    }
+  });
+
   smoothOnly('picking returns the face under the pointer, with its class, attributes and steps', async () => {
     const z = 90;
     const p = await open({ z });

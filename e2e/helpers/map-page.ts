@@ -26,6 +26,9 @@ export interface MapApi {
   setSlicingSurface(s: string | object): unknown;
   setBlending(b: object): unknown;
   setBoundaries(b: object): unknown;
+  setLinesVisible(visible: boolean): unknown;
+  setFeatureState(f: { face: number }, s: object): unknown;
+  removeFeatureState(f: { face: number }, key?: string): unknown;
   queryFeatures(p: [number, number]): Promise<unknown[]>;
   getMetadata(): PageCubeMeta | null;
   on(type: string, fn: (ev: unknown) => void): unknown;
@@ -41,7 +44,7 @@ export interface EngineApi {
   readIds(): { width: number; height: number; upper: Uint32Array; lower: Uint32Array; classes: Uint32Array; z: Float32Array; slice: Float32Array } | null;
   chunkStatuses(): Map<string, string>;
   neededChunks(): { visible: string[]; margin: string[] };
-  stats(): { frame: number; triangles: number; chunks: number; queryMs: number; gpuBytes: number };
+  stats(): { frame: number; triangles: number; segments: number; chunks: number; queryMs: number; gpuBytes: number };
 }
 
 
