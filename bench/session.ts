@@ -108,13 +108,13 @@ async function runPage(browser: Browser, url: string, views: (ProjectedView | Ln
       return out;
     }, views);
     if (problems.length > 0) throw new Error(`${url}: ${problems.join('; ')}`);
-    const dataUpTo = (at: number): number => log.reduce((s, r) => s + (r.at <= at && isData(r.path) ? r.bytes : 0), 0);
     const end = frames[frames.length - 1]!.at;
     const dataByKind = (at: number): Map<string, number> => {
       const m = new Map<string, number>();
       for (const r of log) if (r.at <= at && isData(r.path)) m.set(fileKind(r.path), (m.get(fileKind(r.path)) ?? 0) + r.bytes);
       return m;
     };
+    const dataUpTo = (at: number): number => [...dataByKind(at).values()].reduce((s, b) => s + b, 0);
     return {
       firstMs: first.ms,
       bytesBeforeFirst: dataUpTo(first.at),
