@@ -210,7 +210,9 @@ describe('the chunk scheduler', () => {
     h.scheduler.setView(view(3, 0, 20, { centerX: 5 }));
     await eventually(() => h.received().length === 4, 'c-1 again');
     assert.equal(h.times('c-1.bin'), 2);
-    assert.deepEqual(h.received(), ['c-0.bin', 'c-1.bin', 'c-0.bin', 'c-1.bin']);
+    // The first two were fetched together and may come in either order (each is hashed by crypto.subtle, off the thread).
+    assert.deepEqual(sorted(h.received().slice(0, 2)), ['c-0.bin', 'c-1.bin']);
+    assert.deepEqual(h.received().slice(2), ['c-0.bin', 'c-1.bin']);
   });
 
   test('failures: a 404 and a corrupt chunk fail at once, a 503 after its retries; each is reported, and tried again only when the view comes back', async (t) => {
