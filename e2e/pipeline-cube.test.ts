@@ -245,8 +245,8 @@ test('bgt_otterlo_400m cube', async (t) => {
     assert.equal(rep.bytes.total, files.reduce((a, f) => a + readFileSync(path.join(cube, f)).length, 0));
     assert.ok(rep.bytes.cv <= 0.25, `chunk sizes vary too much (CV ${rep.bytes.cv})`);
     // Compressed chunks (version 2) pay for chunking also in their codecs starting afresh and
-    // sharing points only within a chunk; the default 32 KiB chunks (build-cube.ts says why)
-    // start afresh eight times as often as the 256 KiB ones did, which cost 1.15: about 1.2.
+    // sharing points only within a chunk; the default 64 KiB chunks (build-cube.ts says why)
+    // start afresh four times as often as the 256 KiB ones did, which cost 1.15.
     assert.ok(rep.overhead <= 1.25, `chunking costs ${rep.overhead}`);
     assert.equal(rep.views.length, 8);
   });

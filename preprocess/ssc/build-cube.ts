@@ -23,13 +23,20 @@ import { parseStyle } from '../style.js';
 import { lapTimer } from '../lap-timer.js';
 
 /**
- * Target chunk size (decoded bytes; files are about a fifth of it). Measured on
- * bgt_otterlo_1800m for bench:session's zoom out, pan and zoom in: 256 KiB fetched 2.29 MB in
- * 42 chunks and 988 KB for the first view; 32 KiB 1.79 MB in 222 chunks and 299 KB; 16 KiB no
- * less for the session (1.84 MB in 423 requests) with twice the requests. A chunk is then about
- * as large as a vector tile.
+ * Target chunk size (decoded bytes; files are about a fifth of it). Measured with bench:session
+ * (zoom out, pan and zoom in; gzip; the session's bytes, those before the first map, and the
+ * first map's time against MapLibre's in the same run):
+ * - bgt_otterlo_1800m (3 runs): 32 KiB 1.82 MB, 0.24 MB; 64 KiB 1.81 MB, 0.30 MB; 96 KiB
+ *   1.91 MB, 0.45 MB; 128 KiB 1.94 MB, 0.54 MB. The first map 0.85x to 0.95x at every size.
+ * - nlcd_zion (1 run): 32 KiB 5.27 MB, 0.90 MB, first map 1.12x; 64 KiB 5.17 MB, 0.93 MB,
+ *   1.05x; 128 KiB 4.95 MB, 0.97 MB, 0.76x.
+ * Every request costs the browser and the server time whatever its size: nlcd_zion's first view
+ * takes 186 chunks at 32 KiB and 107 at 64 KiB, and fetching 186 chunk files six at a time took
+ * 0.7 to 1.2 s with nothing drawn. Larger chunks cost bgt_otterlo_1800m, whose first view covers
+ * 2% of its extent, more bytes than they save in requests. Earlier (before the smooth cube):
+ * 256 KiB fetched 2.29 MB in 42 chunks, 16 KiB 1.84 MB in 423.
  */
-export const DEFAULT_CHUNK_BYTES = 32 * 1024;
+export const DEFAULT_CHUNK_BYTES = 64 * 1024;
 
 export interface BuildOptions {
   chunkBytes?: number;
