@@ -396,6 +396,8 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   /** The face each re-emitted face replaced (a sliver's lower face may have been re-emitted: givesBack). */
   const replaced = opts.smooth ? replacedFaces(faces) : undefined;
   const reachBack = (z: number): number => reachBackZ(scaleInfo, z);
+  /** The lowest z a surface given at z may start from: no further back than reachBackZ, and above the floor. */
+  const footOf = (z: number): number => Math.max(SURFACE_GAP, reachBack(z));
   /** Fronts advance evenly in zoom, not in z (zoom-time.ts), and by the share of the area passed (evenArea). */
   const time = new ZoomTime(scaleInfo);
   const byFace = opts.smooth ? new SurfacesByFace(out) : undefined;
@@ -744,7 +746,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
    */
   const smoothRemovalStart = (byFace: SurfacesByFace, tri: number[], lower: number, edge: number, side: Side, z: number): number => {
     const zCap = reachBack(z);
-    let start = Math.max(SURFACE_GAP, zCap);
+    let start = footOf(z);
     const times = sides.parentTimes(edge, side, false);
     for (const w of tri) start = Math.max(start, (times.get(w) ?? z) + SURFACE_GAP);
     // Above the older surfaces it overlaps in the losing face's area.
@@ -977,7 +979,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         let ramp: Ramp = { zStart: z0, end: first, zFront: z0 };
         let carries: number[] | undefined;
         let shownAs: Held | undefined;
-        const zFoot = byFace ? Math.max(SURFACE_GAP, reachBack(z0)) : z0;
+        const zFoot = byFace ? footOf(z0) : z0;
         // The loser's area as it is before the merge, triangulated once if a hold needs it.
         let area: AreaIndex | undefined;
         const loserArea = (): AreaIndex => {
@@ -1067,7 +1069,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
             // Beside a face held back in `into` only: the part goes to that face, and moves on with it.
             const h = heldAlong(into, shared, k - 1, z0);
             const shownAs = h?.face ?? into;
-            const zFoot = Math.max(SURFACE_GAP, reachBack(z0));
+            const zFoot = footOf(z0);
             const shown = withoutSlivers(e.loser, area);
             const staying = follows.get(into);
             const upperOf = staying && ((a: number, b: number, c: number): number | undefined => {
