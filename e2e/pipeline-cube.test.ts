@@ -170,9 +170,11 @@ test('bgt_otterlo_400m cube', async (t) => {
   });
 
   await t.test('every chunk is on the cube\'s grid, so a point two chunks share is one value in both', async () => {
-    // 1:1,000 at 0.28 mm: 2^-10 m or one of the three finer grids, whichever encodes smallest
+    // 1:1,000 at 0.28 mm: the input snapped to 2^-7 m by default (a 32nd of a pixel), and the
+    // chunks on it or on one of the three finer grids, whichever encodes smallest
     // (position-grid.ts), the same in every chunk. On each box's own grid (2^-15 m or finer here)
     // a shared corner came out a few micrometres apart in two chunks.
+    assert.equal(tgap.meta.options.precision, 2 ** -7);
     const files = readdirSync(cube).filter((n) => n.startsWith('c-') && n.endsWith('.bin'));
     assert.ok(files.length > 1);
     const seen = new Map<string, [number, number, string]>();
@@ -180,7 +182,7 @@ test('bgt_otterlo_400m cube', async (t) => {
     for (const f of files) {
       const c = await decodeChunk(new Uint8Array(readFileSync(path.join(cube, f))));
       grid ??= c.gridExponent;
-      assert.ok(grid <= -10 && grid >= -13, `the cube's grid 2^${grid}`);
+      assert.ok(grid <= -7 && grid >= -10, `the cube's grid 2^${grid}`);
       assert.equal(c.gridExponent, grid, `${f}: the cube's grid`);
       const steps = 2 ** -grid;
       for (let k = 0; k < c.vertexCount; k++) {
@@ -195,6 +197,30 @@ test('bgt_otterlo_400m cube', async (t) => {
       }
     }
     assert.ok(shared > 100, `corners shared by two chunks: ${shared}`);
+  });
+
+  await t.test('the input\'s points are in the chunks exactly where the snapping put them', async () => {
+    // Each input coordinate rounded to 2^-7 m by this test: a chunk corner at such a point (within
+    // a quarter step) must be that point to the bit, as no rounding happens after the snapping.
+    const input = JSON.parse(readFileSync(dataset('bgt_otterlo_400m.geojson'), 'utf8')) as { features: { geometry: { coordinates: unknown } }[] };
+    const snapped = new Set<string>();
+    const walk = (v: unknown): void => {
+      if (Array.isArray(v) && typeof v[0] === 'number') snapped.add(`${Math.round(v[0] * 128)},${Math.round(Number(v[1]) * 128)}`);
+      else if (Array.isArray(v)) v.forEach(walk);
+    };
+    for (const f of input.features) walk(f.geometry.coordinates);
+    let at = 0, near = 0;
+    for (const f of readdirSync(cube).filter((n) => n.startsWith('c-') && n.endsWith('.bin'))) {
+      const c = await decodeChunk(new Uint8Array(readFileSync(path.join(cube, f))));
+      for (let k = 0; k < c.vertexCount; k++) {
+        const x = (c.originX + c.positions[3 * k]!) * 128, y = (c.originY + c.positions[3 * k + 1]!) * 128;
+        if (!snapped.has(`${Math.round(x)},${Math.round(y)}`) || Math.abs(x - Math.round(x)) > 0.25 || Math.abs(y - Math.round(y)) > 0.25) continue;
+        near++;
+        if (Number.isInteger(x) && Number.isInteger(y)) at++;
+      }
+    }
+    assert.ok(near > 1000, `chunk corners at input points: ${near}`);
+    assert.equal(at, near, 'chunk corners at an input point, exactly');
   });
 
   await t.test('the build is deterministic', () => {

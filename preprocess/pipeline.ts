@@ -15,6 +15,8 @@ import { recommendBaseScale } from './style-scaffold/base-scale.js';
 import { describeColourSources } from './style-scaffold/class-colours.js';
 import { featureShape, guessClassProperty } from './style-scaffold/class-stats.js';
 import { lapTimer } from './lap-timer.js';
+import { defaultPrecision } from './ssc/position-grid.js';
+import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
 
 /**
  * The default sliver width, in resolution pixels (0.28 mm) at the base scale: 1.4 cm on the
@@ -107,10 +109,10 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
     }
     classes[i + 1] = ci;
   });
-  const precision = opts.precision ?? 0.001;
   const allowHoles = opts.allowHoles ?? style.allowHoles;
-  // The base scale before the topology: it sets the sliver width.
+  // The base scale before the topology: it sets the snapping grid and the sliver width.
   const baseScale = opts.baseScale ?? (style.baseScale > 0 ? style.baseScale : autoBaseScale(raw.features, style.resolutionMm));
+  const precision = opts.precision ?? defaultPrecision(baseScale, PIXEL_SIZE_MM);
   // Rounded to 12 digits: the tGAP's options say 0.014, not 0.014000000000000002.
   const sliverWidth = opts.sliverWidth ?? Number(((SLIVER_PX * style.resolutionMm * baseScale) / 1000).toPrecision(12));
   const topo = buildTopology(raw.features, {

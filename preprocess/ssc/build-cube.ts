@@ -12,7 +12,7 @@ import { writeDirAtomic } from '../io/atomic-write.js';
 import { proj4Definition } from '../io/crs-definition.js';
 import { PHASES, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
 import { assembleChunk } from './assemble-chunk.js';
-import { chooseGrid, cubeGridExponent } from './position-grid.js';
+import { chooseGrid, coarsestGrid } from './position-grid.js';
 import { planChunks } from './chunking.js';
 import { encodeAttributePage, ATTRIBUTE_PAGE_SIZE } from '../../format/attribute-page.js';
 import { encodeFacePage, FACE_PAGE_SIZE } from '../../format/face-page.js';
@@ -97,7 +97,8 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   // The cube's grid, tried on every chunk up to 32 of them, spread evenly (position-grid.ts).
   const sampled = Math.min(32, chunkCount);
   const sample = Array.from({ length: sampled }, (_, i) => Math.floor((i * chunkCount) / sampled));
-  const grid = chooseGrid(cubeGridExponent(t.meta.baseScale, PIXEL_SIZE_MM), (e) =>
+  const precision = typeof t.meta.options.precision === 'number' ? t.meta.options.precision : 0;
+  const grid = chooseGrid(coarsestGrid(t.meta.baseScale, PIXEL_SIZE_MM, precision), (e) =>
     sample.reduce((sum, c) => sum + (trisOf(c).length > 0 ? assembleChunk(surfaces, trisOf(c), surfaces.xs, surfaces.ys, classOf, e).bytes.length : 0), 0));
   log(`position grid: 2^${grid}`);
   for (let c = 0; c < chunkCount; c++) {

@@ -1,6 +1,6 @@
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { chooseGrid, cubeGridExponent } from './position-grid.js';
+import { chooseGrid, coarsestGrid, cubeGridExponent, defaultPrecision } from './position-grid.js';
 
 describe('cubeGridExponent', () => {
   test('a 256th of a base pixel, rounded down to a power of two', () => {
@@ -28,5 +28,24 @@ describe('cubeGridExponent', () => {
     assert.deepEqual(tried, [-5, -6, -7, -8], 'never finer than three below');
     assert.equal(chooseGrid(-5, (e) => (e === -5 || e === -7 ? 10 : 20)), -5);
     assert.equal(chooseGrid(-10, (e) => 50 + e), -13);
+  });
+});
+
+describe('defaultPrecision and coarsestGrid', () => {
+  test('the default snapping grid is a 32nd of a base pixel, rounded down to a power of two, at most 1 unit', () => {
+    // 1:1,000: 0.28 m / 32 = 8.75 mm; 2^-7 m = 7.8 mm. 1:50,000: 14 m / 32 = 0.44 m; 2^-2 m.
+    assert.equal(defaultPrecision(1000, 0.28), 2 ** -7);
+    assert.equal(defaultPrecision(50000, 0.28), 0.25);
+    assert.equal(defaultPrecision(150000, 0.28), 1);
+    assert.throws(() => defaultPrecision(0, 0.28), /no position grid for base scale 0/);
+  });
+  test('the chunks may be as coarse as a power-of-two precision, never coarser than 1 unit', () => {
+    assert.equal(coarsestGrid(1000, 0.28, 2 ** -7), -7);
+    assert.equal(coarsestGrid(1000, 0.28, 4), 0);
+  });
+  test('a decimal precision, one finer than the cube grid, or none keeps the cube grid', () => {
+    assert.equal(coarsestGrid(1000, 0.28, 0.001), -10);
+    assert.equal(coarsestGrid(1000, 0.28, 2 ** -12), -10);
+    assert.equal(coarsestGrid(1000, 0.28, 0), -10);
   });
 });

@@ -30,9 +30,12 @@ before(() => {
 });
 after(() => ssc.close());
 
+// The cases are drawn in millimetres around a 1 mm grid (the default at their 1:1,000 is
+// 2^-7 m, position-grid.ts), unless a case gives its own.
 async function generalize(c: Case, out: string, ...extra: string[]): Promise<Run> {
   const file = path.join(c.dir, out);
-  const r = await ssc.run(['generalize', c.input, '--style', c.style, '--out', file, '--quiet', ...extra]);
+  const precision = extra.includes('--precision') ? [] : ['--precision', '0.001'];
+  const r = await ssc.run(['generalize', c.input, '--style', c.style, '--out', file, '--quiet', ...precision, ...extra]);
   return { ...r, out: file };
 }
 
