@@ -10,6 +10,9 @@
 // supersampling frame; MapLibre: 'idle'), recording the data bytes sent so far (server side),
 // setView-to-complete ms and the triangles drawn. The next frame follows at once, as in a
 // user's zoom: the vario map's redraw once the slice has stopped (blending off) is not waited for.
+// Each run also opens each map once more on a slow network (Chromium's own throttling, as
+// Lighthouse's "Slow 4G": 1.6 Mbit/s down, 150 ms more per request) and times its first map:
+// there the bytes and requests before the first map, code and data, count as on a phone.
 // Prints, per dataset, the medians over `runs` runs (3) and their ratio, the vario map's data
 // bytes by kind of file, and what the session's views need of the surface chunks
 // (triangles-in-view.ts: a floor for the chunk encoding as it is); `csv=<file>` also
@@ -67,6 +70,9 @@ function scriptedSession(meta: CubeMeta, zoomOutFrames: number): Session {
 
 interface RunResult {
   firstMs: number;
+  /** The first map on a slow network (SLOW_NETWORK), ms; the bytes sent before it, code and data. */
+  slowFirstMs: number;
+  slowBytesBeforeFirst: number;
   bytesBeforeFirst: number;
   /** Data bytes sent up to each frame's completion. */
   bytesSoFar: number[];
@@ -86,6 +92,9 @@ const CUBE_FILE_KINDS: [RegExp, string][] = [
   [/\/f-[^/]*$/, 'face tables'],
   [/\/a-[^/]*$/, 'attributes'],
 ];
+/** Lighthouse's "Slow 4G" as Chromium's DevTools throttle it: latency added per request, throughput in bytes/s. */
+const SLOW_NETWORK = { offline: false, latency: 150, downloadThroughput: (1.6e6 * 0.9) / 8, uploadThroughput: (750e3 * 0.9) / 8 };
+
 const fileKind = (p: string): string => CUBE_FILE_KINDS.find(([re]) => re.test(p.split('?')[0]!))?.[1] ?? 'other';
 
 /** Opens `page` in a fresh context (an empty cache), runs the session, and sums up the server's log. */
@@ -115,7 +124,7 @@ async function runPage(browser: Browser, url: string, views: (ProjectedView | Ln
       return m;
     };
     const dataUpTo = (at: number): number => [...dataByKind(at).values()].reduce((s, b) => s + b, 0);
-    return {
+    const session = {
       firstMs: first.ms,
       bytesBeforeFirst: dataUpTo(first.at),
       bytesSoFar: frames.map((f) => dataUpTo(f.at)),
@@ -124,6 +133,29 @@ async function runPage(browser: Browser, url: string, views: (ProjectedView | Ln
       byKind: dataByKind(end),
       byKindBeforeFirst: dataByKind(first.at),
     };
+    // After the session's sums: it empties the log.
+    return { ...session, ...(await firstOnSlowNetwork(browser, url, log)) };
+  } finally {
+    await context.close();
+  }
+}
+
+/** The page opened in a fresh context on SLOW_NETWORK, to its first complete map. */
+async function firstOnSlowNetwork(browser: Browser, url: string, log: Sent[]): Promise<{ slowFirstMs: number; slowBytesBeforeFirst: number }> {
+  const context = await browser.newContext({ viewport: { width: WIDTH, height: HEIGHT } });
+  try {
+    const page = await context.newPage();
+    const problems: string[] = [];
+    page.on('pageerror', (e) => problems.push(e.message));
+    const cdp = await context.newCDPSession(page);
+    await cdp.send('Network.enable');
+    await cdp.send('Network.emulateNetworkConditions', SLOW_NETWORK);
+    log.length = 0;
+    await page.goto(url);
+    await page.waitForFunction(() => typeof bench !== 'undefined');
+    const first = await page.evaluate(() => bench.first);
+    if (problems.length > 0) throw new Error(`${url} on a slow network: ${problems.join('; ')}`);
+    return { slowFirstMs: first.ms, slowBytesBeforeFirst: log.reduce((s, r) => s + (r.at <= first.at ? r.bytes : 0), 0) };
   } finally {
     await context.close();
   }
@@ -187,7 +219,7 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
         const xs = rs.map((r) => f(r, i)).filter((x): x is number => x !== null);
         return xs.length === 0 ? null : median(xs);
       });
-    const sum = (which: 'vario' | 'maplibre'): { total: number; beforeFirst: number; frameMs: number; firstMs: number; code: number; ms: (number | null)[]; bytes: (number | null)[]; tri: (number | null)[] } => {
+    const sum = (which: 'vario' | 'maplibre'): { total: number; beforeFirst: number; frameMs: number; firstMs: number; slowFirstMs: number; slowBytes: number; code: number; ms: (number | null)[]; bytes: (number | null)[]; tri: (number | null)[] } => {
       const rs = results[which];
       const ms = perFrame(rs, (r, i) => r.frames[i]!.ms);
       return {
@@ -195,6 +227,8 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
         beforeFirst: median(rs.map((r) => r.bytesBeforeFirst)),
         frameMs: median(ms.filter((x): x is number => x !== null)),
         firstMs: median(rs.map((r) => r.firstMs)),
+        slowFirstMs: median(rs.map((r) => r.slowFirstMs)),
+        slowBytes: median(rs.map((r) => r.slowBytesBeforeFirst)),
         code: median(rs.map((r) => r.codeBytes)),
         ms,
         bytes: perFrame(rs, (r, i) => r.bytesSoFar[i]!),
@@ -210,6 +244,8 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
       ['median time from setView to a complete frame', `${v.frameMs.toFixed(0)} ms`, `${m.frameMs.toFixed(0)} ms`, ratio(v.frameMs, m.frameMs)],
       ['first complete map after navigation', `${(v.firstMs / 1000).toFixed(2)} s`, `${(m.firstMs / 1000).toFixed(2)} s`, ratio(v.firstMs, m.firstMs)],
       ['code bytes (page, library, workers)', mb(v.code), mb(m.code), ratio(v.code, m.code)],
+      ['first complete map on a slow network', `${(v.slowFirstMs / 1000).toFixed(2)} s`, `${(m.slowFirstMs / 1000).toFixed(2)} s`, ratio(v.slowFirstMs, m.slowFirstMs)],
+      ['bytes before it (code and data)', mb(v.slowBytes), mb(m.slowBytes), ratio(v.slowBytes, m.slowBytes)],
     ]);
     const phases = [...new Set(s.frames.map((f) => f.phase))];
     const rows = [['phase', 'frames', 'vario ms', 'MapLibre ms', 'vario triangles', 'MapLibre triangles', 'vario MB at end', 'MapLibre MB at end']];
