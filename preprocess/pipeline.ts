@@ -15,7 +15,7 @@ import { recommendBaseScale } from './style-scaffold/base-scale.js';
 import { describeColourSources } from './style-scaffold/class-colours.js';
 import { featureShape, guessClassProperty } from './style-scaffold/class-stats.js';
 import { lapTimer } from './lap-timer.js';
-import { defaultPrecision } from './ssc/position-grid.js';
+import { coarsestGrid, defaultPrecision } from './ssc/position-grid.js';
 import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
 
 /**
@@ -140,6 +140,7 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
   const g = generalize(topo, (f) => classes[topo.featureOfFace[f]! + 1]!, style, {
     baseScale,
     resolutionMm: style.resolutionMm,
+    snapStep: 2 ** coarsestGrid(baseScale, PIXEL_SIZE_MM, precision),
     ...(opts.group !== undefined ? { group: opts.group } : {}),
     onProgress: (k, alive) => log(`generalize: step ${k}, ${alive} faces left`),
   });

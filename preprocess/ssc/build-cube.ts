@@ -75,7 +75,9 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const { timings, lap } = lapTimer();
   const smooth = opts.smooth ?? true;
   // The faces the surfaces name: a smooth build skips some re-emits (late-reemits.ts).
-  const { surfaces, stats, tgap: cubeTgap } = buildSurfaces(t, { smooth });
+  const precision = typeof t.meta.options.precision === 'number' ? t.meta.options.precision : 0;
+  const coarsest = coarsestGrid(t.meta.baseScale, PIXEL_SIZE_MM, precision);
+  const { surfaces, stats, tgap: cubeTgap } = buildSurfaces(t, { smooth, snapStep: 2 ** coarsest });
   const { faces } = cubeTgap;
   lap('surfaces');
   log(`surfaces: ${surfaces.count} triangles (floor ${stats.floor}, merges ${stats.merge}, splits ${stats.split}, simplification ${stats.simplify}, redrawn ${stats.reemit})${smooth ? `, ${stats.tiltedMerges} merges and ${stats.tiltedRemovals} removals tilted, ${stats.heldMerges} merges held back (given to them: ${stats.mergesToHeld} losers, ${stats.piecesToHeld} pieces of areas, ${stats.splitPartsToHeld} split parts, ${stats.removalsToHeld} removals; ${stats.splitFollows} handed on by splits), ${stats.apexes} apexes, ${stats.skippedRemovals} removals left out (slivers handed back; ${stats.notchFallbacks} faces drawn without their notches)` : ''}`);
@@ -97,8 +99,7 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   // The cube's grid, tried on every chunk up to 32 of them, spread evenly (position-grid.ts).
   const sampled = Math.min(32, chunkCount);
   const sample = Array.from({ length: sampled }, (_, i) => Math.floor((i * chunkCount) / sampled));
-  const precision = typeof t.meta.options.precision === 'number' ? t.meta.options.precision : 0;
-  const grid = chooseGrid(coarsestGrid(t.meta.baseScale, PIXEL_SIZE_MM, precision), (e) =>
+  const grid = chooseGrid(coarsest, (e) =>
     sample.reduce((sum, c) => sum + (trisOf(c).length > 0 ? assembleChunk(surfaces, trisOf(c), surfaces.xs, surfaces.ys, classOf, e).bytes.length : 0), 0));
   log(`position grid: 2^${grid}`);
   for (let c = 0; c < chunkCount; c++) {

@@ -14,8 +14,8 @@
 //
 // The input is snapped by default to a coarser power of two, 1/32 of a base pixel (2^-7 m, 7.8 mm,
 // at 1:1,000; 2^-2 m at 1:50,000), and the chunks' grid may then be that one: every input point
-// lies on it exactly, so only the points the generalization and the surfaces make (split
-// midpoints and centres) are rounded when a chunk is written. On bgt_otterlo_1800m the chunks
+// lies on it exactly, and the points the generalization and the surfaces make (split midpoints
+// and centres) are put on it where they can be (snap-new-vertices.ts). On bgt_otterlo_1800m the chunks
 // took 2.31 MB gzip with the input snapped to 1 mm and the chunks on 2^-10 m, 2.07 MB with both
 // on 2^-7 m; its line chunks 0.29 and 0.24 MB. Rounding every point to 2^-7 m instead (1/36 of a
 // pixel, the input on 1 mm) moved corners enough to leave a pixel of the e2e lens test

@@ -12,6 +12,7 @@
 //   re-emits of faces that end soon after (late-reemits.ts) and those a merge held back may
 //   cross (hold-line.ts); a face held back keeps showing until its winner's line brings its
 //   class back, handed on by a split to the part whose face's line does (followSplit).
+import { snapNewVertices } from '../geom/snap-new-vertices.js';
 import { planeDeficit } from '../geom/plane-deficit.js';
 import { orient } from '../geom/predicates.js';
 import { scaleAtZ, zAtScale, type ScaleInfo } from '../../format/scale.js';
@@ -203,6 +204,8 @@ export interface SurfaceOrigin {
 export interface SurfaceOptions {
   /** Smooth merges: the loser's area tilted over its transition (docs/FORMAT.md, "Smooth cube"). */
   smooth?: boolean;
+  /** The chunks' coarsest grid: the points the surfaces make go onto it where they can (snap-new-vertices.ts; 0: none). */
+  snapStep?: number;
 }
 
 /**
@@ -341,6 +344,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   const steps = t.meta.steps;
   const zTop = steps + 1;
   const out = new Surfaces(t.xs, t.ys);
+  const snapStep = opts.snapStep ?? 0;
   const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0, heldMerges: 0, skippedRemovals: 0, notchFallbacks: 0, splitPartsToHeld: 0, splitFollows: 0, piecesToHeld: 0, removalsToHeld: 0, mergesToHeld: 0, apexes: 0 };
   const { xs, ys, faces, edges } = t;
   // Edges by the state they start and end in.
@@ -687,7 +691,9 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     byFace: SurfacesByFace, area: number[], loser: number, shared: ReadonlyMap<number, number>, segments: ReadonlySet<string>, zFoot: number, zMerge: number, key: string, kind: 'merge' | 'split',
     upper: number, lowerOf: (a: number, b: number, c: number) => number, upperOf?: (a: number, b: number, c: number) => number | undefined,
   ): Ramp => {
+    const firstNew = out.vertexCount;
     const own = splitChords(area, out.xs, out.ys, (v) => shared.has(v), (a, b) => segments.has(edgeKey(a, b)), (x, y) => out.addVertex(x, y));
+    snapNewVertices(own, out.xs, out.ys, Array.from({ length: out.vertexCount - firstNew }, (_, i) => firstNew + i), snapStep);
     stats[kind] += own.length / 3;
     stats.chordSplits += (own.length - area.length) / 3;
     const pairs = byFace.overlapping(loser, own, zFoot, SURFACE_GAP, reachBack(zMerge));
@@ -720,6 +726,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         // class at once. An apex at its centre, half way to zMerge, makes it recede from its
         // sides to the centre instead; above the corners, it stays above what they wait for.
         const m = out.addVertex(...out.centre(a, b, c));
+        snapNewVertices([a, b, m, b, c, m, c, a, m], out.xs, out.ys, [m], snapStep);
         apexes.set(m, za + (zMerge - za) / 2);
         stats.apexes++;
         emitOne(a, b, m, lower, up);

@@ -36,6 +36,8 @@ export interface GeneralizeOptions {
    * neighbourhoods do not meet) into one step, so each step's transition is longer.
    */
   group?: number;
+  /** The chunks' coarsest grid: a split's new points go onto it where they can (split.ts; 0: none). */
+  snapStep?: number;
   /** Called every `progressEvery` steps. */
   onProgress?: (step: number, aliveFaces: number) => void;
 }
@@ -80,6 +82,7 @@ class Generalization {
   private readonly compat: Float64Array[];
   private readonly reemitLimits: ReemitLimits;
   private readonly hysteresis: number;
+  private readonly snapStep: number;
   private readonly group: number;
   /** Faces at step 0: the base of the scale of every step. */
   private readonly nb: number;
@@ -96,6 +99,7 @@ class Generalization {
     this.st = st;
     this.reemitLimits = { factor: opts.reemitFactor ?? 3, slack: opts.reemitSlack ?? 8 };
     this.hysteresis = opts.hysteresis ?? 1.25;
+    this.snapStep = opts.snapStep ?? 0;
     this.group = Math.max(1, Math.floor(opts.group ?? 1));
     this.nb = st.aliveFaces;
     this.facesAlive = [this.nb];
@@ -178,7 +182,7 @@ class Generalization {
   /** Splits L among its neighbours or merges it into `best`; returns the faces it changed. */
   private event(L: number, best: number, splitting: boolean, k: number, tol: number): number[] {
     const { st } = this;
-    const res = splitting ? splitFace(st, L) : null;
+    const res = splitting ? splitFace(st, L, this.snapStep) : null;
     if (res) {
       const { receivers, edges } = handOver(st, L, res);
       this.events.push({ kind: EventKind.Split, step: k, loser: L, into: -1, tris: res.tris, triFaces: res.triFaces });

@@ -3,6 +3,7 @@
 // pieces around its centroid and the midpoints of its inner edges, and each piece goes to the
 // neighbour it touches. The cuts through midpoints follow the face's centre line, so each
 // neighbour takes the half of the road on its side.
+import { snapNewVertices } from '../geom/snap-new-vertices.js';
 import { triangulateRegion } from '../geom/cdt.js';
 import { LocalVertices } from '../geom/local-vertices.js';
 import type { PlanarState } from './planar-state.js';
@@ -31,7 +32,11 @@ interface Seg {
  * Splits face L among its neighbours. Returns null, changing nothing, when the face cannot be
  * triangulated (the caller then merges it whole).
  */
-export function splitFace(st: PlanarState, L: number): SplitResult | null {
+/**
+ * Splits face L among its neighbours. The midpoints and centres it makes go onto the grid of
+ * `snapStep` (0: none) where their triangles stay counterclockwise (snap-new-vertices.ts).
+ */
+export function splitFace(st: PlanarState, L: number, snapStep = 0): SplitResult | null {
   const edgeSet = st.faceEdges[L];
   if (!edgeSet || edgeSet.size === 0) return null;
   const edgesOfL = [...edgeSet].sort((p, q) => p - q);
@@ -110,16 +115,13 @@ export function splitFace(st: PlanarState, L: number): SplitResult | null {
   // a triangle gets its centroid when its pieces go to more than one face.
   const outTris: number[] = [];
   const outFaces: number[] = [];
-  const gains = new Map<number, number>();
   const mid = new Map<number, number>(); // key min*nl+max -> global vertex
   const newSegs: { a: number; b: number; left: number; right: number }[] = []; // global vertex ids
   const gx = (v: number): number => st.xs[v]!, gy = (v: number): number => st.ys[v]!;
+  const firstNew = st.size;
   const emit = (a: number, b: number, c: number, face: number): void => {
     outTris.push(a, b, c);
     outFaces.push(face);
-    const ax = gx(a), ay = gy(a);
-    const a2 = (gx(b) - ax) * (gy(c) - ay) - (gx(c) - ax) * (gy(b) - ay);
-    gains.set(face, (gains.get(face) ?? 0) + a2);
   };
   for (let t = 0; t < nt; t++) {
     const p = [tri[3 * t]!, tri[3 * t + 1]!, tri[3 * t + 2]!];
@@ -170,6 +172,15 @@ export function splitFace(st: PlanarState, L: number): SplitResult | null {
       const before = labels[(i + m - 1) % m]!, after = labels[i]!;
       if (before !== after) newSegs.push({ a: cen, b: ring[i]!, left: after, right: before });
     }
+  }
+  if (snapStep > 0) snapNewVertices(outTris, st.xs, st.ys, Array.from({ length: st.size - firstNew }, (_, i) => firstNew + i), snapStep);
+  // Each receiver's gain of area, from the triangles as they finally lie.
+  const gains = new Map<number, number>();
+  for (let t = 0; t < outFaces.length; t++) {
+    const a = outTris[3 * t]!, b = outTris[3 * t + 1]!, c = outTris[3 * t + 2]!;
+    const ax = gx(a), ay = gy(a);
+    const a2 = (gx(b) - ax) * (gy(c) - ay) - (gx(c) - ax) * (gy(b) - ay);
+    gains.set(outFaces[t]!, (gains.get(outFaces[t]!) ?? 0) + a2);
   }
   // Boundary with the outside stays, now with the receiving faces inside.
   for (const s of segs) {
