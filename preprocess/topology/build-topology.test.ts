@@ -278,6 +278,19 @@ test('an outer ring passing 0.09 mm from vertices of its own hole builds: snappi
   });
 });
 
+test('at the default precision (2^-7 m at 1:1,000) that ring crosses its hole, and the refusal says how to snap less', async (t) => {
+  // The case above: the hole's vertices 0.08 and 0.09 mm below A's side. Snapped to 7.8 mm they
+  // land on either side of it.
+  const outer: XY[] = [[0, 0], [30, 0], [30, 20], [0, 29.123]];
+  const hole: XY[] = [[10, 10], [14.005, 24.864], [16.001, 24.257], [20, 10]];
+  const c = writeCase(t, 'near-hole.geojson', collection([feature('A', polygon(outer, hole)), feature('B', polygon([...hole].reverse()), 'water')]));
+  const out = path.join(c.dir, 'out.tgap');
+  const r = await ssc.run(['generalize', c.input, '--style', c.style, '--out', out, '--quiet']);
+  assert.notEqual(r.code, 0);
+  assert.match(r.stderr, /crosses feature #\d \(id "[AB]"\) \(overlap\) \(the snapping to a grid of 0\.0078125 moved points; a finer --precision may keep them apart\)/);
+  assert.equal(existsSync(out), false, 'no output file');
+});
+
 test('a MultiPolygon feature with two parts', async (t) => {
   //  +----+----+----+
   //  | A1 | B  | A2 |      A is one feature of two parts on either side of B.

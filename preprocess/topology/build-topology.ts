@@ -48,7 +48,8 @@ export function buildTopology(features: InputFeature[], opts: TopologyOptions): 
   // Half-edges with their twins; then the checks that they make a partition.
   let he = buildHalfEdges(rings, xs, ys, refusal);
   refusal.check();
-  checkCrossings(he, xs, ys, refusal);
+  // A crossing may be the snapping's doing: then say how to snap less.
+  checkCrossings(he, xs, ys, refusal, repairs.snappedPoints > 0 ? `the snapping to a grid of ${opts.precision} moved points; a finer --precision may keep them apart` : null);
   refusal.check();
   let gaps: { face: number; area2: number }[] = [];
   if (slivers) {

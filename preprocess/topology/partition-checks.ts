@@ -7,8 +7,11 @@ import { nextInFace, type HalfEdges } from './half-edges.js';
 import type { Refusal } from './refusal.js';
 import { crossingPoint, forEachNearPair, segmentsConflict } from './segment-conflict.js';
 
-/** Notes two segments that cross or touch other than at a shared vertex (an overlap), each pair of features once. */
-export function checkCrossings(he: HalfEdges, xs: Float64Array, ys: Float64Array, refusal: Refusal): void {
+/**
+ * Notes two segments that cross or touch other than at a shared vertex (an overlap), each pair of
+ * features once; `snapNote` (when the snapping moved points) is added to each.
+ */
+export function checkCrossings(he: HalfEdges, xs: Float64Array, ys: Float64Array, refusal: Refusal, snapNote: string | null = null): void {
   const { from, to, face, twin, count: nh } = he;
   const segs: number[] = [];
   for (let h = 0; h < nh; h++) if (h < twin[h]!) segs.push(h);
@@ -29,7 +32,7 @@ export function checkCrossings(he: HalfEdges, xs: Float64Array, ys: Float64Array
     // (or a part of one feature across another of its parts).
     refusal.note(
       f1 === other ? 'selfIntersection' : 'overlap',
-      f1 === other ? 'is self-intersecting: its boundary crosses itself' : `crosses ${refusal.describe(other)} (overlap)`,
+      (f1 === other ? 'is self-intersecting: its boundary crosses itself' : `crosses ${refusal.describe(other)} (overlap)`) + (snapNote ? ` (${snapNote})` : ''),
       f1, ix, iy,
     );
   });
