@@ -16,7 +16,7 @@
 // at 1:1,000; 2^-2 m at 1:50,000), and the chunks' grid may then be that one: every input point
 // lies on it exactly, and the points the generalization and the surfaces make (split midpoints
 // and centres) are put on it where they can be (snap-new-vertices.ts). On bgt_otterlo_1800m the chunks
-// took 2.31 MB gzip with the input snapped to 1 mm and the chunks on 2^-10 m, 2.07 MB with both
+// took 2.31 MB gzip with the input snapped to 1 mm and the chunks on 2^-10 m, 2.08 MB with both
 // on 2^-7 m; its line chunks 0.29 and 0.24 MB. Rounding every point to 2^-7 m instead (1/36 of a
 // pixel, the input on 1 mm) moved corners enough to leave a pixel of the e2e lens test
 // uncovered; a decimal grid such as 1 mm is rounded so, and its chunks keep the 1/256 grid.

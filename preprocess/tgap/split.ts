@@ -30,11 +30,8 @@ interface Seg {
 
 /**
  * Splits face L among its neighbours. Returns null, changing nothing, when the face cannot be
- * triangulated (the caller then merges it whole).
- */
-/**
- * Splits face L among its neighbours. The midpoints and centres it makes go onto the grid of
- * `snapStep` (0: none) where their triangles stay counterclockwise (snap-new-vertices.ts).
+ * triangulated (the caller then merges it whole). The midpoints and centres it makes go onto the
+ * grid of `snapStep` (0: none) where their triangles stay counterclockwise (snap-new-vertices.ts).
  */
 export function splitFace(st: PlanarState, L: number, snapStep = 0): SplitResult | null {
   const edgeSet = st.faceEdges[L];
@@ -173,7 +170,7 @@ export function splitFace(st: PlanarState, L: number, snapStep = 0): SplitResult
       if (before !== after) newSegs.push({ a: cen, b: ring[i]!, left: after, right: before });
     }
   }
-  if (snapStep > 0) snapNewVertices(outTris, st.xs, st.ys, Array.from({ length: st.size - firstNew }, (_, i) => firstNew + i), snapStep);
+  snapNewVertices(outTris, st.xs, st.ys, Array.from({ length: st.size - firstNew }, (_, i) => firstNew + i), snapStep);
   // Each receiver's gain of area, from the triangles as they finally lie.
   const gains = new Map<number, number>();
   for (let t = 0; t < outFaces.length; t++) {
