@@ -16,21 +16,21 @@ const OFFSETS: [number, number][] = (() => {
 })();
 
 /**
- * Moves each vertex of `fresh` (ids into xs, ys, in this order) onto the grid of `step`: to the
+ * Moves each vertex from `first` to `end` (not included; ids into xs, ys, in this order), the
+ * ones just made, onto the grid of `step`: to the
  * grid point nearest it (counting from the one it rounds to) at which every triangle of `tris`
  * (counterclockwise, 3 ids each) that uses it stays counterclockwise. A vertex with no such point
  * within REACH steps stays where it is. Each test uses the positions as they are by then, so
- * every triangle with a fresh vertex is counterclockwise at the end if it was before. Returns the
+ * every triangle with a moved vertex is counterclockwise at the end if it was before. Returns the
  * number of vertices left off the grid.
  */
-export function snapNewVertices(tris: ArrayLike<number>, xs: Float64Array, ys: Float64Array, fresh: readonly number[], step: number): number {
-  if (fresh.length === 0 || !(step > 0)) return 0;
-  const isFresh = new Set(fresh);
+export function snapNewVertices(tris: ArrayLike<number>, xs: Float64Array, ys: Float64Array, first: number, end: number, step: number): number {
+  if (end <= first || !(step > 0)) return 0;
   const around = new Map<number, number[]>();
   for (let t = 0; t + 2 < tris.length; t += 3) {
     for (let j = 0; j < 3; j++) {
       const v = tris[t + j]!;
-      if (!isFresh.has(v)) continue;
+      if (v < first || v >= end) continue;
       let l = around.get(v);
       if (!l) around.set(v, (l = []));
       l.push(t);
@@ -41,7 +41,7 @@ export function snapNewVertices(tris: ArrayLike<number>, xs: Float64Array, ys: F
     return orient(xs[a]!, ys[a]!, xs[b]!, ys[b]!, xs[c]!, ys[c]!) > 0;
   };
   let off = 0;
-  for (const v of fresh) {
+  for (let v = first; v < end; v++) {
     const x = xs[v]!, y = ys[v]!;
     const gx = Math.round(x / step), gy = Math.round(y / step);
     if (gx * step === x && gy * step === y) continue;

@@ -693,7 +693,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   ): Ramp => {
     const firstNew = out.vertexCount;
     const own = splitChords(area, out.xs, out.ys, (v) => shared.has(v), (a, b) => segments.has(edgeKey(a, b)), (x, y) => out.addVertex(x, y));
-    snapNewVertices(own, out.xs, out.ys, Array.from({ length: out.vertexCount - firstNew }, (_, i) => firstNew + i), snapStep);
+    snapNewVertices(own, out.xs, out.ys, firstNew, out.vertexCount, snapStep);
     stats[kind] += own.length / 3;
     stats.chordSplits += (own.length - area.length) / 3;
     const pairs = byFace.overlapping(loser, own, zFoot, SURFACE_GAP, reachBack(zMerge));
@@ -726,7 +726,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         // class at once. An apex at its centre, half way to zMerge, makes it recede from its
         // sides to the centre instead; above the corners, it stays above what they wait for.
         const m = out.addVertex(...out.centre(a, b, c));
-        snapNewVertices([a, b, m, b, c, m, c, a, m], out.xs, out.ys, [m], snapStep);
+        snapNewVertices([a, b, m, b, c, m, c, a, m], out.xs, out.ys, m, m + 1, snapStep);
         apexes.set(m, za + (zMerge - za) / 2);
         stats.apexes++;
         emitOne(a, b, m, lower, up);

@@ -170,7 +170,7 @@ export function splitFace(st: PlanarState, L: number, snapStep = 0): SplitResult
       if (before !== after) newSegs.push({ a: cen, b: ring[i]!, left: after, right: before });
     }
   }
-  snapNewVertices(outTris, st.xs, st.ys, Array.from({ length: st.size - firstNew }, (_, i) => firstNew + i), snapStep);
+  snapNewVertices(outTris, st.xs, st.ys, firstNew, st.size, snapStep);
   // Each receiver's gain of area, from the triangles as they finally lie.
   const gains = new Map<number, number>();
   for (let t = 0; t < outFaces.length; t++) {
