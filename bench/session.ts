@@ -21,7 +21,7 @@
 import { cp, mkdir, mkdtemp, rm, stat, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import type { Browser } from 'playwright-core';
+import type { Browser, BrowserContext, Page } from 'playwright-core';
 import type { CubeMeta } from '../format/cube-index.js';
 import { loadStyle } from '../preprocess/style.js';
 import { createStaticServer } from '../server/static-server.js';
@@ -97,8 +97,16 @@ const SLOW_NETWORK = { offline: false, latency: 150, downloadThroughput: (1.6e6 
 
 const fileKind = (p: string): string => CUBE_FILE_KINDS.find(([re]) => re.test(p.split('?')[0]!))?.[1] ?? 'other';
 
-/** Opens `page` in a fresh context (an empty cache), runs the session, and sums up the server's log. */
-async function runPage(browser: Browser, url: string, views: (ProjectedView | LngLatView)[], log: Sent[], isData: (p: string) => boolean): Promise<RunResult> {
+interface OpenPage {
+  context: BrowserContext;
+  page: Page;
+  first: FirstMap;
+  /** Errors the page threw or logged. */
+  problems: string[];
+}
+
+/** Opens `url` in a fresh context (an empty cache; on `network`'s conditions when given) up to its first complete map; `log` starts empty. */
+async function openToFirstMap(browser: Browser, url: string, log: Sent[], network?: typeof SLOW_NETWORK): Promise<OpenPage> {
   const context = await browser.newContext({ viewport: { width: WIDTH, height: HEIGHT } });
   try {
     const page = await context.newPage();
@@ -107,10 +115,25 @@ async function runPage(browser: Browser, url: string, views: (ProjectedView | Ln
     page.on('console', (m) => {
       if (m.type() === 'error') problems.push(m.text());
     });
+    if (network) {
+      const cdp = await context.newCDPSession(page);
+      await cdp.send('Network.enable');
+      await cdp.send('Network.emulateNetworkConditions', network);
+    }
     log.length = 0;
     await page.goto(url);
     await page.waitForFunction(() => typeof bench !== 'undefined');
-    const first = await page.evaluate(() => bench.first);
+    return { context, page, first: await page.evaluate(() => bench.first), problems };
+  } catch (err) {
+    await context.close();
+    throw err;
+  }
+}
+
+/** Opens `page` in a fresh context (an empty cache), runs the session, and sums up the server's log. */
+async function runPage(browser: Browser, url: string, views: (ProjectedView | LngLatView)[], log: Sent[], isData: (p: string) => boolean): Promise<RunResult> {
+  const { context, page, first, problems } = await openToFirstMap(browser, url, log);
+  try {
     const frames = await page.evaluate(async (vs) => {
       const out: FrameResult[] = [];
       for (const v of vs) out.push(await bench.frame(v));
@@ -142,18 +165,8 @@ async function runPage(browser: Browser, url: string, views: (ProjectedView | Ln
 
 /** The page opened in a fresh context on SLOW_NETWORK, to its first complete map. */
 async function firstOnSlowNetwork(browser: Browser, url: string, log: Sent[]): Promise<{ slowFirstMs: number; slowBytesBeforeFirst: number }> {
-  const context = await browser.newContext({ viewport: { width: WIDTH, height: HEIGHT } });
+  const { context, first, problems } = await openToFirstMap(browser, url, log, SLOW_NETWORK);
   try {
-    const page = await context.newPage();
-    const problems: string[] = [];
-    page.on('pageerror', (e) => problems.push(e.message));
-    const cdp = await context.newCDPSession(page);
-    await cdp.send('Network.enable');
-    await cdp.send('Network.emulateNetworkConditions', SLOW_NETWORK);
-    log.length = 0;
-    await page.goto(url);
-    await page.waitForFunction(() => typeof bench !== 'undefined');
-    const first = await page.evaluate(() => bench.first);
     if (problems.length > 0) throw new Error(`${url} on a slow network: ${problems.join('; ')}`);
     return { slowFirstMs: first.ms, slowBytesBeforeFirst: log.reduce((s, r) => s + (r.at <= first.at ? r.bytes : 0), 0) };
   } finally {
