@@ -255,6 +255,10 @@ test('an island: a face alone in another face\'s hole, no node on its ring', asy
   }
 });
 
+// A's sloped side and its hole (filled by B), whose vertices come within 0.1 mm of that side.
+const NEAR_HOLE_OUTER: XY[] = [[0, 0], [30, 0], [30, 20], [0, 29.123]];
+const NEAR_HOLE: XY[] = [[10, 10], [14.005, 24.864], [16.001, 24.257], [20, 10]]; // clockwise
+
 test('an outer ring passing 0.09 mm from vertices of its own hole builds: snapping does not fold it onto the hole', async (t) => {
   //  (0,29.123) +._
   //             |  '-._           A's sloped side runs from (30,20) to (0,29.123); two vertices of
@@ -262,8 +266,7 @@ test('an outer ring passing 0.09 mm from vertices of its own hole builds: snappi
   //             |  / B \ |         the precision (1 mm). Put into A's side as T-junctions they
   //             |  +---+ |         folded A's outer ring onto its hole, and the input was refused
   //      (0,0)  +--------+ (30,0)  as an overlap of A and B.
-  const outer: XY[] = [[0, 0], [30, 0], [30, 20], [0, 29.123]];
-  const hole: XY[] = [[10, 10], [14.005, 24.864], [16.001, 24.257], [20, 10]]; // clockwise
+  const outer = NEAR_HOLE_OUTER, hole = NEAR_HOLE;
   const side = (x: number): number => 29.123 - (9.123 * x) / 30;
   const gap = (p: XY): number => (side(p[0]) - p[1]) * Math.cos(Math.atan(9.123 / 30));
   assert.ok(gap(hole[1]!) > 0 && gap(hole[1]!) < 1e-4 && gap(hole[2]!) > 0 && gap(hole[2]!) < 1e-4, 'the hole comes within 0.1 mm of the side');
@@ -281,9 +284,7 @@ test('an outer ring passing 0.09 mm from vertices of its own hole builds: snappi
 test('at the default precision (2^-7 m at 1:1,000) that ring crosses its hole, and the refusal says how to snap less', async (t) => {
   // The case above: the hole's vertices 0.08 and 0.09 mm below A's side. Snapped to 7.8 mm they
   // land on either side of it.
-  const outer: XY[] = [[0, 0], [30, 0], [30, 20], [0, 29.123]];
-  const hole: XY[] = [[10, 10], [14.005, 24.864], [16.001, 24.257], [20, 10]];
-  const c = writeCase(t, 'near-hole.geojson', collection([feature('A', polygon(outer, hole)), feature('B', polygon([...hole].reverse()), 'water')]));
+  const c = writeCase(t, 'near-hole.geojson', collection([feature('A', polygon(NEAR_HOLE_OUTER, NEAR_HOLE)), feature('B', polygon([...NEAR_HOLE].reverse()), 'water')]));
   const out = path.join(c.dir, 'out.tgap');
   const r = await ssc.run(['generalize', c.input, '--style', c.style, '--out', out, '--quiet']);
   assert.notEqual(r.code, 0);
