@@ -2,7 +2,8 @@
 // once while it stays needed, the nearest first; requests for a view left behind aborted; a
 // small GPU memory budget evicts and later fetches again; 30% failing requests still give a
 // complete map; a 404 and corrupt chunks are reported as errors; sub-index files load on
-// demand; gzip bodies without Content-Encoding are read. The cube is a real one of
+// demand; gzip bodies without Content-Encoding are read; at the floor the floor chunks come
+// first, the cube's after them as the margin. The cube is a real one of
 // bgt_otterlo_400m in small chunks (about 60) with sub-index files.
 import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
@@ -21,6 +22,7 @@ import { decodeLineChunk } from '../format/line-chunk.js';
 import { openMap, type MapPage } from './helpers/browser.js';
 import { compareIds, cpuSlice, type BuiltCube, type CubeContents } from './helpers/cube.js';
 import { checkAndClose, setUpTestBed, tearDownTestBed } from './helpers/test-bed.js';
+import { eventually } from '../testing/event-loop.js';
 import { readIds, waitIdle } from './helpers/map-page.js';
 import type { LoggedRequest, TestServer } from './helpers/test-server.js';
 
@@ -175,6 +177,48 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     assert.deepEqual(new Set(subs.keys()), reached);
     for (const [f, n] of subs) assert.equal(n, 1, `${f} fetched ${n} times`);
     await assertMatchesSlicer(p, views[views.length - 1]!, z, 'after the pans');
+  });
+
+  test('at the floor the first complete map needs the floor chunks alone, and equals the CPU slicer', async () => {
+    // The cube's own chunks are all missing: what the map shows comes from the floor chunks.
+    server.faults.notFound = files(contents.leaves);
+    const [view] = pickPair((a) => contents.floorLeaves.filter((l) => boxMeets(l.bbox, { ground: viewBbox(fitBbox(a, W, H)), zMin: 0, zMax: 0 })).length >= 2, (a) => [a]);
+    const p = await open(view, 0);
+    assert.equal(await waitIdle(p.page), true, 'complete without any of the cube\'s chunks');
+    await assertMatchesSlicer(p, view, 0, 'at the floor');
+    const onScreen = contents.floorLeaves.filter((l) => boxMeets(l.bbox, { ground: viewBbox(fitBbox(view, W, H)), zMin: 0, zMax: 0 }));
+    const counts = countBy(chunkRequests());
+    for (const l of onScreen) assert.equal(counts.get(l.file), 1, `${l.file} (floor, on screen) fetched once`);
+    const floorFiles = files(contents.floorLeaves);
+    for (const f of counts.keys()) assert.ok(floorFiles.has(f) || server.faults.notFound.has(f), `${f} is a chunk of the cube`);
+    assert.ok(contents.floorTop > 0 && contents.floorLeaves.length > 1, `${contents.floorLeaves.length} floor chunks below z ${contents.floorTop}`);
+  });
+
+  test('at the floor the cube\'s chunks come after the floor\'s, as the margin, and a zoom out draws from them without fetching more', async () => {
+    const [view] = pickPair((a) => needed(a, 0).visible.length >= 3, (a) => [a]);
+    const p = await open(view, 0);
+    assert.equal(await waitIdle(p.page), true);
+    const floorFiles = files(contents.floorLeaves);
+    // The margin is the cube's chunks over the view grown by MARGIN, all of them (those under the view too).
+    const margin = needed(view, 0).all;
+    await eventually(() => margin.every((l) => countBy(chunkRequests()).has(l.file)), 'the margin fetched');
+    const order = chunkRequests().map(fileOf);
+    const firstCube = order.findIndex((f) => !floorFiles.has(f));
+    assert.ok(firstCube > 0, 'a floor chunk first');
+    assert.ok(order.slice(firstCube).every((f) => !floorFiles.has(f)), `the cube's chunks after every floor chunk: ${order.join(' ')}`);
+    assert.deepEqual(new Set(order.slice(firstCube)), files(margin));
+    // The slice just above the floor's top over the same ground: on screen the cube's chunks,
+    // here already but for those whose triangles start between the floor and the slice.
+    const before = chunkRequests().length;
+    const z = contents.floorTop * 1.5;
+    await goTo(p, view, z);
+    assert.equal(await waitIdle(p.page), true);
+    const later = chunkRequests().slice(before).map(fileOf);
+    const marginFiles = files(margin);
+    for (const l of needed(view, z).visible) assert.ok(marginFiles.has(l.file) || later.includes(l.file), `${l.file} on screen`);
+    const now = files(needed(view, z).all);
+    for (const f of later) assert.ok(now.has(f) && !marginFiles.has(f), `${f}: fetched again, or not the cube's over the view`);
+    await assertMatchesSlicer(p, view, z, 'just above the floor');
   });
 
   test('chunks on screen and nearest the view centre are fetched first', async () => {

@@ -1,7 +1,7 @@
 // ssc build / slice / inspect on bgt_otterlo_400m: the cube sliced through its chunks gives
 // the 2D maps of the tGAP (the oracle), chunking loses nothing, files round-trip bit-exactly,
 // builds are deterministic and damaged chunks are named; the smooth cube (--smooth) is a
-// partition at every z and its merges are gradual.
+// partition at every z, its merges are gradual, and its floor chunks slice as its chunks do.
 import test from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, mkdirSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
@@ -23,6 +23,7 @@ import { dataset, styleFile } from '../testing/paths.js';
 import { readIds } from '../testing/ids-file.js';
 import { runSsc } from '../testing/run-ssc.js';
 import { tempDir } from '../testing/temp-dir.js';
+import { referencedFiles } from '../client/src/offline/cube-files.js';
 
 const W = 240, H = 180;
 
@@ -265,9 +266,12 @@ test('bgt_otterlo_400m cube', async (t) => {
   await t.test('inspect reports sizes, overhead and the per-scale view table', () => {
     const r = runSsc(['inspect', cube, '--json']);
     assert.equal(r.code, 0, r.stderr);
-    const rep = JSON.parse(r.stdout) as { chunks: number; triangles: number; bytes: { total: number; cv: number }; overhead: number; views: unknown[] };
-    const files = readdirSync(cube).filter((n) => n.startsWith('c-') && n.endsWith('.bin'));
+    const rep = JSON.parse(r.stdout) as { chunks: number; triangles: number; bytes: { total: number; cv: number }; overhead: number; views: unknown[]; floor: { chunks: number } | null };
+    const index = JSON.parse(readFileSync(path.join(cube, 'index.json'), 'utf8')) as { floor: { root: unknown } };
+    const floorFiles = new Set(referencedFiles(JSON.stringify(index.floor.root)));
+    const files = readdirSync(cube).filter((n) => n.startsWith('c-') && n.endsWith('.bin') && !floorFiles.has(n));
     assert.equal(rep.chunks, files.length);
+    assert.equal(rep.floor?.chunks, floorFiles.size);
     assert.equal(rep.bytes.total, files.reduce((a, f) => a + readFileSync(path.join(cube, f)).length, 0));
     assert.ok(rep.bytes.cv <= 0.25, `chunk sizes vary too much (CV ${rep.bytes.cv})`);
     // Compressed chunks (version 2) pay for chunking also in their codecs starting afresh and
@@ -356,6 +360,51 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
       assert.equal(bad, 0, `z ${z}: ${bad} pixels wrong, first ${first}`);
     }
     for (const z of [0, zMax]) assert.deepEqual(smooth(view, z).ids, classic(view, z).ids, `z ${z}: smooth and classic differ`);
+  });
+
+  await t.test('the floor chunks hold the cube\'s floor triangles again, and slice below their top as the cube\'s chunks do', async () => {
+    const reader = await CubeReader.open(cubes.smooth);
+    const floor = reader.index.floor;
+    assert.ok(floor, 'the cube has floor chunks');
+    const everywhere = { ground: [-Infinity, -Infinity, Infinity, Infinity] as [number, number, number, number], zMin: -Infinity, zMax: Infinity };
+    // Each triangle as its corners (absolute, in order) and upper face; its lowest corner's z.
+    const triangles = (c: DecodedChunk): { key: string; zMin: number }[] => Array.from({ length: c.triangleCount }, (_, t) => {
+      const vs = [0, 1, 2].map((k) => c.indices[3 * t + k]!);
+      const corners = vs.map((v) => `${c.originX + c.positions[3 * v]!},${c.originY + c.positions[3 * v + 1]!}`).sort();
+      return { key: `${corners.join(' ')} ${c.upper[vs[0]!]}`, zMin: Math.min(...vs.map((v) => c.positions[3 * v + 2]!)) };
+    });
+    // The cube's chunks: their floor triangles (counted), and the lowest corner of all others.
+    const inCube = new Map<string, number>();
+    let top = Infinity;
+    for (const leaf of await reader.query(everywhere)) {
+      for (const tri of triangles(await reader.chunk(leaf))) {
+        if (tri.zMin <= 0) inCube.set(tri.key, (inCube.get(tri.key) ?? 0) + 1);
+        else top = Math.min(top, tri.zMin);
+      }
+    }
+    assert.equal(Math.fround(floor.top), top, 'the top is the lowest corner of every triangle off the floor');
+    const floorLeaves = await reader.query(everywhere, floor.root);
+    assert.ok(floorLeaves.length > 1, `floor chunks: ${floorLeaves.length}`);
+    for (const leaf of floorLeaves) {
+      assert.deepEqual([leaf.bbox[2], leaf.bbox[5]], [0, floor.top], `${leaf.file}: its box reaches from the floor to the top`);
+      for (const tri of triangles(await reader.chunk(leaf))) {
+        assert.equal(tri.zMin, 0, `${leaf.file}: a triangle off the floor`);
+        const n = inCube.get(tri.key) ?? 0;
+        assert.ok(n > 0, `${leaf.file}: a triangle the cube's chunks do not hold on the floor (${tri.key})`);
+        inCube.set(tri.key, n - 1);
+      }
+    }
+    assert.deepEqual([...inCube.values()].filter((n) => n !== 0), [], 'every floor triangle of the cube is in the floor chunks, once');
+    // A view of the middle of the data at a tenth of its width, and the whole extent.
+    const [x0, y0, x1, y1] = tgap.meta.extent;
+    const dx = (x1 - x0) / 20, dy = (y1 - y0) / 20, cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+    for (const view of [fitView([cx - dx, cy - dy, cx + dx, cy + dy], W, H), fitView(tgap.meta.extent, W, H)]) {
+      for (const z of [0, floor.top / 2]) {
+        const sl = new CpuSlicer(view, () => z);
+        for (const leaf of reader.queryLoaded({ ground: view.bbox, zMin: z, zMax: z }, floor.root)) sliceChunk(sl, await reader.chunk(leaf));
+        assert.deepEqual(sl.ids, smooth(view, z).ids, `z ${z}: the floor chunks' slice differs from the cube's`);
+      }
+    }
   });
 
   await t.test('a zoom out shows no face coming back, and no pixel going back to a class', (t) => {

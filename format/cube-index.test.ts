@@ -88,6 +88,14 @@ describe('index.json', () => {
     assert.throws(() => parseIndex({ ...index(), lines: [{ ...lines[0], lines: -1 }] }), /lines\.0\.lines/);
   });
 
+  test('floor chunks: read back when listed, absent when not, a bad entry refused by its place', () => {
+    const floor = { top: 0.25, root: { bbox: [0, 0, 0, 2, 1, 0.25] as [number, number, number, number, number, number], children: [{ bbox: [0, 0, 0, 2, 1, 0.25] as [number, number, number, number, number, number], file: 'c-eeeeeeeeeeeeeeee.bin', bytes: 90, triangles: 2, sha256: sha('e') }] } };
+    assert.deepEqual(parseIndex(JSON.parse(new TextDecoder().decode(encodeIndex({ ...index(), floor })))).floor, floor);
+    assert.equal(parseIndex(index()).floor, undefined, 'a cube of one chunk has no floor entry');
+    assert.throws(() => parseIndex({ ...index(), floor: { ...floor, top: 0 } }), /floor\.top: must be > 0/);
+    assert.throws(() => parseIndex({ ...index(), floor: { top: 0.25, root: { ...floor.root, children: [{ ...floor.root.children[0]!, file: '../c.bin' }] } } }), /floor\.root\.children\.0\.file/);
+  });
+
   test('the writer refuses what the reader would refuse', () => {
     const j = index();
     j.meta.extent = [0, 0, 1] as unknown as [number, number, number, number];

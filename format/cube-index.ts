@@ -107,6 +107,8 @@ const IndexSchema = v.object({
   version: v.literal(INDEX_VERSION, `must be ${INDEX_VERSION} (this reader's version)`),
   meta: MetaSchema,
   root: InnerSchema,
+  /** Floor chunks: the floor triangles again, for slices below `top` (docs/FORMAT.md, "Floor chunks"). */
+  floor: v.optional(v.object({ top: v.pipe(num(), v.gtValue(0, 'must be > 0')), root: InnerSchema })),
   /** Line chunks, a flat list (absent when the style has no linear classes). */
   lines: v.optional(v.array(LineLeafSchema)),
 });
@@ -125,9 +127,16 @@ export type { CubeStyle };
 
 export type CubeMeta = Omit<v.InferOutput<typeof MetaSchema>, 'style'> & { style: CubeStyle };
 
+/** The floor chunks' tree and the z below which they are all a slice needs. */
+export interface FloorIndex {
+  top: number;
+  root: InnerNode;
+}
+
 export interface CubeIndex {
   meta: CubeMeta;
   root: InnerNode;
+  floor?: FloorIndex;
   lines?: LineChunkLeaf[];
 }
 
@@ -166,6 +175,7 @@ export function parseIndex(json: unknown, file = 'index.json'): CubeIndex {
   return {
     meta: { ...out.meta, style: drawnStyle(out.meta.style) },
     root: out.root,
+    ...(out.floor ? { floor: out.floor } : {}),
     ...(out.lines ? { lines: out.lines } : {}),
   };
 }

@@ -43,8 +43,8 @@ export function boxAround(nodes: IndexNode[]): Box3 {
   return b;
 }
 
-/** The bytes of an index.json over this tree, with the least metadata the schema allows. */
-export function indexFile(root: InnerNode): Uint8Array {
+/** The bytes of an index.json over this tree (and floor chunks), with the least metadata the schema allows. */
+export function indexFile(root: InnerNode, floor?: CubeIndexJson['floor']): Uint8Array {
   const index: CubeIndexJson = {
     format: 'ssc-index',
     version: 1,
@@ -61,6 +61,7 @@ export function indexFile(root: InnerNode): Uint8Array {
       attributes: { count: 0, pageSize: 1, pages: [] },
     },
     root,
+    ...(floor ? { floor } : {}),
   };
   return encodeIndex(index);
 }
@@ -79,17 +80,25 @@ export interface HandMadeCube {
   files: Map<string, Uint8Array>;
 }
 
-/** A cube whose index.json lists these chunks directly under its root. */
-export function handMadeCube(chunks: ChunkSpec[]): HandMadeCube {
+/**
+ * A cube whose index.json lists these chunks directly under its root, and `floor.chunks` as
+ * floor chunks below `floor.top` (docs/FORMAT.md, "Floor chunks").
+ */
+export function handMadeCube(chunks: ChunkSpec[], floor?: { top: number; chunks: ChunkSpec[] }): HandMadeCube {
   const files = new Map<string, Uint8Array>();
   const leaves = new Map<string, ChunkLeaf>();
-  chunks.forEach((c, i) => {
-    const bytes = squareChunk(i);
-    files.set(c.file, bytes);
-    leaves.set(c.file, leafFor(c.file, c.bbox, bytes));
-  });
-  const children = [...leaves.values()];
-  files.set('index.json', indexFile({ bbox: boxAround(children), children }));
+  const add = (specs: ChunkSpec[]): ChunkLeaf[] =>
+    specs.map((c) => {
+      const bytes = squareChunk(files.size);
+      files.set(c.file, bytes);
+      const leaf = leafFor(c.file, c.bbox, bytes);
+      leaves.set(c.file, leaf);
+      return leaf;
+    });
+  const children = add(chunks);
+  const floorLeaves = add(floor?.chunks ?? []);
+  const floorRoot = floor ? { top: floor.top, root: { bbox: boxAround(floorLeaves), children: floorLeaves } } : undefined;
+  files.set('index.json', indexFile({ bbox: boxAround(children), children }, floorRoot));
   return { leaves, files };
 }
 

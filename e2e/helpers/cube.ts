@@ -79,6 +79,9 @@ export async function cpuSliceWithZ(cubeDir: string, a: SliceArgs): Promise<{ id
 export interface CubeContents {
   meta: CubeMeta;
   leaves: ChunkLeaf[];
+  /** The floor chunks (docs/FORMAT.md, "Floor chunks"; none in a cube of one chunk) and their top. */
+  floorLeaves: ChunkLeaf[];
+  floorTop: number;
   /** The line chunks (none in a cube without lines). */
   lines: LineChunkLeaf[];
   subIndexFiles: string[];
@@ -91,12 +94,17 @@ export async function readCube(cubeDir: string): Promise<CubeContents> {
   const index = parseIndex(JSON.parse(await readFile(path.join(cubeDir, 'index.json'), 'utf8')));
   const subs = new Map<string, InnerNode>();
   const all = { ground: [-Infinity, -Infinity, Infinity, Infinity] as [number, number, number, number], zMin: -Infinity, zMax: Infinity };
-  let q = queryIndex(index.root, all, (r) => subs.get(r));
-  while (q.missing.length > 0) {
-    for (const ref of q.missing) subs.set(ref, parseSubIndex(JSON.parse(await readFile(path.join(cubeDir, ref), 'utf8')), ref));
-    q = queryIndex(index.root, all, (r) => subs.get(r));
-  }
-  return { meta: index.meta, leaves: q.leaves, lines: index.lines ?? [], subIndexFiles: [...subs.keys()], root: index.root, subs };
+  const leavesOf = async (root: InnerNode): Promise<ChunkLeaf[]> => {
+    let q = queryIndex(root, all, (r) => subs.get(r));
+    while (q.missing.length > 0) {
+      for (const ref of q.missing) subs.set(ref, parseSubIndex(JSON.parse(await readFile(path.join(cubeDir, ref), 'utf8')), ref));
+      q = queryIndex(root, all, (r) => subs.get(r));
+    }
+    return q.leaves;
+  };
+  const leaves = await leavesOf(index.root);
+  const floorLeaves = index.floor ? await leavesOf(index.floor.root) : [];
+  return { meta: index.meta, leaves, floorLeaves, floorTop: index.floor?.top ?? 0, lines: index.lines ?? [], subIndexFiles: [...subs.keys()], root: index.root, subs };
 }
 
 /** Every triangle of a cube, x, y and z of each corner in ground coordinates, found by place. */

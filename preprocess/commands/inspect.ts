@@ -5,7 +5,7 @@ import { UsageError } from './args.js';
 
 export const usage = `ssc inspect <cube dir> [--json]
 Faces, steps, scale range, chunks and their sizes, overhead against one unchunked file, the
-index, the line chunks, and the triangles, bytes and lines a 1280x720 view at 0.28 mm per pixel
+index, the floor chunks, the line chunks, and the triangles, bytes and lines a 1280x720 view at 0.28 mm per pixel
 needs at 8 scales from the base scale to the whole extent.`;
 
 export async function run(argv: string[]): Promise<void> {
@@ -22,6 +22,7 @@ export async function run(argv: string[]): Promise<void> {
     `chunks: ${r.chunks}, ${r.triangles} triangles, ${kb(r.bytes.total)} (min ${kb(r.bytes.min)}, median ${kb(r.bytes.median)}, max ${kb(r.bytes.max)}, CV ${r.bytes.cv.toFixed(3)})`,
     `unchunked: ${kb(r.unchunkedBytes)}, chunked/unchunked ${r.overhead.toFixed(4)}`,
     `index: depth ${r.index.depth}, ${r.index.files} file(s), ${kb(r.index.bytes)}`,
+    r.floor ? `floor chunks (below z ${r.floor.top.toPrecision(3)}): ${r.floor.chunks}, ${r.floor.triangles} triangles, ${kb(r.floor.bytes)}` : 'no floor chunks',
     r.lines ? `line chunks: ${r.lines.chunks}, ${r.lines.lines} lines, ${kb(r.lines.bytes)}` : 'no lines',
     'a 1280x720 view (mean over a 5 x 5 grid of places):',
     '  scale        z          chunks  triangles  bytes      lines  line bytes',

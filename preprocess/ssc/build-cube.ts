@@ -5,7 +5,7 @@ import { createHash } from 'node:crypto';
 import { promises as fs } from 'node:fs';
 import path from 'node:path';
 import { brotliCompressSync, constants as zc, gzipSync } from 'node:zlib';
-import { encodeIndex, INDEX_FORMAT, INDEX_VERSION, type ChunkLeaf, type CubeIndexJson, type LineChunkLeaf } from '../../format/cube-index.js';
+import { encodeIndex, INDEX_FORMAT, INDEX_VERSION, type Box3, type ChunkLeaf, type CubeIndexJson, type LineChunkLeaf } from '../../format/cube-index.js';
 import { PIXEL_SIZE_MM } from '../../format/pixel-size.js';
 import { scaleAtZ } from '../../format/scale.js';
 import { writeDirAtomic } from '../io/atomic-write.js';
@@ -13,7 +13,7 @@ import { proj4Definition } from '../io/crs-definition.js';
 import { PHASES, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
 import { assembleChunk } from './assemble-chunk.js';
 import { chooseGrid, coarsestGrid } from './position-grid.js';
-import { planChunks } from './chunking.js';
+import { floorTop, planChunks, planFloorChunks, type ChunkPlan } from './chunking.js';
 import { encodeAttributePage, ATTRIBUTE_PAGE_SIZE } from '../../format/attribute-page.js';
 import { encodeFacePage, FACE_PAGE_SIZE } from '../../format/face-page.js';
 import { packTree, splitTree } from './rtree-index.js';
@@ -54,6 +54,8 @@ export interface BuildReport {
   surfaces: SurfaceStats;
   chunks: number;
   chunkBytes: number[];
+  /** Floor chunks written (docs/FORMAT.md, "Floor chunks"). */
+  floorChunks: number;
   /** Lines written (0 without line rules) and the bytes of each line chunk. */
   lines: number;
   lineChunkBytes: number[];
@@ -92,26 +94,37 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   lap('plan');
   const files = new Map<string, Uint8Array>();
   const classOf = (f: number): number => faces[f]!.classIndex;
-  const leaves: ChunkLeaf[] = [];
-  const chunkBytes: number[] = [];
   const chunkCount = plan.start.length - 1;
-  const trisOf = (c: number): Uint32Array => plan.order.subarray(plan.start[c], plan.start[c + 1]);
+  const trisOf = (p: ChunkPlan, c: number): Uint32Array => p.order.subarray(p.start[c], p.start[c + 1]);
   // The cube's grid, tried on every chunk up to 32 of them, spread evenly (position-grid.ts).
   const sampled = Math.min(32, chunkCount);
   const sample = Array.from({ length: sampled }, (_, i) => Math.floor((i * chunkCount) / sampled));
   const grid = chooseGrid(coarsest, (e) =>
-    sample.reduce((sum, c) => sum + (trisOf(c).length > 0 ? assembleChunk(surfaces, trisOf(c), surfaces.xs, surfaces.ys, classOf, e).bytes.length : 0), 0));
+    sample.reduce((sum, c) => sum + (trisOf(plan, c).length > 0 ? assembleChunk(surfaces, trisOf(plan, c), surfaces.xs, surfaces.ys, classOf, e).bytes.length : 0), 0));
   log(`position grid: 2^${grid}`);
-  for (let c = 0; c < chunkCount; c++) {
-    const tris = trisOf(c);
-    if (tris.length === 0) continue;
-    const ch = assembleChunk(surfaces, tris, surfaces.xs, surfaces.ys, classOf, grid);
-    const { name, sha256 } = hashName('c', ch.bytes, 'bin');
-    files.set(name, ch.bytes);
-    leaves.push({ bbox: ch.bbox, file: name, bytes: ch.bytes.length, triangles: ch.triangles, sha256 });
-    chunkBytes.push(ch.bytes.length);
-  }
+  /** The plan's chunks written; with `zTop`, floor chunks, whose boxes reach up to it. */
+  const writeChunks = (p: ChunkPlan, zTop?: number): ChunkLeaf[] => {
+    const out: ChunkLeaf[] = [];
+    for (let c = 0; c + 1 < p.start.length; c++) {
+      const tris = trisOf(p, c);
+      if (tris.length === 0) continue;
+      const ch = assembleChunk(surfaces, tris, surfaces.xs, surfaces.ys, classOf, grid);
+      const { name, sha256 } = hashName('c', ch.bytes, 'bin');
+      files.set(name, ch.bytes);
+      const bbox: Box3 = zTop === undefined ? ch.bbox : [ch.bbox[0], ch.bbox[1], ch.bbox[2], ch.bbox[3], ch.bbox[4], zTop];
+      out.push({ bbox, file: name, bytes: ch.bytes.length, triangles: ch.triangles, sha256 });
+    }
+    return out;
+  };
+  const leaves = writeChunks(plan);
   lap('chunks');
+  // The floor once more, in chunks of its own for the views below every other surface
+  // (docs/FORMAT.md, "Floor chunks"): none when nothing else lies above it, or when the cube is
+  // one chunk (every view takes it whole anyway).
+  const top = leaves.length > 1 ? floorTop(surfaces) : null;
+  const floorLeaves = top === null ? [] : writeChunks(planFloorChunks({ surfaces, xs: surfaces.xs, ys: surfaces.ys, ...view }, top), top);
+  if (top !== null) log(`floor: ${floorLeaves.length} chunks below z ${top}`);
+  lap('floor');
   // Lines from the tGAP as generalized (the smooth build's face ids do not matter to them).
   const lineStyle = parseStyle(t.meta.style, `${t.meta.source}: the tGAP's style`);
   const lines = lineStyle.lineRules.length > 0 ? cubeLines(t, lineStyle) : null;
@@ -138,8 +151,10 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
     files.set(name, bytes);
     attributePages.push({ first, file: name });
   }
-  const tree = splitTree(packTree(leaves), opts.subIndexBytes ?? 128 * 1024, (json) => hashName('i', json, 'json').name);
-  for (const f of tree.files) files.set(f.name, new TextEncoder().encode(f.json));
+  const subIndexBytes = opts.subIndexBytes ?? 128 * 1024;
+  const tree = splitTree(packTree(leaves), subIndexBytes, (json) => hashName('i', json, 'json').name);
+  const floor = top === null ? null : { top, tree: splitTree(packTree(floorLeaves), subIndexBytes, (json) => hashName('i', json, 'json').name) };
+  for (const f of [...tree.files, ...(floor?.tree.files ?? [])]) files.set(f.name, new TextEncoder().encode(f.json));
   const style = t.meta.style as { name?: string; attribution?: string };
   const proj4 = t.meta.proj4 ?? proj4Definition(t.meta.crs);
   const index: CubeIndexJson = {
@@ -166,6 +181,7 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
       attributes: { count: attrs.length, pageSize: ATTRIBUTE_PAGE_SIZE, pages: attributePages },
     },
     root: tree.root,
+    ...(floor ? { floor: { top: floor.top, root: floor.tree.root } } : {}),
     ...(lines ? { lines: lineLeaves } : {}),
   };
   files.set('index.json', encodeIndex(index));
@@ -187,5 +203,5 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
     }
   });
   lap('write');
-  return { triangles: surfaces.count, surfaces: stats, chunks: leaves.length, chunkBytes, lines: lines?.length ?? 0, lineChunkBytes: lineLeaves.map((l) => l.bytes), indexFiles: 1 + tree.files.length, files: files.size, bytesWritten, proj4, timings };
+  return { triangles: surfaces.count, surfaces: stats, chunks: leaves.length, chunkBytes: leaves.map((l) => l.bytes), floorChunks: floorLeaves.length, lines: lines?.length ?? 0, lineChunkBytes: lineLeaves.map((l) => l.bytes), indexFiles: 1 + tree.files.length + (floor?.tree.files.length ?? 0), files: files.size, bytesWritten, proj4, timings };
 }

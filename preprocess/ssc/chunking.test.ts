@@ -3,7 +3,7 @@
 // 78 bytes (docs/FORMAT.md), so 256 of them are 19,968 bytes.
 import test from 'node:test';
 import assert from 'node:assert/strict';
-import { planChunks, type ChunkPlan } from './chunking.js';
+import { floorTop, floorTriangles, planChunks, planFloorChunks, type ChunkPlan } from './chunking.js';
 import { Surfaces } from './surfaces.js';
 
 const N = 16;
@@ -31,19 +31,38 @@ function grid(): Grid {
   return { surfaces, xs, ys };
 }
 
+const input = (g: Grid, targetBytes: number): Parameters<typeof planChunks>[0] => ({
+  ...g,
+  extent: [0, 0, N, N],
+  scaleAt: (z) => 1000 * (1 + z),
+  viewPerScale: [0.3584, 0.2016],
+  targetBytes,
+});
+
 function plan(g: Grid, targetBytes: number): ChunkPlan {
-  return planChunks({
-    ...g,
-    extent: [0, 0, N, N],
-    scaleAt: (z) => 1000 * (1 + z),
-    viewPerScale: [0.3584, 0.2016],
-    targetBytes,
-  });
+  return planChunks(input(g, targetBytes));
 }
 
 /** The triangles of chunk c. */
 const chunk = (p: ChunkPlan, c: number): number[] => [...p.order.subarray(p.start[c], p.start[c + 1])];
 const chunkCount = (p: ChunkPlan): number => p.start.length - 1;
+
+/** The sum of the chunks' ground box areas (each triangle's cell counted whole). */
+function boxArea(g: Grid, p: ChunkPlan): number {
+  let area = 0;
+  for (let c = 0; c < chunkCount(p); c++) {
+    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+    for (const t of chunk(p, c)) {
+      const v = g.surfaces.v[3 * t]!;
+      x0 = Math.min(x0, g.xs[v]!);
+      y0 = Math.min(y0, g.ys[v]!);
+      x1 = Math.max(x1, g.xs[v]! + 1);
+      y1 = Math.max(y1, g.ys[v]! + 1);
+    }
+    area += (x1 - x0) * (y1 - y0);
+  }
+  return area;
+}
 
 test('every triangle is in exactly one chunk, and the chunks are evenly sized', () => {
   const p = plan(grid(), 32 * TRI_BYTES);
@@ -61,21 +80,9 @@ test('every triangle is in exactly one chunk, and the chunks are evenly sized', 
 test('the chunks are compact: their ground boxes tile the grid without overlap', () => {
   const g = grid();
   const p = plan(g, 32 * TRI_BYTES);
-  let area = 0;
-  for (let c = 0; c < chunkCount(p); c++) {
-    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
-    for (const t of chunk(p, c)) {
-      const v = g.surfaces.v[3 * t]!;
-      x0 = Math.min(x0, g.xs[v]!);
-      y0 = Math.min(y0, g.ys[v]!);
-      x1 = Math.max(x1, g.xs[v]! + 1);
-      y1 = Math.max(y1, g.ys[v]! + 1);
-    }
-    area += (x1 - x0) * (y1 - y0);
-  }
   // 8 blocks of 32 cells cover the 256 cells exactly; any block that is not a rectangle, or
   // chunks that interleave, would add area.
-  assert.equal(area, N * N);
+  assert.equal(boxArea(g, p), N * N);
 });
 
 test('the same input gives the same plan', () => {
@@ -88,4 +95,30 @@ test('the same input gives the same plan', () => {
 test('input smaller than one chunk is one chunk', () => {
   const p = plan(grid(), 1 << 20);
   assert.deepEqual(p.start, [0, N * N]);
+});
+
+/** The grid's floor, and over it one tilted triangle a cell, its lowest corner at z = 0.25 + cell / 1000 (one piece). */
+function twoLayers(): Grid {
+  const g = grid();
+  for (let cy = 0; cy < N; cy++) for (let cx = 0; cx < N; cx++) {
+    const v = cy * (N + 1) + cx, z = 0.25 + (cy * N + cx) / 1000;
+    g.surfaces.addTilted(v + 1, v + N + 2, v + N + 1, z, z + 1, z + 2, 1000, 1 + cy * N + cx, 'ramp');
+    g.surfaces.zEnd[g.surfaces.count - 1] = 10;
+  }
+  return g;
+}
+
+test('the floor chunks hold the floor triangles, each once, in compact chunks; the floor top is the lowest corner of the rest', () => {
+  const g = twoLayers();
+  // The floor triangles are the first 256 (z = 0); the ramps are the rest.
+  assert.deepEqual([...floorTriangles(g.surfaces)], Array.from({ length: N * N }, (_, i) => i));
+  assert.equal(floorTop(g.surfaces), 0.25);
+  const p = planFloorChunks(input(g, 32 * TRI_BYTES), 0.25);
+  assert.equal(chunkCount(p), 8);
+  assert.deepEqual([...p.order].sort((a, b) => a - b), Array.from({ length: N * N }, (_, i) => i));
+  assert.equal(boxArea(g, p), N * N);
+});
+
+test('a cube that is all floor has no floor top', () => {
+  assert.equal(floorTop(grid().surfaces), null);
 });

@@ -27,9 +27,49 @@ const EVEN_WITHIN = 0.15;
 
 export function planChunks(inp: ChunkingInput): ChunkPlan {
   const s = inp.surfaces;
-  const { chunkOf, start } = splitEvenly(triangleBoxes(s, inp.xs, inp.ys), triangleBytes(s), inp);
+  const all = Uint32Array.from({ length: s.count }, (_, i) => i);
+  return planOver(inp, all, triangleBoxes(s, inp.xs, inp.ys), triangleBytes(s));
+}
+
+/**
+ * The floor triangles (lowest corner at z <= 0) into chunks of their own, for the views whose
+ * slice lies below `top` (docs/FORMAT.md, "Floor chunks"): split by ground alone, as their z
+ * range is the same.
+ */
+export function planFloorChunks(inp: ChunkingInput, top: number): ChunkPlan {
+  const s = inp.surfaces;
+  const floor = floorTriangles(s);
+  const boxes = triangleBoxes(s, inp.xs, inp.ys);
+  boxes.z0.fill(0);
+  boxes.z1.fill(top);
+  return planOver(inp, floor, boxes, triangleBytes(s));
+}
+
+/** The triangles whose lowest corner lies at or below z = 0: all that a slice below any other's lowest corner shows. */
+export function floorTriangles(s: Surfaces): Uint32Array {
+  const out: number[] = [];
+  for (let i = 0; i < s.count; i++) if (s.zMin[i]! <= 0) out.push(i);
+  return Uint32Array.from(out);
+}
+
+/**
+ * The z below which a slice shows floor triangles only: the lowest corner of every other
+ * triangle; null when there is none (the floor is the whole cube).
+ */
+export function floorTop(s: Surfaces): number | null {
+  let top = Infinity;
+  for (let i = 0; i < s.count; i++) if (s.zMin[i]! > 0) top = Math.min(top, s.zMin[i]!);
+  return top === Infinity ? null : top;
+}
+
+/** Triangles `tris` (boxes and bytes by triangle index) into chunks; the plan names triangle indices. */
+function planOver(inp: ChunkingInput, tris: Uint32Array, boxes: TriangleBoxes, bytes: Float64Array): ChunkPlan {
+  const s = inp.surfaces;
+  const pick = (a: Float64Array): Float64Array => Float64Array.from(tris, (i) => a[i]!);
+  const sub: TriangleBoxes = { x0: pick(boxes.x0), y0: pick(boxes.y0), x1: pick(boxes.x1), y1: pick(boxes.y1), z0: pick(boxes.z0), z1: pick(boxes.z1) };
+  const { chunkOf, start } = splitEvenly(sub, pick(bytes), inp);
   // Within a chunk, keep a piece's triangles together (shared vertices) in a fixed order.
-  const order = sortedBy(s.count, (i) => chunkOf[i]! * 4294967296 + s.piece[i]!);
+  const order = sortedBy(tris.length, (k) => chunkOf[k]! * 4294967296 + s.piece[tris[k]!]!).map((k) => tris[k]!);
   return { order, start };
 }
 

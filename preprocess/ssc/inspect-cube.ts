@@ -1,5 +1,5 @@
 // What a cube directory holds, measured: chunk sizes, what chunking costs over one unchunked
-// file, the index, the line chunks, and what a 1280x720 view needs at scales from the base scale to the whole
+// file, the index, the floor chunks, the line chunks, and what a 1280x720 view needs at scales from the base scale to the whole
 // extent (detail must follow scale).
 import { promises as fs } from 'node:fs';
 import path from 'node:path';
@@ -34,11 +34,15 @@ export interface CubeReport {
   unchunkedBytes: number;
   overhead: number;
   index: { depth: number; files: number; bytes: number };
+  /** The floor chunks (docs/FORMAT.md, "Floor chunks"; null: none): the views below `top` take them. */
+  floor: { chunks: number; triangles: number; bytes: number; top: number } | null;
   /** The line chunks (null: a cube without lines). */
   lines: { chunks: number; lines: number; bytes: number } | null;
   views: ViewRow[];
   viewRatio: { triangles: number; bytes: number };
 }
+
+const EVERYWHERE = { ground: [-Infinity, -Infinity, Infinity, Infinity] as [number, number, number, number], zMin: -Infinity, zMax: Infinity };
 
 export async function inspectCube(dir: string): Promise<CubeReport> {
   const cube = await CubeReader.open(dir);
@@ -58,6 +62,9 @@ export async function inspectCube(dir: string): Promise<CubeReport> {
   // The same surfaces as one file: what chunking adds is headers, face tables, vertices repeated
   // on both sides of a chunk border and each chunk's codec starting afresh.
   const unchunkedBytes = oneFileBytes(decoded.map(({ c }) => c));
+  const floor = cube.index.floor;
+  const floorDecoded = [];
+  for (const leaf of floor ? await cube.query(EVERYWHERE, floor.root) : []) floorDecoded.push({ leaf, c: await cube.chunk(leaf) });
   let depth = 0;
   const walk = (n: IndexNode, d: number): void => {
     depth = Math.max(depth, d);
@@ -69,7 +76,7 @@ export async function inspectCube(dir: string): Promise<CubeReport> {
   for (const name of await fs.readdir(dir)) {
     if (name === 'index.json' || (name.startsWith('i-') && name.endsWith('.json'))) indexBytes += (await fs.stat(path.join(dir, name))).size;
   }
-  const lineLeaves = cube.lineChunks({ ground: [-Infinity, -Infinity, Infinity, Infinity], zMin: -Infinity, zMax: Infinity });
+  const lineLeaves = cube.lineChunks(EVERYWHERE);
   const lineData = await Promise.all(lineLeaves.map(async (leaf) => {
     const c = await cube.lineChunk(leaf);
     return { leaf, lines: Array.from({ length: c.lineCount }, (_, i) => lineOfChunk(c, i)).map((l) => ({ ...l, box: groundBox(l.paths) })) };
@@ -91,8 +98,10 @@ export async function inspectCube(dir: string): Promise<CubeReport> {
       for (let gx = 0; gx < grid; gx++) {
         const vx = x0 + ((gx + 0.5) / grid) * (x1 - x0), vy = y0 + ((gy + 0.5) / grid) * (y1 - y0);
         const ground: [number, number, number, number] = [vx - hw, vy - hh, vx + hw, vy + hh];
-        const hit = new Set(cube.queryLoaded({ ground, zMin: z, zMax: z }).map((l) => l.file));
-        for (const { leaf, c } of decoded) {
+        // Below the floor's top the map takes the floor chunks (with nothing fetched yet).
+        const atFloor = floor && z < floor.top;
+        const hit = new Set(cube.queryLoaded({ ground, zMin: z, zMax: z }, atFloor ? floor.root : undefined).map((l) => l.file));
+        for (const { leaf, c } of atFloor ? floorDecoded : decoded) {
           if (!hit.has(leaf.file)) continue;
           tris += c.triangleCount;
           bytes += leaf.bytes;
@@ -124,6 +133,7 @@ export async function inspectCube(dir: string): Promise<CubeReport> {
     unchunkedBytes,
     overhead: total / Math.max(1, unchunkedBytes),
     index: { depth, files: 1 + cube.subIndexFiles, bytes: indexBytes },
+    floor: floor ? { chunks: floorDecoded.length, triangles: floorDecoded.reduce((n, d) => n + d.c.triangleCount, 0), bytes: floorDecoded.reduce((n, d) => n + d.leaf.bytes, 0), top: floor.top } : null,
     lines: cube.index.lines ? { chunks: lineData.length, lines: lineData.reduce((n, d) => n + d.lines.length, 0), bytes: lineLeaves.reduce((n, l) => n + l.bytes, 0) } : null,
     views,
     viewRatio: { triangles: ratio('triangles'), bytes: ratio('bytes') },

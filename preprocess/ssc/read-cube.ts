@@ -31,10 +31,13 @@ export class CubeReader {
     }
   }
 
-  /** The chunks whose boxes meet the query, reading sub-index files as the query reaches them. */
-  async query(q: QueryBox): Promise<ChunkLeaf[]> {
+  /**
+   * The chunks whose boxes meet the query, reading sub-index files as the query reaches them:
+   * in the cube's tree, or in `root` (the floor chunks' tree).
+   */
+  async query(q: QueryBox, root: InnerNode = this.index.root): Promise<ChunkLeaf[]> {
     for (;;) {
-      const r = queryIndex(this.index.root, q, (ref) => this.subs.get(ref));
+      const r = queryIndex(root, q, (ref) => this.subs.get(ref));
       if (r.missing.length === 0) return r.leaves;
       for (const ref of r.missing) await this.loadSub(ref);
     }
@@ -45,9 +48,9 @@ export class CubeReader {
     return this.query({ ground: [-Infinity, -Infinity, Infinity, Infinity], zMin: -Infinity, zMax: Infinity });
   }
 
-  /** Synchronous query over what is loaded (after loadAll). */
-  queryLoaded(q: QueryBox): ChunkLeaf[] {
-    return queryIndex(this.index.root, q, (ref) => this.subs.get(ref)).leaves;
+  /** Synchronous query over what is loaded (after loadAll, or a query of every floor chunk). */
+  queryLoaded(q: QueryBox, root: InnerNode = this.index.root): ChunkLeaf[] {
+    return queryIndex(root, q, (ref) => this.subs.get(ref)).leaves;
   }
 
   private async loadSub(ref: string): Promise<void> {

@@ -279,3 +279,59 @@ describe('the chunk scheduler', () => {
     assert.deepEqual(sorted(h.fetched()), ['c-a.bin', 'c-b.bin', 'i-b.json'], 'each once');
   });
 });
+
+describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
+  // The cube's three chunks along x (0..30, z 0..100), and one floor chunk over all of them, below z 0.5.
+  const cube = (): Map<string, Uint8Array> => handMadeCube(row(3), { top: 0.5, chunks: [{ file: 'c-floor.bin', bbox: [0, 0, 0, 30, 10, 0.5] }] }).files;
+  const at = (seq: number, zMax: number): ViewRequest => ({ ...view(seq, 0, 30, { centerX: 15 }), zMin: 0, zMax });
+  const CUBE = ['c-0.bin', 'c-1.bin', 'c-2.bin'];
+
+  test('a view below the floor top shows the floor chunk, fetched first, with the cube\'s chunks as its margin; a view reaching the top, the cube\'s', async (t) => {
+    const h = await harness(t, cube(), { concurrency: 1 }, undefined, true);
+    h.scheduler.setView(at(1, 0.49));
+    await eventually(() => h.received().length === 4, 'the floor chunk, then the margin');
+    await settle();
+    assert.deepEqual(h.fetched()[0], 'c-floor.bin');
+    assert.deepEqual(sorted(h.fetched().slice(1)), CUBE);
+    const n = h.needed().at(-1)!;
+    assert.deepEqual([n.visible, sorted(n.margin)], [['c-floor.bin'], CUBE]);
+    h.scheduler.setView(at(2, 0.5));
+    await settle();
+    assert.deepEqual([h.needed().at(-1)!.visible.sort(), h.needed().at(-1)!.margin], [CUBE, []]);
+    assert.equal(h.fetched().length, 4, 'nothing fetched twice');
+  });
+
+  test('a margin of the cube\'s chunks waits for the floor chunk on screen', async (t) => {
+    const h = await harness(t, cube(), { concurrency: 4 }, () => 'hold');
+    h.scheduler.setView(at(1, 0));
+    await eventually(() => h.fetched().length === 1, 'the floor chunk requested');
+    await settle();
+    assert.deepEqual(h.fetched(), ['c-floor.bin'], 'the cube\'s chunks wait');
+  });
+
+  test('back at the floor with the cube\'s chunks here, the view takes them and fetches nothing', async (t) => {
+    const h = await harness(t, cube(), {}, undefined, true);
+    h.scheduler.setView(at(1, 50));
+    await eventually(() => h.received().length === 3, 'the cube\'s chunks');
+    await settle();
+    h.scheduler.setView(at(2, 0));
+    await settle();
+    assert.deepEqual(sorted(h.needed().at(-1)!.visible), CUBE);
+    assert.deepEqual(sorted(h.fetched()), CUBE, 'the floor chunk is never fetched');
+  });
+
+  test('a floor chunk that fails gives way to the cube\'s chunks at once, and is not chosen again', async (t) => {
+    const serve = serveFiles(BASE, cube());
+    const h = await harness(t, cube(), {}, (url) => (url.endsWith('c-floor.bin') ? status(404) : serve(url)), true);
+    h.scheduler.setView(at(1, 0));
+    await eventually(() => h.received().length === 3, 'the cube\'s chunks, with no new view');
+    await settle();
+    assert.deepEqual(h.errors().map((e) => e.file), ['c-floor.bin']);
+    assert.deepEqual([sorted(h.needed().at(-1)!.visible), h.needed().at(-1)!.seq], [CUBE, 1]);
+    // The cube's chunks leave, then the view comes back: still the cube's.
+    h.scheduler.evicted(CUBE);
+    h.scheduler.setView(at(2, 0));
+    await eventually(() => h.received().length === 6, 'the cube\'s chunks again');
+    assert.equal(h.times('c-floor.bin'), 1);
+  });
+});

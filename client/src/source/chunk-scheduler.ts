@@ -10,9 +10,11 @@
 //   (`marginRestMs`): during a zoom or a pan each view's margin is soon left behind, and
 //   fetching it only costs data (bench:session, bgt_otterlo_1800m: 2.18 -> 1.90 MB). The views
 //   ahead do not wait: during a flight some on-screen chunk is nearly always coming, and the
-//   path must be fetched ahead.
+//   path must be fetched ahead;
+// - below the floor's top the floor chunks go on screen, and the cube's chunks are the margin
+//   (floorShown): the first map at the base scale takes a fifth of the bytes.
 import type { ChunkLeaf, LineChunkLeaf } from '../../../format/cube-index.js';
-import { boxMeets, chunkPriority, queryLineChunks, type QueryBox } from '../../../format/index-query.js';
+import { boxMeets, chunkPriority, queryLineChunks, type QueryBox, type QueryResult } from '../../../format/index-query.js';
 import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
 import { fetchLineChunk } from './line-chunk-fetch.js';
 import { FetchFailure } from './fetch-retry.js';
@@ -42,6 +44,8 @@ const AHEAD_TIER = 1e8;
 export class ChunkScheduler {
   private readonly entries = new Map<string, Entry>();
   private needed = new Set<string>();
+  /** Chunks that failed once: the floor's are not chosen again (floorShown). */
+  private readonly failed = new Set<string>();
   private inFlight = 0;
   private view: ViewRequest | null = null;
   /** When the view last changed (performance.now()), and the timer that starts the margin once it has rested. */
@@ -60,15 +64,17 @@ export class ChunkScheduler {
     this.view = view;
     const t0 = performance.now();
     const q = { ground: view.margin, zMin: view.zMin, zMax: view.zMax };
-    const res = this.tree.query(q);
+    const visibleQ = { ground: view.visible, zMin: view.zMin, zMax: view.zMax };
+    const cube = this.tree.query(q);
+    // Below the floor's top: the floor chunks on screen, and the cube's as the margin.
+    const floor = this.floorShown(cube, visibleQ);
     const lineLeaves = this.lineLeaves(q);
     const queryMs = performance.now() - t0;
-    const visibleQ = { ground: view.visible, zMin: view.zMin, zMax: view.zMax };
     const visible: string[] = [];
     const margin: string[] = [];
     const ahead: string[] = [];
     const needed = new Set<string>();
-    const missing = new Set(res.missing);
+    const missing = new Set([...cube.missing, ...(floor?.missing ?? [])]);
     const want = (leaf: Leaf, priority: number): void => {
       let e = this.entries.get(leaf.file);
       if (!e) {
@@ -79,15 +85,21 @@ export class ChunkScheduler {
       needed.add(leaf.file);
     };
     const rank = view.visible;
-    for (const leaf of [...res.leaves, ...lineLeaves]) {
-      const onScreen = boxMeets(leaf.bbox, visibleQ);
+    for (const leaf of floor?.leaves ?? []) {
+      want(leaf, priorityIn(leaf, rank, view));
+      visible.push(leaf.file);
+    }
+    for (const leaf of [...cube.leaves, ...lineLeaves]) {
+      const onScreen = (!floor || isLineLeaf(leaf)) && boxMeets(leaf.bbox, visibleQ);
       want(leaf, priorityIn(leaf, rank, view) + (onScreen ? 0 : MARGIN_TIER));
       (onScreen ? visible : margin).push(leaf.file);
     }
     (view.ahead ?? []).forEach((a, i) => {
-      const r = this.tree.query({ ground: a.box, zMin: a.zMin, zMax: a.zMax });
+      const aq = { ground: a.box, zMin: a.zMin, zMax: a.zMax };
+      const aCube = this.tree.query(aq);
+      const r = this.floorShown(aCube, aq) ?? aCube;
       for (const m of r.missing) missing.add(m);
-      for (const leaf of [...r.leaves, ...this.lineLeaves({ ground: a.box, zMin: a.zMin, zMax: a.zMax })]) {
+      for (const leaf of [...r.leaves, ...this.lineLeaves(aq)]) {
         if (needed.has(leaf.file)) continue;
         want(leaf, AHEAD_TIER + i * MARGIN_TIER + priorityIn(leaf, a.box, a));
         ahead.push(leaf.file);
@@ -105,7 +117,7 @@ export class ChunkScheduler {
         this.setStatus(e, 'not-requested');
       }
     }
-    this.post({ type: 'needed', seq: view.seq, visible, margin, ahead, indexComplete: res.missing.length === 0, queryMs, visited: res.visited });
+    this.post({ type: 'needed', seq: view.seq, visible, margin, ahead, indexComplete: (floor ?? cube).missing.length === 0, queryMs, visited: cube.visited + (floor?.visited ?? 0) });
     if (missing.size > 0) {
       this.tree.loadSubs([...missing]).then(
         () => {
@@ -115,6 +127,36 @@ export class ChunkScheduler {
       );
     }
     this.pump();
+  }
+
+  /**
+   * Below the floor's top, the floor chunks a view shows on screen (docs/FORMAT.md, "Floor
+   * chunks"): the same triangles as the cube's chunks there hold among others', in fewer bytes.
+   * The cube's chunks are then the margin: the next view may as well be a zoom out, for which
+   * the floor's are no use, as a pan, which the cube's serve too. Null (the cube's on screen
+   * too) when the cube's leave fewer bytes to fetch on screen (they are here already, say,
+   * after a zoom back in), when one of the floor chunks has failed (offline, it may never
+   * have been fetched), or when there is no floor. While the cube's sub-index files are
+   * missing its cost is not known: the floor.
+   */
+  private floorShown(cube: QueryResult, onScreen: QueryBox): QueryResult | null {
+    const floor = this.tree.floorQuery(onScreen);
+    if (!floor) return null;
+    const floorBytes = this.bytesToFetch(floor.leaves, onScreen);
+    if (floorBytes === Infinity) return null;
+    return cube.missing.length === 0 && this.bytesToFetch(cube.leaves, onScreen) < floorBytes ? null : floor;
+  }
+
+  /** Bytes of `leaves` meeting `onScreen` not received yet; Infinity when one of them has failed. */
+  private bytesToFetch(leaves: readonly ChunkLeaf[], onScreen: QueryBox): number {
+    let bytes = 0;
+    for (const leaf of leaves) {
+      if (!boxMeets(leaf.bbox, onScreen)) continue;
+      if (this.failed.has(leaf.file)) return Infinity;
+      const status = this.entries.get(leaf.file)?.status ?? 'not-requested';
+      if (status !== 'received' && status !== 'gpu') bytes += leaf.bytes;
+    }
+    return bytes;
   }
 
   /** The line chunks a query box needs (none in a cube without lines). */
@@ -197,7 +239,10 @@ export class ChunkScheduler {
             return;
           }
           this.setStatus(e, 'failed');
+          this.failed.add(e.leaf.file);
           this.postError(chunkError(err, e.leaf.file, this.tree.url(e.leaf.file)));
+          // A view at the floor turns to the cube's chunks at once (floorShown).
+          if (this.view && this.tree.index.floor) this.setView(this.view);
         },
       )
       .finally(() => {

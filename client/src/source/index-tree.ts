@@ -27,6 +27,13 @@ export class IndexTree {
     return queryIndex(this.index.root, q, (ref) => this.subs.get(ref));
   }
 
+  /** The floor chunks a query needs, or null when the cube has none or the query reaches above their top. */
+  floorQuery(q: QueryBox): QueryResult | null {
+    const floor = this.index.floor;
+    if (!floor || q.zMax >= floor.top) return null;
+    return queryIndex(floor.root, q, (ref) => this.subs.get(ref));
+  }
+
   /** Loads the sub-index files (those not loaded or loading yet); resolves when all are in. */
   loadSubs(refs: string[]): Promise<void> {
     return Promise.all(
