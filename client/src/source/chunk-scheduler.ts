@@ -18,6 +18,7 @@ import { boxMeets, chunkPriority, queryLineChunks, type QueryBox, type QueryResu
 import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
 import { fetchLineChunk } from './line-chunk-fetch.js';
 import { FetchFailure } from './fetch-retry.js';
+import { indexError } from './index-error.js';
 import type { IndexTree } from './index-tree.js';
 import type { ChunkStatus, FromWorker, SourceErrorInfo, SourceOptions, ViewRequest } from './worker-protocol.js';
 
@@ -270,14 +271,4 @@ function chunkError(err: unknown, file: string, url: string): SourceErrorInfo {
     return info;
   }
   return { kind: 'network', message: `${file}: ${(err as Error).message}`, url, file };
-}
-
-export function indexError(err: unknown, url = ''): SourceErrorInfo {
-  if (err instanceof FetchFailure) {
-    const info: SourceErrorInfo = { kind: err.kind === 'http' ? 'http' : 'network', message: err.message, url: err.url };
-    if (err.status !== undefined) info.status = err.status;
-    return info;
-  }
-  // Not JSON, or JSON that is not an index: the file is not a cube's.
-  return { kind: 'index', message: err instanceof Error ? err.message : String(err), url };
 }

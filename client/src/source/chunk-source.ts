@@ -3,6 +3,8 @@
 import type { CubeMeta } from '../../../format/cube-index.js';
 import { Evented } from '../events.js';
 import { createChunkWorker } from './create-worker.js';
+import { fetchBytes } from './fetch-retry.js';
+import { indexError } from './index-error.js';
 import { indexUrl } from './index-url.js';
 import type { ChunkStatus, Payload, FeatureInfo, FromWorker, NeededChunks, SourceErrorInfo, SourceOptions, ToWorker, ViewRequest } from './worker-protocol.js';
 
@@ -33,7 +35,14 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
     this.worker = createChunkWorker();
     this.worker.addEventListener('message', (ev: MessageEvent<FromWorker>) => this.receive(ev.data));
     this.worker.addEventListener('error', (ev) => this.fire('error', { kind: 'index', message: `chunk worker failed: ${ev.message}`, url: this.url }));
-    this.send({ type: 'init', url: this.url, options: { ...defaultSourceOptions, ...options } });
+    const opts = { ...defaultSourceOptions, ...options };
+    this.send({ type: 'init', url: this.url, options: opts });
+    // index.json is fetched here while the worker's own script loads, not by the worker after
+    // it: on a slow network the first map comes a round trip sooner (bench:session).
+    fetchBytes(this.url, opts).then(
+      (body) => this.worker.postMessage({ type: 'index', body } satisfies ToWorker, [body]),
+      (err: unknown) => this.send({ type: 'index-unavailable', error: indexError(err, this.url) }),
+    );
   }
 
   setView(view: ViewRequest): void {

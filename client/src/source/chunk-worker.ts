@@ -1,9 +1,10 @@
-// The chunk worker's entry point: loads the index, then answers the map's messages (views,
-// upload and eviction notices, feature lookups) with chunks, statuses and errors.
-import { ChunkScheduler, indexError } from './chunk-scheduler.js';
+// The chunk worker's entry point: reads the index the map fetched, then answers the map's
+// messages (views, upload and eviction notices, feature lookups) with chunks, statuses and errors.
+import { ChunkScheduler } from './chunk-scheduler.js';
+import { indexError } from './index-error.js';
 import { FeaturePages } from './feature-pages.js';
 import { IndexTree } from './index-tree.js';
-import type { FromWorker, ToWorker, ViewRequest } from './worker-protocol.js';
+import type { FromWorker, SourceErrorInfo, ToWorker, ViewRequest } from './worker-protocol.js';
 
 // The DOM lib types `self` as a Window; this is the part of a dedicated worker's scope used here.
 interface WorkerScope {
@@ -17,6 +18,8 @@ let scheduler: ChunkScheduler | null = null;
 let pages: FeaturePages | null = null;
 let pendingView: ViewRequest | null = null;
 let ready: Promise<void> | null = null;
+/** Takes index.json's body when the map sends it, or why it has none. */
+let indexCame: (msg: Extract<ToWorker, { type: 'index' | 'index-unavailable' }>) => void = () => undefined;
 // Every file received whole, in order: what a service worker must cache to show these views offline.
 const loadedUrls = new Set<string>();
 
@@ -25,7 +28,12 @@ scope.addEventListener('message', (ev) => {
   switch (msg.type) {
     case 'init': {
       const options = { ...msg.options, onLoaded: (url: string) => loadedUrls.add(url) };
-      ready = IndexTree.load(msg.url, options).then(
+      // Rejected with the map's SourceErrorInfo when the fetch failed; an Error when the body is no index.
+      const body = new Promise<ArrayBuffer>((resolve, reject) => (indexCame = (m) => (m.type === 'index' ? resolve(m.body) : reject(m.error))));
+      ready = body.then((b) => {
+        options.onLoaded(msg.url);
+        return IndexTree.fromBody(b, msg.url, options);
+      }).then(
         (tree) => {
           scheduler = new ChunkScheduler(tree, options, post);
           pages = new FeaturePages(tree.index.meta.faces, tree.index.meta.attributes, (f) => tree.url(f), options);
@@ -34,13 +42,17 @@ scope.addEventListener('message', (ev) => {
           pendingView = null;
         },
         (err: unknown) => {
-          post({ type: 'index-failed', error: indexError(err, msg.url) });
+          post({ type: 'index-failed', error: err instanceof Error ? indexError(err, msg.url) : (err as SourceErrorInfo) });
           throw err;
         },
       );
       ready.catch(() => undefined);
       break;
     }
+    case 'index':
+    case 'index-unavailable':
+      indexCame(msg);
+      break;
     case 'view':
       if (scheduler) scheduler.setView(msg.view);
       else pendingView = msg.view;

@@ -78,6 +78,10 @@ export async function fetchBytes(url: string, opts: RetryOptions, signal?: Abort
 
 /** The body of `url` as JSON (a body that is not JSON is not retried). */
 export async function fetchJson(url: string, opts: RetryOptions, signal?: AbortSignal): Promise<unknown> {
-  const bytes = await gunzipIfNeeded(await fetchBytes(url, opts, signal));
-  return JSON.parse(new TextDecoder().decode(bytes)) as unknown;
+  return jsonOf(await fetchBytes(url, opts, signal));
+}
+
+/** A body as JSON, gunzipped first when it is still gzip. */
+export async function jsonOf(body: ArrayBuffer): Promise<unknown> {
+  return JSON.parse(new TextDecoder().decode(await gunzipIfNeeded(body))) as unknown;
 }

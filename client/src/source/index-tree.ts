@@ -2,7 +2,7 @@
 // time a query reaches them (once each, however many queries ask meanwhile).
 import { parseIndex, parseSubIndex, type CubeIndex, type InnerNode } from '../../../format/cube-index.js';
 import { queryIndex, type QueryBox, type QueryResult } from '../../../format/index-query.js';
-import { fetchJson, type RetryOptions } from './fetch-retry.js';
+import { fetchBytes, fetchJson, jsonOf, type RetryOptions } from './fetch-retry.js';
 
 export class IndexTree {
   private readonly subs = new Map<string, InnerNode>();
@@ -15,8 +15,12 @@ export class IndexTree {
   ) {}
 
   static async load(indexUrl: string, retry: RetryOptions): Promise<IndexTree> {
-    const json = await fetchJson(indexUrl, retry);
-    return new IndexTree(parseIndex(json), new URL('.', indexUrl).href, retry);
+    return IndexTree.fromBody(await fetchBytes(indexUrl, retry), indexUrl, retry);
+  }
+
+  /** The index from the body of `indexUrl`, fetched elsewhere (the map fetches it while the worker starts). */
+  static async fromBody(body: ArrayBuffer, indexUrl: string, retry: RetryOptions): Promise<IndexTree> {
+    return new IndexTree(parseIndex(await jsonOf(body)), new URL('.', indexUrl).href, retry);
   }
 
   url(file: string): string {

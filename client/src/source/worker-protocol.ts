@@ -47,6 +47,9 @@ export interface AheadView {
 
 export type ToWorker =
   | { type: 'init'; url: string; options: SourceOptions }
+  /** index.json's body, or why it could not be had: the map fetches it while the worker starts (ChunkSource). */
+  | { type: 'index'; body: ArrayBuffer }
+  | { type: 'index-unavailable'; error: SourceErrorInfo }
   | { type: 'view'; view: ViewRequest }
   | { type: 'uploaded'; file: string }
   | { type: 'evicted'; files: string[] }
