@@ -207,6 +207,12 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     assert.ok(firstCube > 0, 'a floor chunk first');
     assert.ok(order.slice(firstCube).every((f) => !floorFiles.has(f)), `the cube's chunks after every floor chunk: ${order.join(' ')}`);
     assert.deepEqual(new Set(order.slice(firstCube)), files(margin));
+    // With the cube's chunks on the GPU beside the floor's, the frame draws the floor once.
+    await p.page.waitForFunction((fs) => fs.every((f) => engine.chunkStatuses().get(f) === 'gpu'), margin.map((l) => l.file));
+    assert.equal(await waitIdle(p.page), true);
+    const { visible } = await p.page.evaluate(() => engine.neededChunks());
+    assert.ok(visible.length > 0 && visible.every((f) => floorFiles.has(f) || f.startsWith('l-')), `on screen: ${visible.join(' ')}`);
+    assert.equal((await p.page.evaluate(() => engine.stats())).chunks, visible.length, 'only the chunks on screen are drawn');
     // The slice just above the floor's top over the same ground: on screen the cube's chunks,
     // here already but for those whose triangles start between the floor and the slice.
     const before = chunkRequests().length;

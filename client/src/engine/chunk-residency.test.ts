@@ -116,4 +116,17 @@ describe('chunk residency', () => {
     h.residency.answer(answer(2, ['a'], [], { indexComplete: false }));
     assert.equal(h.residency.shows(2, drawnFrom), false, 'sub-index files still loading');
   });
+
+  test('the chunks a view shows, once all are on the GPU: the floor chunks alone, not the cube\'s margin beside them', () => {
+    const h = harness(1000);
+    h.residency.answer(answer(1, ['floor-a', 'floor-b'], ['cube-a']));
+    h.residency.arrived(chunk('floor-a'));
+    h.residency.upload(1, 1, drawn);
+    assert.equal(h.residency.shownChunks(1), null, 'floor-b is still to come');
+    h.residency.arrived(chunk('floor-b'));
+    h.residency.arrived(chunk('cube-a'));
+    h.residency.upload(2, 1, drawn);
+    assert.deepEqual([...h.residency.shownChunks(1)!].sort(), ['floor-a', 'floor-b']);
+    assert.equal(h.residency.shownChunks(2), null, 'not for a view the worker has not answered');
+  });
 });

@@ -141,6 +141,15 @@ export class ChunkResidency {
     return n?.seq === seq && n.indexComplete && n.visible.every((f) => files.has(f));
   }
 
+  /**
+   * The chunks view `seq` shows, once the worker has answered it and all are on the GPU; null
+   * before. Others on the GPU may meet the view too: at the floor the cube's chunks (its margin)
+   * beside the floor chunks, the same triangles.
+   */
+  shownChunks(seq: number): ReadonlySet<string> | null {
+    return this.shows(seq, this.renderer.store) ? this.visibleSet : null;
+  }
+
   /** The worker answered view `seq` and nothing it needs is still to come (failed chunks will not). */
   settled(seq: number): boolean {
     const n = this.needed;

@@ -202,15 +202,17 @@ export class FrameLoop {
     this.frameNo++;
     // Draw the chunks on the GPU that meet the view (whatever the worker says is needed: until
     // its answer comes, the map keeps drawing what it has). Only a chunk among those changes
-    // the picture; one for the margin or a flight ahead leaves a finished image as it is.
+    // the picture; one for the margin or a flight ahead leaves a finished image as it is. Once
+    // all that the view shows are here, those alone: not the same floor twice.
     const drawn = { ground: q.visible, zMin: q.zMin, zMax: q.zMax };
     if (this.residency.upload(this.frameNo, this.viewSeq, drawn)) this.accumulated = 0;
     this.residency.evict();
+    const shown = this.residency.shownChunks(this.viewSeq);
     const chunks: GpuChunk[] = [];
     const lineChunks: GpuLineChunk[] = [];
     const files = new Set<string>();
     for (const c of r.store.values()) {
-      if (!boxMeets(c.bbox, drawn)) continue;
+      if (!boxMeets(c.bbox, drawn) || (shown && !shown.has(c.file))) continue;
       files.add(c.file);
       c.lastUsed = this.frameNo;
       if (c.kind !== 'lines') chunks.push(c);
