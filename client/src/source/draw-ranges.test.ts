@@ -111,3 +111,24 @@ test('a view over part of the ground draws the triangles there and few others', 
   assert.deepEqual([all.n, all.first[0], all.count[0]], [1, 0, T]);
   assert.deepEqual(drawn(b, 100, [1000, 1000, 1001, 1001]), [], 'a view beside the chunk draws nothing');
 });
+
+test('a chunk all at one z (the floor) has finer cells: a view inside one draws that cell alone', () => {
+  // A 40 x 40 grid of unit squares, two triangles each, all at z 0.
+  const n = 40, positions: number[] = [], indices: number[] = [];
+  for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
+    const v = positions.length / 3;
+    positions.push(i, j, 0, i + 1, j, 0, i + 1, j + 1, 0, i, j + 1, 0);
+    indices.push(v, v + 1, v + 2, v, v + 2, v + 3);
+  }
+  const idx = Uint32Array.from(indices);
+  const T = idx.length / 3;
+  const b = orderForDrawing(positions, idx, T);
+  // 8 x 8 cells of 5 x 5 squares (50 triangles): a view inside one cell draws that cell alone.
+  assert.equal(b.cellBlocks.length - 1, 64);
+  const ts = drawn(b, 0, [0.5, 0.5, 4.5, 4.5]);
+  assert.equal(ts.length, 50);
+  for (const t of ts) {
+    const x = positions[3 * idx[3 * t]!]!, y = positions[3 * idx[3 * t]! + 1]!;
+    assert.ok(x < 5 && y < 5, `triangle over square ${x}, ${y}`);
+  }
+});
