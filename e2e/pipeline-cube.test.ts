@@ -23,7 +23,6 @@ import { dataset, styleFile } from '../testing/paths.js';
 import { readIds } from '../testing/ids-file.js';
 import { runSsc } from '../testing/run-ssc.js';
 import { tempDir } from '../testing/temp-dir.js';
-import { referencedFiles } from '../client/src/offline/cube-files.js';
 
 const W = 240, H = 180;
 
@@ -263,12 +262,12 @@ test('bgt_otterlo_400m cube', async (t) => {
     assert.deepEqual(readdirSync(dir).filter((n) => n.includes('.tmp-')), [], 'no temporary directory left');
   });
 
-  await t.test('inspect reports sizes, overhead and the per-scale view table', () => {
+  await t.test('inspect reports sizes, overhead and the per-scale view table', async () => {
     const r = runSsc(['inspect', cube, '--json']);
     assert.equal(r.code, 0, r.stderr);
     const rep = JSON.parse(r.stdout) as { chunks: number; triangles: number; bytes: { total: number; cv: number }; overhead: number; views: unknown[]; floor: { chunks: number } | null };
-    const index = JSON.parse(readFileSync(path.join(cube, 'index.json'), 'utf8')) as { floor: { root: unknown } };
-    const floorFiles = new Set(referencedFiles(JSON.stringify(index.floor.root)));
+    const reader = await CubeReader.open(cube);
+    const floorFiles = new Set((await reader.query({ ground: [-Infinity, -Infinity, Infinity, Infinity], zMin: -Infinity, zMax: Infinity }, reader.index.floor!.root)).map((l) => l.file));
     const files = readdirSync(cube).filter((n) => n.startsWith('c-') && n.endsWith('.bin') && !floorFiles.has(n));
     assert.equal(rep.chunks, files.length);
     assert.equal(rep.floor?.chunks, floorFiles.size);

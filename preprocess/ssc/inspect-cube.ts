@@ -1,6 +1,6 @@
 // What a cube directory holds, measured: chunk sizes, what chunking costs over one unchunked
-// file, the index, the floor chunks, the line chunks, and what a 1280x720 view needs at scales from the base scale to the whole
-// extent (detail must follow scale).
+// file, the index, the floor chunks, the line chunks, and what a 1280x720 view needs at scales
+// from the base scale to the whole extent (detail must follow scale).
 import { promises as fs } from 'node:fs';
 import path from 'node:path';
 import { isExternal, isLeaf, type IndexNode } from '../../format/cube-index.js';

@@ -45,7 +45,7 @@ const AHEAD_TIER = 1e8;
 export class ChunkScheduler {
   private readonly entries = new Map<string, Entry>();
   private needed = new Set<string>();
-  /** Chunks that failed once: the floor's are not chosen again (floorShown). */
+  /** Chunks whose last fetch failed: floor chunks among them are not chosen again (floorShown). */
   private readonly failed = new Set<string>();
   private inFlight = 0;
   private view: ViewRequest | null = null;
@@ -228,6 +228,7 @@ export class ChunkScheduler {
         (chunk) => {
           if (e.controller !== controller) return; // aborted meanwhile
           e.controller = null;
+          this.failed.delete(leaf.file);
           this.setStatus(e, 'received');
           const transfer = chunk.kind === 'lines' ? [chunk.segments.buffer, chunk.segmentLine.buffer, chunk.segmentRule.buffer, chunk.lineClass.buffer, chunk.lineFeature.buffer, chunk.lineRamp.buffer] : [chunk.buffer, chunk.blocks.cellBox.buffer, chunk.blocks.cellBlocks.buffer, chunk.blocks.zLow.buffer, chunk.blocks.first.buffer];
           this.post({ type: 'chunk', chunk }, transfer as ArrayBuffer[]);
