@@ -3,7 +3,7 @@
 import { readdirSync, readFileSync } from 'node:fs';
 import path from 'node:path';
 import { parseIndex, parseSubIndex, type ChunkLeaf, type CubeIndex, type InnerNode } from '../format/cube-index.js';
-import { queryIndex } from '../format/index-query.js';
+import { EVERYWHERE, queryIndex } from '../format/index-query.js';
 import { runSsc } from '../testing/run-ssc.js';
 import type { Dataset } from './datasets.js';
 
@@ -52,7 +52,7 @@ export function buildBenchCube(d: Dataset, dir: string, o: BenchBuild = {}): Ben
   const index = parseIndex(json('index.json'));
   const subs = new Map<string, InnerNode>();
   for (const f of readdirSync(dir)) if (/^i-.*\.json$/.test(f)) subs.set(f, parseSubIndex(json(f), f));
-  const all = queryIndex(index.root, { ground: [-Infinity, -Infinity, Infinity, Infinity], zMin: -Infinity, zMax: Infinity }, (ref) => subs.get(ref));
+  const all = queryIndex(index.root, EVERYWHERE, (ref) => subs.get(ref));
   if (all.missing.length > 0) throw new Error(`${label}: sub-index files missing from ${dir}: ${all.missing.join(', ')}`);
   return { label, dir, index, subs, leaves: all.leaves };
 }

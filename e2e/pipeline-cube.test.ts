@@ -267,7 +267,7 @@ test('bgt_otterlo_400m cube', async (t) => {
     assert.equal(r.code, 0, r.stderr);
     const rep = JSON.parse(r.stdout) as { chunks: number; triangles: number; bytes: { total: number; cv: number }; overhead: number; views: unknown[]; floor: { chunks: number } | null };
     const reader = await CubeReader.open(cube);
-    const floorFiles = new Set((await reader.query({ ground: [-Infinity, -Infinity, Infinity, Infinity], zMin: -Infinity, zMax: Infinity }, reader.index.floor!.root)).map((l) => l.file));
+    const floorFiles = new Set((await reader.loadAll(reader.index.floor!.root)).map((l) => l.file));
     const files = readdirSync(cube).filter((n) => n.startsWith('c-') && n.endsWith('.bin') && !floorFiles.has(n));
     assert.equal(rep.chunks, files.length);
     assert.equal(rep.floor?.chunks, floorFiles.size);
@@ -365,7 +365,6 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
     const reader = await CubeReader.open(cubes.smooth);
     const floor = reader.index.floor;
     assert.ok(floor, 'the cube has floor chunks');
-    const everywhere = { ground: [-Infinity, -Infinity, Infinity, Infinity] as [number, number, number, number], zMin: -Infinity, zMax: Infinity };
     // Each triangle as its corners (absolute, in order) and upper face; its lowest corner's z.
     const triangles = (c: DecodedChunk): { key: string; zMin: number }[] => Array.from({ length: c.triangleCount }, (_, t) => {
       const vs = [0, 1, 2].map((k) => c.indices[3 * t + k]!);
@@ -375,14 +374,14 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
     // The cube's chunks: their floor triangles (counted), and the lowest corner of all others.
     const inCube = new Map<string, number>();
     let top = Infinity;
-    for (const leaf of await reader.query(everywhere)) {
+    for (const leaf of await reader.loadAll()) {
       for (const tri of triangles(await reader.chunk(leaf))) {
         if (tri.zMin <= 0) inCube.set(tri.key, (inCube.get(tri.key) ?? 0) + 1);
         else top = Math.min(top, tri.zMin);
       }
     }
     assert.equal(Math.fround(floor.top), top, 'the top is the lowest corner of every triangle off the floor');
-    const floorLeaves = await reader.query(everywhere, floor.root);
+    const floorLeaves = await reader.loadAll(floor.root);
     assert.ok(floorLeaves.length > 1, `floor chunks: ${floorLeaves.length}`);
     for (const leaf of floorLeaves) {
       assert.deepEqual([leaf.bbox[2], leaf.bbox[5]], [0, floor.top], `${leaf.file}: its box reaches from the floor to the top`);

@@ -19,6 +19,9 @@ export interface QueryResult {
   visited: number;
 }
 
+/** A query every box meets: the whole ground, every z. */
+export const EVERYWHERE: QueryBox = { ground: [-Infinity, -Infinity, Infinity, Infinity], zMin: -Infinity, zMax: Infinity };
+
 export function boxMeets(b: Box3, q: QueryBox): boolean {
   return b[0] <= q.ground[2] && b[3] >= q.ground[0] && b[1] <= q.ground[3] && b[4] >= q.ground[1] && b[2] <= q.zMax && b[5] > q.zMin;
 }

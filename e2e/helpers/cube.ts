@@ -8,7 +8,7 @@ import path from 'node:path';
 import { promisify } from 'node:util';
 import { decodeChunk } from '../../format/chunk.js';
 import { parseIndex, parseSubIndex, type ChunkLeaf, type CubeMeta, type InnerNode, type LineChunkLeaf } from '../../format/cube-index.js';
-import { queryIndex } from '../../format/index-query.js';
+import { EVERYWHERE, queryIndex } from '../../format/index-query.js';
 import { zAtScale } from '../../format/scale.js';
 import { parseSurface, surfaceZ, type Surface } from '../../format/slicing-surface.js';
 import { pointSegmentDistance } from '../../format/point-segment.js';
@@ -93,12 +93,11 @@ export interface CubeContents {
 export async function readCube(cubeDir: string): Promise<CubeContents> {
   const index = parseIndex(JSON.parse(await readFile(path.join(cubeDir, 'index.json'), 'utf8')));
   const subs = new Map<string, InnerNode>();
-  const all = { ground: [-Infinity, -Infinity, Infinity, Infinity] as [number, number, number, number], zMin: -Infinity, zMax: Infinity };
   const leavesOf = async (root: InnerNode): Promise<ChunkLeaf[]> => {
-    let q = queryIndex(root, all, (r) => subs.get(r));
+    let q = queryIndex(root, EVERYWHERE, (r) => subs.get(r));
     while (q.missing.length > 0) {
       for (const ref of q.missing) subs.set(ref, parseSubIndex(JSON.parse(await readFile(path.join(cubeDir, ref), 'utf8')), ref));
-      q = queryIndex(root, all, (r) => subs.get(r));
+      q = queryIndex(root, EVERYWHERE, (r) => subs.get(r));
     }
     return q.leaves;
   };

@@ -90,7 +90,8 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
     viewPerScale: [(1280 * PIXEL_SIZE_MM) / 1000, (720 * PIXEL_SIZE_MM) / 1000] as [number, number],
     targetBytes: opts.chunkBytes ?? DEFAULT_CHUNK_BYTES,
   };
-  const plan = planChunks({ surfaces, xs: surfaces.xs, ys: surfaces.ys, ...view });
+  const chunking = { surfaces, xs: surfaces.xs, ys: surfaces.ys, ...view };
+  const plan = planChunks(chunking);
   lap('plan');
   const files = new Map<string, Uint8Array>();
   const classOf = (f: number): number => faces[f]!.classIndex;
@@ -122,7 +123,7 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   // (docs/FORMAT.md, "Floor chunks"): none when nothing else lies above it, or when the cube is
   // one chunk (every view takes it whole anyway).
   const top = leaves.length > 1 ? floorTop(surfaces) : null;
-  const floorLeaves = top === null ? [] : writeChunks(planFloorChunks({ surfaces, xs: surfaces.xs, ys: surfaces.ys, ...view }, top), top);
+  const floorLeaves = top === null ? [] : writeChunks(planFloorChunks(chunking, top), top);
   if (top !== null) log(`floor: ${floorLeaves.length} chunks below z ${top}`);
   lap('floor');
   // Lines from the tGAP as generalized (the smooth build's face ids do not matter to them).

@@ -9,6 +9,7 @@ import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
 import path from 'node:path';
 import test from 'node:test';
+import { EVERYWHERE } from '../../format/index-query.js';
 import { lineOfChunk } from '../../format/line-chunk.js';
 import { lineAliveAt, linePathsAtZ, type LineRecord } from '../../format/line-record.js';
 import type { LineRule } from '../../format/line-style.js';
@@ -28,7 +29,7 @@ import { CubeReader } from './read-cube.js';
 /** Every line of the cube as read back, with the origin and the position step of its chunk. */
 async function readAll(reader: CubeReader): Promise<{ line: LineRecord; originX: number; originY: number; step: number }[]> {
   const out: { line: LineRecord; originX: number; originY: number; step: number }[] = [];
-  for (const leaf of reader.lineChunks({ ground: [-Infinity, -Infinity, Infinity, Infinity], zMin: -Infinity, zMax: Infinity })) {
+  for (const leaf of reader.lineChunks(EVERYWHERE)) {
     const c = await reader.lineChunk(leaf);
     assert.equal(c.lineCount, leaf.lines, `${leaf.file}: lines as the index says`);
     const step = 2 ** c.gridExponent;

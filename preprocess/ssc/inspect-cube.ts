@@ -6,7 +6,7 @@ import path from 'node:path';
 import { isExternal, isLeaf, type IndexNode } from '../../format/cube-index.js';
 import { scaleAtZ, zAtScale } from '../../format/scale.js';
 import { PIXEL_SIZE_MM } from '../../format/pixel-size.js';
-import { boxMeets } from '../../format/index-query.js';
+import { boxMeets, EVERYWHERE } from '../../format/index-query.js';
 import { lineOfChunk } from '../../format/line-chunk.js';
 import { groundBox, lineAliveAt } from '../../format/line-record.js';
 import { CubeReader } from './read-cube.js';
@@ -42,8 +42,6 @@ export interface CubeReport {
   viewRatio: { triangles: number; bytes: number };
 }
 
-const EVERYWHERE = { ground: [-Infinity, -Infinity, Infinity, Infinity] as [number, number, number, number], zMin: -Infinity, zMax: Infinity };
-
 export async function inspectCube(dir: string): Promise<CubeReport> {
   const cube = await CubeReader.open(dir);
   const leaves = await cube.loadAll();
@@ -64,7 +62,7 @@ export async function inspectCube(dir: string): Promise<CubeReport> {
   const unchunkedBytes = oneFileBytes(decoded.map(({ c }) => c));
   const floor = cube.index.floor;
   const floorDecoded = [];
-  for (const leaf of floor ? await cube.query(EVERYWHERE, floor.root) : []) floorDecoded.push({ leaf, c: await cube.chunk(leaf) });
+  for (const leaf of floor ? await cube.loadAll(floor.root) : []) floorDecoded.push({ leaf, c: await cube.chunk(leaf) });
   let depth = 0;
   const walk = (n: IndexNode, d: number): void => {
     depth = Math.max(depth, d);

@@ -5,7 +5,7 @@ import { promises as fs } from 'node:fs';
 import path from 'node:path';
 import { decodeChunk, type DecodedChunk } from '../../format/chunk.js';
 import { parseIndex, parseSubIndex, type ChunkLeaf, type CubeIndex, type InnerNode, type LineChunkLeaf } from '../../format/cube-index.js';
-import { queryIndex, queryLineChunks, type QueryBox } from '../../format/index-query.js';
+import { EVERYWHERE, queryIndex, queryLineChunks, type QueryBox } from '../../format/index-query.js';
 import { decodeLineChunk, type LineChunkData } from '../../format/line-chunk.js';
 import { InputError } from '../io/errors.js';
 
@@ -43,12 +43,12 @@ export class CubeReader {
     }
   }
 
-  /** Every sub-index file, so that queries run without reading anything; returns every chunk. */
-  loadAll(): Promise<ChunkLeaf[]> {
-    return this.query({ ground: [-Infinity, -Infinity, Infinity, Infinity], zMin: -Infinity, zMax: Infinity });
+  /** Every sub-index file of the cube's tree (or of `root`, the floor chunks'), so that queries run without reading anything; returns every chunk. */
+  loadAll(root: InnerNode = this.index.root): Promise<ChunkLeaf[]> {
+    return this.query(EVERYWHERE, root);
   }
 
-  /** Synchronous query over what is loaded (after loadAll, or a query of every floor chunk). */
+  /** Synchronous query over what is loaded (after loadAll of the same tree). */
   queryLoaded(q: QueryBox, root: InnerNode = this.index.root): ChunkLeaf[] {
     return queryIndex(root, q, (ref) => this.subs.get(ref)).leaves;
   }
