@@ -7,8 +7,9 @@ import { describe, test } from 'node:test';
 import { boxMeets } from '../format/index-query.js';
 import { growBbox } from '../client/src/geometry/view.js';
 import { useTestBed } from './helpers/test-bed.js';
-import { mapLibreZoom, rdToLngLat } from './helpers/geo.js';
-import { camera, openDemo, record, recorded, resolution, settle, type VarioWindow } from './helpers/vario-page.js';
+import type { EngineApi } from './helpers/map-page.js';
+import { openMap } from './helpers/browser.js';
+import { camera, idle, record, recorded, settle, type VarioWindow } from './helpers/vario-page.js';
 
 describe('flyTo (bgt_otterlo_400m in small chunks)', () => {
   const bed = useTestBed(['--no-precompress', '--chunk-bytes', '16384']);
@@ -18,12 +19,11 @@ describe('flyTo (bgt_otterlo_400m in small chunks)', () => {
     const e = bed.contents.meta.extent;
     const at = (fx: number, fy: number): [number, number] => [e[0] + fx * (e[2] - e[0]), e[1] + fy * (e[3] - e[1])];
     const scale = bed.contents.meta.baseScale;
-    // Opened at the start (the demo keeps its view in the hash): only its chunks are loaded.
+    // Opened at the start: only its chunks are loaded. (The test page, whose engine tells which chunks a view shows.)
     const start = at(0.15, 0.15);
-    const [lng, lat] = rdToLngLat(start);
-    const zoom = mapLibreZoom(resolution(scale, bed.contents.meta.pixelSizeMm), lat);
-    bed.page = await openDemo(bed.browser, bed.server.url, {}, { hash: `#${zoom}/${lat}/${lng}` });
+    bed.page = await openMap(bed.browser, bed.server.url, { source: 'cube/', supersampling: 1, center: start.join(','), scale });
     const page = bed.page.page;
+    await idle(page);
     await record(page);
     const target = at(0.85, 0.85);
     const flight = await page.evaluate(async (c) => {
@@ -46,15 +46,19 @@ describe('flyTo (bgt_otterlo_400m in small chunks)', () => {
       if (r.t < flight.t0) before.add(r.file!);
       else if (!requested.has(r.file!)) requested.set(r.file!, r.t);
     }
-    // The chunks of the destination: those meeting its box at its z (flat surface).
+    // The chunks the destination shows: at the base scale the floor's, or the cube's when those
+    // came in along the path's lower part (they hold the floor's triangles too).
     const last = moves[moves.length - 1]!;
     const first = moves[0]!;
+    const leaves = [...bed.contents.leaves, ...bed.contents.floorLeaves];
+    const shown = (await page.evaluate(() => (globalThis as unknown as { engine: EngineApi }).engine.neededChunks())).visible;
     const meets = (file: string, m: { bounds: [number, number, number, number]; z: number }, margin: number): boolean => {
-      const leaf = bed.contents.leaves.find((l) => l.file === file)!;
+      const leaf = leaves.find((l) => l.file === file)!;
       return boxMeets(leaf.bbox, { ground: growBbox(m.bounds, margin), zMin: m.z, zMax: m.z });
     };
+    assert.ok(shown.every((f) => leaves.some((l) => l.file === f) && meets(f, last, 0)), `shown: ${shown.join(' ')}`);
     // (Chunks the start already had, or had asked for, are not fetched again.)
-    const destination = bed.contents.leaves.map((l) => l.file).filter((f) => meets(f, last, 0) && !meets(f, first, 0.25) && !before.has(f));
+    const destination = shown.filter((f) => !meets(f, first, 0.25) && !before.has(f));
     assert.ok(destination.length >= 3, `${destination.length} chunks shown at the destination and not at the start`);
     for (const f of destination) {
       const t = requested.get(f);
