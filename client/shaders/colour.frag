@@ -10,7 +10,10 @@
 // highlight, on their own pixels only (a fill, and an outline just inside the face's edge).
 // Blending, boundaries and states are compiled in only when a frame draws them (BLENDING,
 // BOUNDARIES, STATES; colour-pass.ts): a software GPU runs an untaken branch's texture reads
-// for every pixel, and these cost more than half of the frame. FLAT: the slice's z is uSliceZ.
+// for every pixel, and these cost more than half of the frame. So are the patterns (PATTERNS:
+// some class's pattern shows in the slice's z range). The ID target is read only for
+// boundaries and states: face 0 (nothing, or an area that left the map) has class 0xffff,
+// which is drawn as the background. FLAT: the slice's z is uSliceZ.
 // LINES: the cube's lines painted over the map (a frame drawn straight onto the canvas).
 precision highp float;
 precision highp int;
@@ -80,40 +83,48 @@ vec3 classColour(uint cls, float zSlice, vec3 masks) {
   if (i >= uClassCount) return uBackground.rgb;
   // The pattern's kind beside the fill: a class without a pattern costs one read.
   vec4 fill = texelFetch(uStyle, ivec2(i, 0), 0);
+#ifdef PATTERNS
   int kind = int(fill.a + 0.5);
   if (kind != 0) {
     vec3 pat = texelFetch(uStyle, ivec2(i, 1), 0).rgb;
     vec2 range = texelFetch(uStyle, ivec2(i, 2), 0).xy;
     if (zSlice >= range.x && zSlice <= range.y) return mix(fill.rgb, pat, masks[kind - 1]);
   }
+#endif
   return fill.rgb;
 }
 
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
-  ivec2 size = textureSize(uIds, 0);
-  uvec2 ids = texelFetch(uIds, p, 0).xy;
+  ivec2 size = textureSize(uAux, 0);
+  uvec2 aux = texelFetch(uAux, p, 0).xy;
+  uint upperClass = aux.x & 0xffffu;
+  uint lowerClass = aux.x >> 16;
   vec3 colour;
-  if (ids.x == 0u) {
+  if (upperClass == 0xffffu) {
     colour = uBackground.rgb;
   } else {
-    uvec2 aux = texelFetch(uAux, p, 0).xy;
 #ifdef FLAT
     float zSlice = uSliceZ;
 #else
     float zSlice = texelFetch(uSurface, p, 0).r;
 #endif
-    uint upperClass = aux.x & 0xffffu;
-    uint lowerClass = aux.x >> 16;
+#ifdef PATTERNS
     vec3 masks = patternMasks();
+#else
+    vec3 masks = vec3(0.0);
+#endif
     colour = classColour(upperClass, zSlice, masks);
 #ifdef BLENDING
-    if (ids.y != 0u && lowerClass != 0xffffu) {
+    if (lowerClass != 0xffffu) {
       float d = zSlice - uintBitsToFloat(aux.y);
       if (d < uBlendDistance) colour = mix(classColour(lowerClass, zSlice, masks), colour, d / uBlendDistance);
     }
 #endif
   }
+#if defined(BOUNDARIES) || defined(STATES)
+  uint face = texelFetch(uIds, p, 0).x;
+#endif
 #ifdef BOUNDARIES
   {
     bool edge = false;
@@ -121,19 +132,19 @@ void main() {
       if (k == 0) continue;
       ivec2 a = clamp(p + ivec2(k, 0), ivec2(0), size - 1);
       ivec2 b = clamp(p + ivec2(0, k), ivec2(0), size - 1);
-      if (texelFetch(uIds, a, 0).x != ids.x || texelFetch(uIds, b, 0).x != ids.x) edge = true;
+      if (texelFetch(uIds, a, 0).x != face || texelFetch(uIds, b, 0).x != face) edge = true;
     }
     if (edge) colour = mix(colour, uBoundaryColour.rgb, uBoundaryColour.a);
   }
 #endif
 #ifdef STATES
-  uint bits = stateBits(ids.x);
+  uint bits = stateBits(face);
   // Guarded: SwiftShader runs this loop for every pixel otherwise, which doubled the pass.
   if (bits != 0u) for (int s = 0; s < 2; s++) {
     if ((bits & (1u << uint(s))) == 0u) continue;
     colour = mix(colour, uStateFill[s].rgb, uStateFill[s].a);
     // The outline: pixels of the face within its width of another face (or of nothing).
-    if (uStateWidth[s] > 0 && nearOtherFace(p, size, ids.x, uStateWidth[s])) colour = mix(colour, uStateOutline[s].rgb, uStateOutline[s].a);
+    if (uStateWidth[s] > 0 && nearOtherFace(p, size, face, uStateWidth[s])) colour = mix(colour, uStateOutline[s].rgb, uStateOutline[s].a);
   }
 #endif
 #ifdef LINES

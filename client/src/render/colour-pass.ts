@@ -26,6 +26,8 @@ export interface ColourParams {
   faceState: Pick<FaceStateTexture, 'texture' | 'faceCount'>;
   /** Some face has a drawn state (else the pass is compiled without them and reads no state texel). */
   anyState: boolean;
+  /** Some class's pattern shows in the slice's z range (else the pass is compiled without patterns). */
+  patterns: boolean;
   /** Per drawn state (colour-options.ts, DRAWN_STATES), in the order painted. */
   statePaints: StatePaintParams[];
   /** Weight of this frame in the accumulated colour: 1 for the first. */
@@ -34,8 +36,8 @@ export interface ColourParams {
   flatZ: number | null;
 }
 
-/** What a frame chooses (colour-options.ts); the renderer adds its textures, whether any face has a state, the background and the flat slice's z. */
-export type FrameColourParams = Omit<ColourParams, 'style' | 'classCount' | 'background' | 'faceState' | 'anyState' | 'flatZ'>;
+/** What a frame chooses (colour-options.ts); the renderer adds its textures, whether any face has a state or any pattern shows, the background and the flat slice's z. */
+export type FrameColourParams = Omit<ColourParams, 'style' | 'classCount' | 'background' | 'faceState' | 'anyState' | 'patterns' | 'flatZ'>;
 
 export interface StatePaintParams {
   /** rgb, alpha = opacity. */
@@ -65,6 +67,7 @@ export class ColourPass {
     if (c.blendDistance > 0) features.push('BLENDING');
     if (c.boundaryBefore + c.boundaryAfter > 0) features.push('BOUNDARIES');
     if (c.anyState) features.push('STATES');
+    if (c.patterns) features.push('PATTERNS');
     if (c.flatZ !== null) features.push('FLAT');
     const p = this.programs.get(features);
     p.use();

@@ -20,7 +20,8 @@ import { createLineRuleTexture, drawnLineRules, type LineRule } from './line-rul
 import { lineAt, type LineHit } from '../engine/line-hit.js';
 import { OverlayPass, type OverlayDrawable } from './overlay-pass.js';
 import { PresentPass } from './present-pass.js';
-import { createStyleTexture, parseColour } from './style-texture.js';
+import { patternsMeet } from './pattern-range.js';
+import { createStyleTexture, parseColour, type DrawnStyle } from './style-texture.js';
 import { SurfacePass } from './surface-pass.js';
 import { flatSliceZ } from './surface-params.js';
 import { Targets } from './targets.js';
@@ -47,7 +48,7 @@ interface Gpu {
   lines: LinePass;
   targets: Targets;
   emptyVao: WebGLVertexArrayObject;
-  style: { texture: WebGLTexture; classCount: number } | null;
+  style: DrawnStyle | null;
   lineRules: WebGLTexture | null;
   faceState: FaceStateTexture | null;
 }
@@ -241,8 +242,9 @@ export class Renderer {
   }
 
   /** The colour pass's parameters for frame f: the frame's, with the renderer's textures and background. */
-  private colourParams(g: { style: { texture: WebGLTexture; classCount: number }; faceState: FaceStateTexture }, style: CubeStyle, f: FrameParams): ColourParams {
-    return { ...f.colour, style: g.style.texture, classCount: g.style.classCount, background: parseColour(style.background), faceState: g.faceState, anyState: this.faceStates.size > 0, flatZ: flatSliceZ(f.surface, f.zMax) };
+  private colourParams(g: { style: DrawnStyle; faceState: FaceStateTexture }, style: CubeStyle, f: FrameParams): ColourParams {
+    const patterns = patternsMeet(g.style.patternZ, f.sliceRange[0], f.sliceRange[1]);
+    return { ...f.colour, style: g.style.texture, classCount: g.style.classCount, background: parseColour(style.background), faceState: g.faceState, anyState: this.faceStates.size > 0, patterns, flatZ: flatSliceZ(f.surface, f.zMax) };
   }
 
   /** Shows the last frame's map again with the overlays as they are now (the map's image is kept). */

@@ -1,8 +1,9 @@
 // The style as a texture the colour pass looks classes up in (one column per class):
 // row 0 the fill colour and the pattern's kind (0: none), row 1 the pattern colour, row 2 the z range in which the
 // pattern shows (its scale range turned into steps, so the pass compares with the slice's z).
-import { zAtScale, type ScaleInfo } from '../../../format/scale.js';
+import type { ScaleInfo } from '../../../format/scale.js';
 import type { CubeStyle } from '../../../format/style.js';
+import { patternZRange, patternZRanges } from './pattern-range.js';
 import { texture2d } from './targets.js';
 
 export type Rgba = [number, number, number, number];
@@ -29,20 +30,25 @@ export function styleData(style: CubeStyle, info: ScaleInfo): { width: number; d
     if (p) {
       const pc = parseColour(p.color);
       data.set([pc[0], pc[1], pc[2], 1], 4 * (width + i));
-      const zLo = p.minScale !== undefined ? zAtScale(info, p.minScale) : -1;
-      const zHi = p.maxScale !== undefined ? zAtScale(info, p.maxScale) : 1e30;
-      data.set([zLo, zHi, 0, 0], 4 * (2 * width + i));
+      data.set([...patternZRange(p, info), 0, 0], 4 * (2 * width + i));
     }
   });
   return { width, data };
 }
 
-/** The style's texture; `info` turns the patterns' scale ranges into z (steps). */
-export function createStyleTexture(gl: WebGL2RenderingContext, style: CubeStyle, info: ScaleInfo): { texture: WebGLTexture; classCount: number } {
+/** The style's texture and the z ranges of its patterns (the colour pass compiles patterns in only where one shows); `info` turns the patterns' scale ranges into z (steps). */
+export function createStyleTexture(gl: WebGL2RenderingContext, style: CubeStyle, info: ScaleInfo): DrawnStyle {
   const { width, data } = styleData(style, info);
   const texture = texture2d(gl, gl.RGBA32F, width, 3);
   gl.bindTexture(gl.TEXTURE_2D, texture);
   gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, width, 3, gl.RGBA, gl.FLOAT, data);
   gl.bindTexture(gl.TEXTURE_2D, null);
-  return { texture, classCount: style.classes.length };
+  return { texture, classCount: style.classes.length, patternZ: patternZRanges(style, info) };
+}
+
+export interface DrawnStyle {
+  texture: WebGLTexture;
+  classCount: number;
+  /** The z range of each class's pattern. */
+  patternZ: [number, number][];
 }
