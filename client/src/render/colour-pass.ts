@@ -71,10 +71,15 @@ export class ColourPass {
     if (c.flatZ !== null) features.push('FLAT');
     const p = this.programs.get(features);
     p.use();
+    // Only the textures the variant samples: with the ID target bound to a unit its program
+    // does not sample (no boundaries or states), Chromium's SwiftShader later gave wrong face
+    // ids, in readbacks and in the colours drawn from them (e2e/slice-accuracy.test.ts, among others).
     const bind = (unit: number, tex: WebGLTexture, name: string): void => {
+      const loc = p.loc(name);
+      if (loc === null) return;
       gl.activeTexture(gl.TEXTURE0 + unit);
       gl.bindTexture(gl.TEXTURE_2D, tex);
-      gl.uniform1i(p.loc(name), unit);
+      gl.uniform1i(loc, unit);
     };
     bind(0, targets.ids, 'uIds');
     bind(1, targets.aux, 'uAux');
