@@ -7,7 +7,6 @@ import { describe, test } from 'node:test';
 import { boxMeets } from '../format/index-query.js';
 import { growBbox } from '../client/src/geometry/view.js';
 import { useTestBed } from './helpers/test-bed.js';
-import type { EngineApi } from './helpers/map-page.js';
 import { openMap } from './helpers/browser.js';
 import { camera, idle, record, recorded, settle, type VarioWindow } from './helpers/vario-page.js';
 
@@ -51,7 +50,7 @@ describe('flyTo (bgt_otterlo_400m in small chunks)', () => {
     const last = moves[moves.length - 1]!;
     const first = moves[0]!;
     const leaves = [...bed.contents.leaves, ...bed.contents.floorLeaves];
-    const { visible } = await page.evaluate(() => (globalThis as unknown as { engine: EngineApi }).engine.neededChunks());
+    const { visible } = await page.evaluate(() => engine.neededChunks());
     const shown = visible.filter((f) => !f.startsWith('l-')); // (line chunks, if any: not surfaces)
     const meets = (file: string, m: { bounds: [number, number, number, number]; z: number }, margin: number): boolean => {
       const leaf = leaves.find((l) => l.file === file)!;
