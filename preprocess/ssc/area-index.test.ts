@@ -38,3 +38,16 @@ test('AreaIndex: an area grown by more triangles holds their points too, and its
   assert.equal(area.contains(0.25, 0.25), true, 'the square still');
   assert.equal(area.contains(1.8, 0.8), false);
 });
+
+test('AreaIndex: a triangle overlaps the area when their insides meet, though neither its centre nor a corner lies in it', () => {
+  const square = new AreaIndex([0, 1, 3, 1, 4, 3], xs, ys);
+  // A long thin triangle across the square, its corners and centre outside it.
+  const across = [-5, 0.4, 6, 0.4, 6, 0.6];
+  assert.equal(square.contains((-5 + 6 + 6) / 3, (0.4 + 0.4 + 0.6) / 3), false, 'its centre is outside');
+  assert.equal(square.overlaps(across), true);
+  assert.equal(square.overlaps([1, 0, 2, 0, 1, 1]), false, 'the triangle to its right touches along an edge only');
+  assert.equal(square.overlaps([1, 1, 2, 1, 1, 2]), false, 'a corner only');
+  assert.equal(square.overlaps([0.9, 0.1, 3, 0.1, 0.9, 0.2]), true, 'reaching in by a tenth');
+  assert.equal(square.overlaps([5, 5, 6, 5, 5, 6]), false, 'outside the box');
+  assert.equal(new AreaIndex([], xs, ys).overlaps(across), false, 'no triangles');
+});

@@ -1,6 +1,7 @@
 // An area given as triangles, asked whether it holds a point: which face held back in a
 // cascade lies under a ramp triangle (surfaces.ts names it the triangle's lower face).
 import { orient } from '../geom/predicates.js';
+import { trianglesOverlap } from '../geom/triangles-overlap.js';
 
 export class AreaIndex {
   /** x0 y0 x1 y1 x2 y2 per triangle, in the first `used` entries (the rest is room to grow). */
@@ -43,6 +44,15 @@ export class AreaIndex {
     for (let i = 0; i < this.used; i += 6) {
       if (orient(c[i]!, c[i + 1]!, c[i + 2]!, c[i + 3]!, x, y) >= 0 && orient(c[i + 2]!, c[i + 3]!, c[i + 4]!, c[i + 5]!, x, y) >= 0 && orient(c[i + 4]!, c[i + 5]!, c[i]!, c[i + 1]!, x, y) >= 0) return true;
     }
+    return false;
+  }
+
+  /** Whether triangle [x0, y0, x1, y1, x2, y2] overlaps one of the triangles (touching does not count). */
+  overlaps(t: ArrayLike<number>): boolean {
+    const [x0, y0, x1, y1] = this.box;
+    if (Math.max(t[0]!, t[2]!, t[4]!) <= x0 || Math.min(t[0]!, t[2]!, t[4]!) >= x1 || Math.max(t[1]!, t[3]!, t[5]!) <= y0 || Math.min(t[1]!, t[3]!, t[5]!) >= y1) return false;
+    const c = this.corners;
+    for (let i = 0; i < this.used; i += 6) if (trianglesOverlap(t, c.subarray(i, i + 6))) return true;
     return false;
   }
 }

@@ -119,7 +119,8 @@ test('bgt_otterlo_400m: nothing in the smooth cube changes class flat', async (t
   const c = changesOf(classic);
   const s = changesOf(smooth);
   t.diagnostic(`classic: ${c.total} triangles, ${sum(c).toFixed(0)} m2 ${JSON.stringify(c.byKind)}; smooth: ${s.total}, ${sum(s).toFixed(1)} m2 ${JSON.stringify(s.byKind)}`);
-  assert.ok(c.total > 7000, `the classic cube: ${c.total}`);
+  // The classic cube has thousands (5,075; 7,641 before a split cut runs of triangles as one).
+  assert.ok(c.total > 4000, `the classic cube: ${c.total}`);
   // Every merge, split and removal tilts: among them the removals whose corner goes to the
   // face held back beside it (7 lay flat when they went to the face the tGAP names, not yet
   // shown there), the removals a split hands back (left out: 16 flat triangles in split parts

@@ -831,24 +831,16 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   const held = new Map<number, Held[]>();
   const splitOf = new Map(t.events.filter((e) => e.kind === EventKind.Split).map((e) => [e.loser, e]));
   const carried = new Map<number, { step: number; into: number }>();
-  /** The centre of triangle i of a split's triangulation. */
-  const splitCentre = (split: TgapEvent, i: number): [number, number] => out.centre(split.tris![3 * i]!, split.tris![3 * i + 1]!, split.tris![3 * i + 2]!);
+  /** Triangle i of a split's triangulation as [x0, y0, x1, y1, x2, y2]. */
+  const splitTriangle = (split: TgapEvent, i: number): number[] => [0, 1, 2].flatMap((j) => [xs[split.tris![3 * i + j]!]!, ys[split.tris![3 * i + j]!]!]);
   /**
    * Whether a split gives some of `area` to a face of class cl: one of its triangles for such a
-   * face has its centre, or a point just inside one of its corners, in the area (a road's split
-   * triangles span the road, and may reach into an area beside it only at a corner).
+   * face overlaps the area (a road's split triangles span the road, and a run of them cut as
+   * one may cross a small area with neither its centre nor a corner in it).
    */
   const givesBackTo = (split: TgapEvent, area: AreaIndex, cl: number): boolean => {
-    const tv = split.tris!, tf = split.triFaces!;
-    for (let i = 0; i < tf.length; i++) {
-      if (faces[tf[i]!]!.classIndex !== cl) continue;
-      const [cx, cy] = splitCentre(split, i);
-      if (area.contains(cx, cy)) return true;
-      for (let j = 0; j < 3; j++) {
-        const v = tv[3 * i + j]!;
-        if (area.contains(xs[v]! + (cx - xs[v]!) * 0.01, ys[v]! + (cy - ys[v]!) * 0.01)) return true;
-      }
-    }
+    const tf = split.triFaces!;
+    for (let i = 0; i < tf.length; i++) if (faces[tf[i]!]!.classIndex === cl && area.overlaps(splitTriangle(split, i))) return true;
     return false;
   };
   /**
@@ -863,7 +855,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
     /** Per face taking some of the area, its triangles there. */
     const over = new Map<number, number[]>();
     for (let i = 0; i < tf.length; i++) {
-      if (faces[tf[i]!]!.classIndex === cl || !area.contains(...splitCentre(split, i))) continue;
+      if (faces[tf[i]!]!.classIndex === cl || !area.overlaps(splitTriangle(split, i))) continue;
       let l = over.get(tf[i]!);
       if (!l) over.set(tf[i]!, (l = []));
       l.push(tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!);

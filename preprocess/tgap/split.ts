@@ -2,9 +2,13 @@
 // length: the face is triangulated (constrained Delaunay), every triangle is cut into fan
 // pieces around its centroid and the midpoints of its inner edges, and each piece goes to the
 // neighbour it touches. The cuts through midpoints follow the face's centre line, so each
-// neighbour takes the half of the road on its side.
+// neighbour takes the half of the road on its side. Runs of triangles along the road are cut
+// as one where the centre line is nearly straight: fewer pieces, which every later surface
+// over the road's area inherits.
 import { snapNewVertices } from '../geom/snap-new-vertices.js';
 import { triangulateRegion } from '../geom/cdt.js';
+import { orient } from '../geom/predicates.js';
+import { pointSegmentDistance } from '../../format/point-segment.js';
 import { LocalVertices } from '../geom/local-vertices.js';
 import type { PlanarState } from './planar-state.js';
 import { EMPTY_I32, EMPTY_U8 } from './planar-state.js';
@@ -109,58 +113,159 @@ export function splitFace(st: PlanarState, L: number, snapStep = 0): SplitResult
   }
 
   // Fan pieces. A diagonal (inner edge) gets a midpoint when its ends go to different faces;
-  // a triangle gets its centroid when its pieces go to more than one face.
-  const outTris: number[] = [];
-  const outFaces: number[] = [];
-  const mid = new Map<number, number>(); // key min*nl+max -> global vertex
-  const newSegs: { a: number; b: number; left: number; right: number }[] = []; // global vertex ids
-  const gx = (v: number): number => st.xs[v]!, gy = (v: number): number => st.ys[v]!;
-  const firstNew = st.size;
-  const emit = (a: number, b: number, c: number, face: number): void => {
-    outTris.push(a, b, c);
-    outFaces.push(face);
-  };
+  // a triangle gets its centroid when its pieces go to more than one face. A ring lists a
+  // triangle's corners (local ids) and the midpoints on its sides (-1 - diagonal key), with
+  // the face of the piece from each entry to the next.
+  const rings: { v: number[]; labels: number[] }[] = [];
   for (let t = 0; t < nt; t++) {
     const p = [tri[3 * t]!, tri[3 * t + 1]!, tri[3 * t + 2]!];
-    const ring: number[] = []; // global ids around the triangle
-    const labels: number[] = []; // label of the piece from ring[i] to ring[i + 1]
+    const v: number[] = [], labels: number[] = [];
     for (let k = 0; k < 3; k++) {
       const a = p[k]!, b = p[(k + 1) % 3]!;
       const sl = segLabel.get(a * nl + b);
-      ring.push(ids[a]!);
+      v.push(a);
       if (sl !== undefined) {
         labels.push(sl !== 0 ? sl : vlabel[a]!);
       } else if (vlabel[a] === vlabel[b]) {
         labels.push(vlabel[a]!);
       } else {
-        const key = Math.min(a, b) * nl + Math.max(a, b);
-        let m = mid.get(key);
-        if (m === undefined) {
-          m = st.addVertex((gx(ids[a]!) + gx(ids[b]!)) / 2, (gy(ids[a]!) + gy(ids[b]!)) / 2);
-          mid.set(key, m);
-        }
-        ring.push(m);
+        v.push(-1 - (Math.min(a, b) * nl + Math.max(a, b)));
         labels.push(vlabel[a]!, vlabel[b]!);
       }
     }
+    rings.push({ v, labels });
+  }
+  const changesOf = (labels: number[]): number[] => {
+    const m = labels.length, out: number[] = [];
+    for (let i = 0; i < m; i++) if (labels[i] !== labels[(i + m - 1) % m]) out.push(i);
+    return out;
+  };
+  // A straight cut: two changes of face, each side at least two pieces of ring.
+  const straightCut = (labels: number[]): [number, number] | null => {
+    const c = changesOf(labels), m = labels.length;
+    return c.length === 2 && c[1]! - c[0]! >= 2 && m - (c[1]! - c[0]!) >= 2 ? [c[0]!, c[1]!] : null;
+  };
+  const px = (r: number): number => (r >= 0 ? coords[2 * r]! : (coords[2 * Math.floor((-1 - r) / nl)]! + coords[2 * ((-1 - r) % nl)]!) / 2);
+  const py = (r: number): number => (r >= 0 ? coords[2 * r + 1]! : (coords[2 * Math.floor((-1 - r) / nl) + 1]! + coords[2 * ((-1 - r) % nl) + 1]!) / 2);
+  /** The fans of a straight cut from i1 to i2: pieces [apex, ring k, ring k + 1] with their face. */
+  const cutFans = (v: number[], labels: number[], [i1, i2]: [number, number]): [number, number, number, number][] => {
+    const m = v.length, out: [number, number, number, number][] = [];
+    for (let k = i1 + 1; k < i2; k++) out.push([v[i1]!, v[k]!, v[k + 1]!, labels[i1]!]);
+    for (let k = i2 + 1; k < i1 + m; k++) out.push([v[i2]!, v[k % m]!, v[(k + 1) % m]!, labels[i2]!]);
+    return out;
+  };
+  // Neighbouring triangles cut straight through the midpoints of their common diagonals are cut
+  // as one, from the first change of face to the last, while every piece of the fans stays
+  // counterclockwise and every midpoint skipped lies within a quarter of the road's width there
+  // of the cut (so the cut stays in the middle half of the road): the centre line skips those
+  // midpoints, and k triangles make k + 2 pieces instead of 3k.
+  const sharing = new Map<number, number[]>(); // diagonal key -> triangles cut through its midpoint
+  const cuts = rings.map((r) => straightCut(r.labels));
+  rings.forEach((r, t) => {
+    if (!cuts[t]) return;
+    for (const e of r.v) if (e < 0) (sharing.get(e) ?? (sharing.set(e, []), sharing.get(e)!)).push(t);
+  });
+  /** Ring r1 and ring r2 joined through the midpoint `key` that both hold. */
+  const joinRings = (r1: { v: number[]; labels: number[] }, r2: { v: number[]; labels: number[] }, key: number): { v: number[]; labels: number[] } => {
+    const m1 = r1.v.length, m2 = r2.v.length, j1 = r1.v.indexOf(key), j2 = r2.v.indexOf(key);
+    const v: number[] = [], labels: number[] = [];
+    for (let k = 1; k < m1; k++) {
+      v.push(r1.v[(j1 + k) % m1]!);
+      labels.push(k < m1 - 1 ? r1.labels[(j1 + k) % m1]! : r2.labels[(j2 + 1) % m2]!);
+    }
+    for (let k = 2; k < m2 - 1; k++) {
+      v.push(r2.v[(j2 + k) % m2]!);
+      labels.push(r2.labels[(j2 + k) % m2]!);
+    }
+    return { v, labels };
+  };
+  // The road's half width at a midpoint: its distance to the boundary next to its diagonal's ends.
+  const boundaryAt: number[][] = Array.from({ length: nl }, () => []);
+  segs.forEach((sg, i) => { boundaryAt[sg.a]!.push(i); boundaryAt[sg.b]!.push(i); });
+  const halfWidth = (key: number): number => {
+    let d = Infinity;
+    for (const end of [Math.floor((-1 - key) / nl), (-1 - key) % nl]) {
+      for (const i of boundaryAt[end]!) {
+        const sg = segs[i]!;
+        d = Math.min(d, pointSegmentDistance(px(key), py(key), px(sg.a), py(sg.a), px(sg.b), py(sg.b)));
+      }
+    }
+    return d;
+  };
+  const inMiddle = (key: number, a: number, b: number): boolean =>
+    pointSegmentDistance(px(key), py(key), px(a), py(a), px(b), py(b)) <= halfWidth(key) / 2;
+  const joinedTo = new Int32Array(nt).fill(-1); // the first triangle of the group a triangle is cut with
+  const joined = new Map<number, { v: number[]; labels: number[]; cut: [number, number] }>();
+  for (let t = 0; t < nt; t++) {
+    if (!cuts[t] || joinedTo[t]! >= 0) continue;
+    let ring = rings[t]!;
+    let cut = cuts[t]!;
+    const members = [t], skipped: number[] = [];
+    for (let grown = true; grown;) {
+      grown = false;
+      for (const key of ring.v) {
+        if (key >= 0) continue;
+        const u = sharing.get(key)!.find((w) => !members.includes(w));
+        if (u === undefined || joinedTo[u]! >= 0) continue;
+        const next = joinRings(ring, rings[u]!, key);
+        const c = straightCut(next.labels);
+        if (!c) continue;
+        const a = next.v[c[0]]!, b = next.v[c[1]]!;
+        if (![...skipped, key].every((k) => inMiddle(k, a, b))) continue;
+        if (!cutFans(next.v, next.labels, c).every(([p, q, r]) => orient(px(p), py(p), px(q), py(q), px(r), py(r)) > 0)) continue;
+        ring = next;
+        cut = c;
+        members.push(u);
+        skipped.push(key);
+        grown = true;
+        break;
+      }
+    }
+    if (members.length === 1) continue;
+    for (const u of members) joinedTo[u] = t;
+    joined.set(t, { ...ring, cut });
+  }
+
+  const outTris: number[] = [];
+  const outFaces: number[] = [];
+  const mid = new Map<number, number>(); // diagonal key -> global vertex
+  const newSegs: { a: number; b: number; left: number; right: number }[] = []; // global vertex ids
+  const gx = (v: number): number => st.xs[v]!, gy = (v: number): number => st.ys[v]!;
+  const firstNew = st.size;
+  const global = (r: number): number => {
+    if (r >= 0) return ids[r]!;
+    let m = mid.get(r);
+    if (m === undefined) {
+      const a = ids[Math.floor((-1 - r) / nl)]!, b = ids[(-1 - r) % nl]!;
+      m = st.addVertex((gx(a) + gx(b)) / 2, (gy(a) + gy(b)) / 2);
+      mid.set(r, m);
+    }
+    return m;
+  };
+  const emit = (a: number, b: number, c: number, face: number): void => {
+    outTris.push(a, b, c);
+    outFaces.push(face);
+  };
+  for (let t = 0; t < nt; t++) {
+    const one = joined.get(t);
+    if (!one && joinedTo[t]! >= 0) continue; // cut with the group it was joined to
+    const { v, labels } = one ?? rings[t]!;
+    const ring = v.map(global);
     if (labels.every((l) => l === labels[0])) {
-      emit(ids[p[0]!]!, ids[p[1]!]!, ids[p[2]!]!, labels[0]!);
+      emit(ring[0]!, ring[1]!, ring[2]!, labels[0]!);
       continue;
     }
     // Two faces meeting in this triangle: cut it straight from one change of face to the other
     // (midpoint to midpoint along a road, which follows its centre line).
-    const m0 = ring.length;
-    const changes: number[] = [];
-    for (let i = 0; i < m0; i++) if (labels[i] !== labels[(i + m0 - 1) % m0]) changes.push(i);
-    if (changes.length === 2 && changes[1]! - changes[0]! >= 2 && m0 - (changes[1]! - changes[0]!) >= 2) {
-      const [i1, i2] = changes as [number, number];
-      for (let k = i1 + 1; k < i2; k++) emit(ring[i1]!, ring[k]!, ring[k + 1]!, labels[i1]!);
-      for (let k = i2 + 1; k < i1 + m0; k++) emit(ring[i2]!, ring[k % m0]!, ring[(k + 1) % m0]!, labels[i2]!);
-      newSegs.push({ a: ring[i2]!, b: ring[i1]!, left: labels[i1]!, right: labels[i2]! });
+    const cut = one?.cut ?? cuts[t];
+    if (cut) {
+      for (const [a, b, c, face] of cutFans(ring, labels, cut)) emit(a, b, c, face);
+      newSegs.push({ a: ring[cut[1]]!, b: ring[cut[0]]!, left: labels[cut[0]]!, right: labels[cut[1]]! });
       continue;
     }
-    const cx = (gx(ids[p[0]!]!) + gx(ids[p[1]!]!) + gx(ids[p[2]!]!)) / 3;
-    const cy = (gy(ids[p[0]!]!) + gy(ids[p[1]!]!) + gy(ids[p[2]!]!)) / 3;
+    const p = rings[t]!.v.filter((r) => r >= 0).map((r) => ids[r]!);
+    const cx = (gx(p[0]!) + gx(p[1]!) + gx(p[2]!)) / 3;
+    const cy = (gy(p[0]!) + gy(p[1]!) + gy(p[2]!)) / 3;
     const cen = st.addVertex(cx, cy);
     const m = ring.length;
     for (let i = 0; i < m; i++) {
