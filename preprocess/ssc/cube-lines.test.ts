@@ -63,7 +63,8 @@ test('bgt_otterlo_400m: the cube\'s lines read back are the collapsed and pruned
   const simplified = new Map(simplifyLines(shown, tgap).lines.map((l, i) => [shown[i]!, l]));
 
   const dir = path.join(tempDir(t), 'cube');
-  const report = await buildCube(tgap, dir, { precompress: false, chunkBytes: 32 * 1024 });
+  // Chunks small enough that the lines take more than one (their vertices gone by birth left out, 32 KiB held all).
+  const report = await buildCube(tgap, dir, { precompress: false, chunkBytes: 12 * 1024 });
   assert.equal(report.lines, shown.length);
   assert.ok(report.lineChunkBytes.length >= 2, `${report.lineChunkBytes.length} line chunks`);
   const reader = await CubeReader.open(dir);
@@ -74,7 +75,8 @@ test('bgt_otterlo_400m: the cube\'s lines read back are the collapsed and pruned
   assert.deepEqual(perClass(read.map((r) => r.line.classIndex)), perClass(shown.map((l) => l.classIndex)));
 
   // Each line read back is one line of pruneLines' (by class and feature), with its coordinates to the
-  // nearest step of its chunk's grid (docs/FORMAT.md) and its z range.
+  // nearest step of its chunk's grid (docs/FORMAT.md) and its z range, less the vertices that
+  // simplification takes by the step the line is born (never drawn).
   const expected = new Map<string, PrunedLine[]>();
   for (const l of shown) {
     const k = key(l.classIndex, l.feature);
@@ -85,9 +87,13 @@ test('bgt_otterlo_400m: the cube\'s lines read back are the collapsed and pruned
   const onGrid = (v: number, origin: number, step: number): number => origin + Math.round((v - origin) / step) * step;
   for (const { line, originX, originY, step } of read) {
     const candidates = expected.get(key(line.classIndex, line.feature)) ?? [];
+    const drawn = (l: PrunedLine, k: number): number[] => {
+      const ends = simplified.get(l)!.vertexEnd[k]!;
+      return [...l.paths[k]!].filter((_, i) => ends[i >> 1]! > l.step);
+    };
     const same = (l: PrunedLine): boolean =>
       l.paths.length === line.paths.length &&
-      l.paths.every((p, k) => p.length === line.paths[k]!.length && p.every((v, i) => line.paths[k]![i] === onGrid(v, i % 2 === 0 ? originX : originY, step)));
+      l.paths.every((_, k) => drawn(l, k).length === line.paths[k]!.length && drawn(l, k).every((v, i) => line.paths[k]![i] === onGrid(v, i % 2 === 0 ? originX : originY, step)));
     const match = candidates.find((l) => same(l) && !readOf.has(l));
     assert.ok(match, `a line of class ${line.classIndex}, feature #${line.feature} read back matches no line of pruneLines on its grid`);
     readOf.set(match, line);
@@ -95,6 +101,11 @@ test('bgt_otterlo_400m: the cube\'s lines read back are the collapsed and pruned
     assert.equal(line.zEnd, match.prunedStep > steps ? steps + 1 : phase0(match.prunedStep), 'zEnd: phase 0 of the step pruned, or the top');
   }
   assert.equal(readOf.size, shown.length);
+  const stored = read.reduce((n, r) => n + r.line.leaveZ.reduce((m, e) => m + e.length, 0), 0);
+  const all = shown.reduce((n, l) => n + l.paths.reduce((m, p) => m + p.length / 2, 0), 0);
+  t.diagnostic(`${stored} of ${all} line vertices stored`);
+  assert.ok(stored < all, 'vertices gone by a line\'s birth are left out');
+  for (const { line } of read) assert.ok(line.leaveZ.every((e) => e.every((z) => z > line.zStart)), 'every vertex stored is drawn at the line\'s birth');
 
   // Each line read back carries the rule of its feature's klasse: cycle paths the cycle-path rule,
   // main roads the main-road rule, and so on; classes and values without a drawn line have none.

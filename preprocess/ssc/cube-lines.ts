@@ -42,19 +42,27 @@ export function generalizedLines(tgap: Tgap, style: Pick<Style, 'classes' | 'lin
   return { rules: shown.map(({ rule }) => rule), pruned, simplified };
 }
 
-/** The lines of generalizedLines in the cube's z, in the order collapseLines gives them. */
+/**
+ * The lines of generalizedLines in the cube's z, in the order collapseLines gives them, without
+ * the vertices gone by the state a line is born in: a line is drawn from that state on, each
+ * vertex while its state lasts (linePathsAtZ), so those are never drawn (on bgt_otterlo_1800m
+ * 51,957 of 80,031 vertices, simplified away at scales where the line was still an area).
+ */
 export function cubeLines(tgap: Tgap, style: Pick<Style, 'classes' | 'lineRules'>): LineRecord[] {
   const steps = tgap.meta.steps;
   const { simplified, rules } = generalizedLines(tgap, style);
-  return simplified.lines.map((l, i) => ({
-    classIndex: l.classIndex,
-    rule: rules[i]!,
-    feature: l.feature,
-    zStart: phaseZ(l.step, 0),
-    zEnd: stateEndZ(l.prunedStep, steps),
-    paths: l.paths,
-    leaveZ: l.vertexEnd.map((ends) => Float64Array.from(ends, (e) => stateEndZ(e, steps))),
-  }));
+  return simplified.lines.map((l, i) => {
+    const drawn = l.vertexEnd.map((ends) => [...ends.keys()].filter((j) => ends[j]! > l.step));
+    return {
+      classIndex: l.classIndex,
+      rule: rules[i]!,
+      feature: l.feature,
+      zStart: phaseZ(l.step, 0),
+      zEnd: stateEndZ(l.prunedStep, steps),
+      paths: drawn.map((js, k) => Float64Array.from(js.flatMap((j) => [l.paths[k]![2 * j]!, l.paths[k]![2 * j + 1]!]))),
+      leaveZ: drawn.map((js, k) => Float64Array.from(js, (j) => stateEndZ(l.vertexEnd[k]![j]!, steps))),
+    };
+  });
 }
 
 export interface LineChunk {
