@@ -20,6 +20,7 @@ import { pointSegmentDistance } from '../../format/point-segment.js';
 import { assertNear, classIndexOf, edgePoints, edgesBetween, fixtureStyle, planarStateOf, topologyOf, type FixtureFace } from '../../testing/planar-fixtures.js';
 import { generalize } from './generalize.js';
 import { handOver, splitFace } from './split.js';
+import type { PlanarState } from './planar-state.js';
 
 const A = 1, R = 2, B = 3;
 const CLASSES = ['a', 'road', 'b'];
@@ -28,6 +29,10 @@ const FACES: FixtureFace[] = [
   { cls: 'road', rings: [[[0, 0.5], [2, 0], [4, 0], [6, 0], [8, 0], [10, 0.5], [8, 1], [6, 1], [4, 1], [2, 1]]] },
   { cls: 'b', rings: [[[0, 0.5], [2, 1], [4, 1], [6, 1], [8, 1], [10, 0.5], [10, 6], [0, 6]]] },
 ];
+
+/** Twice the signed area of triangle a b c (vertex ids of st): positive when counterclockwise. */
+const twiceArea = (st: PlanarState, a: number, b: number, c: number): number =>
+  (st.xs[b]! - st.xs[a]!) * (st.ys[c]! - st.ys[a]!) - (st.xs[c]! - st.xs[a]!) * (st.ys[b]! - st.ys[a]!);
 
 test('a road is handed to the faces on either side, split along its centre line, areas preserved', () => {
   const st = planarStateOf(FACES, CLASSES);
@@ -43,7 +48,7 @@ test('a road is handed to the faces on either side, split along its centre line,
   for (let t = 0; t < res.triFaces.length; t++) {
     assert.ok(res.triFaces[t] === A || res.triFaces[t] === B, `triangle ${t} goes to face ${res.triFaces[t]}`);
     const [a, b, c] = [res.tris[3 * t]!, res.tris[3 * t + 1]!, res.tris[3 * t + 2]!];
-    covered += ((st.xs[b]! - st.xs[a]!) * (st.ys[c]! - st.ys[a]!) - (st.xs[c]! - st.xs[a]!) * (st.ys[b]! - st.ys[a]!)) / 2;
+    covered += twiceArea(st, a, b, c) / 2;
   }
   assertNear(covered, 8, 'area of the triangles');
   // Each piece lies on its receiver's side of the centre line and is counterclockwise.
@@ -52,7 +57,7 @@ test('a road is handed to the faces on either side, split along its centre line,
     const ys = c.map((v) => st.ys[v]!);
     assert.ok(res.triFaces[t] === A ? ys.every((y) => y <= 0.5) : ys.every((y) => y >= 0.5), `triangle ${t} on its side`);
     const [a, b, d] = c as [number, number, number];
-    assert.ok((st.xs[b]! - st.xs[a]!) * (st.ys[d]! - st.ys[a]!) - (st.xs[d]! - st.xs[a]!) * (st.ys[b]! - st.ys[a]!) > 0, `triangle ${t} counterclockwise`);
+    assert.ok(twiceArea(st, a, b, d) > 0, `triangle ${t} counterclockwise`);
   }
   // The road's 8 triangles, each cut alone, make 22 pieces (a tip 2, a triangle of the strip
   // 3). Every midpoint lies on y = 0.5, so all 8 are cut as one, from tip to tip: each side is
@@ -100,7 +105,7 @@ function assertCutAlong(faces: FixtureFace[], area: number, centre: [number, num
   let covered = 0;
   for (let t = 0; t < res.triFaces.length; t++) {
     const [a, b, c] = [res.tris[3 * t]!, res.tris[3 * t + 1]!, res.tris[3 * t + 2]!];
-    const a2 = (st.xs[b]! - st.xs[a]!) * (st.ys[c]! - st.ys[a]!) - (st.xs[c]! - st.xs[a]!) * (st.ys[b]! - st.ys[a]!);
+    const a2 = twiceArea(st, a, b, c);
     assert.ok(a2 > 0, `triangle ${t} counterclockwise`);
     covered += a2 / 2;
   }

@@ -145,8 +145,10 @@ export function splitFace(st: PlanarState, L: number, snapStep = 0): SplitResult
     const c = changesOf(labels), m = labels.length;
     return c.length === 2 && c[1]! - c[0]! >= 2 && m - (c[1]! - c[0]!) >= 2 ? [c[0]!, c[1]!] : null;
   };
-  const px = (r: number): number => (r >= 0 ? coords[2 * r]! : (coords[2 * Math.floor((-1 - r) / nl)]! + coords[2 * ((-1 - r) % nl)]!) / 2);
-  const py = (r: number): number => (r >= 0 ? coords[2 * r + 1]! : (coords[2 * Math.floor((-1 - r) / nl) + 1]! + coords[2 * ((-1 - r) % nl) + 1]!) / 2);
+  /** The two local vertices of the diagonal whose midpoint ring entry r (< 0) names. */
+  const diagonalEnds = (r: number): [number, number] => [Math.floor((-1 - r) / nl), (-1 - r) % nl];
+  const px = (r: number): number => (r >= 0 ? coords[2 * r]! : diagonalEnds(r).reduce((sum, e) => sum + coords[2 * e]!, 0) / 2);
+  const py = (r: number): number => (r >= 0 ? coords[2 * r + 1]! : diagonalEnds(r).reduce((sum, e) => sum + coords[2 * e + 1]!, 0) / 2);
   /** The fans of a straight cut from i1 to i2: pieces [apex, ring k, ring k + 1] with their face. */
   const cutFans = (v: number[], labels: number[], [i1, i2]: [number, number]): [number, number, number, number][] => {
     const m = v.length, out: [number, number, number, number][] = [];
@@ -184,7 +186,7 @@ export function splitFace(st: PlanarState, L: number, snapStep = 0): SplitResult
   segs.forEach((sg, i) => { boundaryAt[sg.a]!.push(i); boundaryAt[sg.b]!.push(i); });
   const halfWidth = (key: number): number => {
     let d = Infinity;
-    for (const end of [Math.floor((-1 - key) / nl), (-1 - key) % nl]) {
+    for (const end of diagonalEnds(key)) {
       for (const i of boundaryAt[end]!) {
         const sg = segs[i]!;
         d = Math.min(d, pointSegmentDistance(px(key), py(key), px(sg.a), py(sg.a), px(sg.b), py(sg.b)));
@@ -236,7 +238,7 @@ export function splitFace(st: PlanarState, L: number, snapStep = 0): SplitResult
     if (r >= 0) return ids[r]!;
     let m = mid.get(r);
     if (m === undefined) {
-      const a = ids[Math.floor((-1 - r) / nl)]!, b = ids[(-1 - r) % nl]!;
+      const [a, b] = diagonalEnds(r).map((e) => ids[e]!) as [number, number];
       m = st.addVertex((gx(a) + gx(b)) / 2, (gy(a) + gy(b)) / 2);
       mid.set(r, m);
     }
