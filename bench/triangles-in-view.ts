@@ -9,9 +9,6 @@
 // pixel with a face. One fragment per pixel is the floor.
 // sessionNeeds takes the union over the views of a session: the bytes of the chunks they query,
 // and of the share of each chunk's triangles some view needs (bench:session).
-import { readFile } from 'node:fs/promises';
-import path from 'node:path';
-import { decodeFacePage, faceRecord } from '../format/face-page.js';
 import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
 import { zAtScale } from '../format/scale.js';
 import { CpuSlicer, sliceChunk } from '../preprocess/ssc/cpu-slicer.js';
@@ -32,7 +29,7 @@ export type TrianglesInView = (scale: number, centre: [number, number], width?: 
 export async function trianglesInView(cubeDir: string): Promise<TrianglesInView> {
   const cube = await CubeReader.open(cubeDir);
   const meta = cube.index.meta;
-  const endOf = await faceEnds(cube, cubeDir);
+  const endOf = await faceEnds(cube);
   return async (scale, centre, width = 1280, height = 720) => {
     const z = zAtScale(meta, scale);
     const [x0, y0, x1, y1] = viewBox(scale, centre, width, height);
@@ -59,22 +56,9 @@ function viewBox(scale: number, centre: [number, number], width: number, height:
 }
 
 /** Each face's end (its stepHigh, at or just above its true end), read from the cube's face pages once. */
-async function faceEnds(cube: CubeReader, cubeDir: string): Promise<(face: number) => number> {
-  const meta = cube.index.meta;
-  const pages = await Promise.all(meta.faces.pages.map(async (p) => {
-    const b = await readFile(path.join(cubeDir, p.file));
-    return decodeFacePage(b.buffer.slice(b.byteOffset, b.byteOffset + b.byteLength));
-  }));
-  const ends = new Map<number, number>();
-  const endOf = (face: number): number => {
-    let e = ends.get(face);
-    if (e === undefined) {
-      const rec = pages.map((p) => faceRecord(p, face)).find((r) => r !== undefined);
-      ends.set(face, (e = rec ? rec.stepHigh : Infinity));
-    }
-    return e;
-  };
-  return endOf;
+async function faceEnds(cube: CubeReader): Promise<(face: number) => number> {
+  const ends = await cube.faceEnds();
+  return (face) => ends[face] ?? Infinity;
 }
 
 /** The triangles of chunk `c` a slice at `z` needs within the ground box `box`, by index. */
@@ -106,7 +90,7 @@ export interface SessionNeeds {
  */
 export async function sessionNeeds(cubeDir: string, views: { scale: number; centre: [number, number] }[], bytesOf: (file: string) => Promise<number>, width = 1280, height = 720): Promise<SessionNeeds> {
   const cube = await CubeReader.open(cubeDir);
-  const endOf = await faceEnds(cube, cubeDir);
+  const endOf = await faceEnds(cube);
   // Each chunk read and decoded once, however many views query it.
   const needed = new Map<string, { chunk: ChunkData; used: Set<number> }>();
   for (const v of views) {

@@ -4,6 +4,7 @@ import { createHash } from 'node:crypto';
 import { promises as fs } from 'node:fs';
 import path from 'node:path';
 import { decodeChunk, type DecodedChunk } from '../../format/chunk.js';
+import { decodeFacePage } from '../../format/face-page.js';
 import { parseIndex, parseSubIndex, type ChunkLeaf, type CubeIndex, type InnerNode, type LineChunkLeaf } from '../../format/cube-index.js';
 import { EVERYWHERE, queryIndex, queryLineChunks, type QueryBox } from '../../format/index-query.js';
 import { decodeLineChunk, type LineChunkData } from '../../format/line-chunk.js';
@@ -71,6 +72,29 @@ export class CubeReader {
 
   async chunk(leaf: ChunkLeaf): Promise<DecodedChunk> {
     return this.checkedFile(leaf, 'chunk', decodeChunk);
+  }
+
+  /**
+   * Each face's end as a step, by face id: its stepHigh (at or just above the z where it ends),
+   * Infinity for a face alive to the top of the cube; from the face pages.
+   */
+  async faceEnds(): Promise<Float64Array> {
+    const meta = this.index.meta;
+    const ends = new Float64Array(meta.faces.count).fill(Infinity);
+    for (const p of meta.faces.pages) {
+      const file = path.join(this.dir, p.file);
+      let bytes: Buffer;
+      try {
+        bytes = await fs.readFile(file);
+      } catch (err) {
+        throw new InputError(`cannot read face page: ${(err as Error).message}`, { file });
+      }
+      const page = decodeFacePage(Uint8Array.from(bytes).buffer);
+      for (let i = 0; i < page.count && page.first + i < ends.length; i++) {
+        if (page.stepHigh[i]! <= meta.steps) ends[page.first + i] = page.stepHigh[i]!;
+      }
+    }
+    return ends;
   }
 
   /** The line chunks whose boxes meet the query (none in a cube without lines). */

@@ -42,11 +42,17 @@ export async function fetchChunkFile<T>(leaf: { file: string; sha256: string }, 
   return { data, verified: hash !== null };
 }
 
-export async function fetchChunk(leaf: ChunkLeaf, url: string, retry: RetryOptions, signal: AbortSignal): Promise<ChunkPayload> {
+/**
+ * A surface chunk, ready for the GPU: its upward triangles ordered for drawing (draw-ranges.ts),
+ * by the end of each one's upper face where `faceEnd` (by face id, as steps) is given.
+ */
+export async function fetchChunk(leaf: ChunkLeaf, url: string, retry: RetryOptions, signal: AbortSignal, faceEnd?: Promise<Float64Array | undefined>): Promise<ChunkPayload> {
   const { data: chunk, verified } = await fetchChunkFile(leaf, url, retry, signal, decodeChunk);
   // After the hash check: this rewrites the index section in place.
   const triangleCount = keepUpwardTriangles(chunk.positions, chunk.indices);
-  const blocks = orderForDrawing(chunk.positions, chunk.indices, triangleCount);
+  const ends = await faceEnd;
+  const { upper, indices } = chunk;
+  const blocks = orderForDrawing(chunk.positions, indices, triangleCount, ends ? (t) => ends[upper[indices[3 * t]!]!] ?? Infinity : undefined);
   return {
     kind: 'surfaces',
     file: leaf.file,

@@ -57,7 +57,25 @@ export class ChunkScheduler {
     private readonly tree: IndexTree,
     private readonly opts: SourceOptions,
     private readonly post: Post,
+    /** Every face's end (FeaturePages.faceEnds), asked for with the first chunk above the floor. */
+    private readonly loadFaceEnds: () => Promise<Float64Array>,
   ) {}
+
+  private faceEnds: Promise<Float64Array | undefined> | null = null;
+
+  /**
+   * The face ends a chunk is ordered by; none for a floor chunk (no face ends below the floor's
+   * top). Where the face pages fail to load, chunks come without ends (drawn whole, as if every
+   * face lived on) and the next chunk asks again.
+   */
+  private endsFor(leaf: ChunkLeaf): Promise<Float64Array | undefined> | undefined {
+    const top = this.tree.index.floor?.top;
+    if (top !== undefined && leaf.bbox[5] <= top) return undefined;
+    return (this.faceEnds ??= this.loadFaceEnds().catch(() => {
+      this.faceEnds = null;
+      return undefined;
+    }));
+  }
 
   setView(view: ViewRequest): void {
     // The same view again (its sub-index files came in) has not moved.
@@ -223,14 +241,14 @@ export class ChunkScheduler {
     this.setStatus(e, 'requested');
     const leaf = e.leaf;
     const url = this.tree.url(leaf.file);
-    (isLineLeaf(leaf) ? fetchLineChunk(leaf, url, this.tree.index.meta, this.opts, controller.signal) : fetchChunk(leaf, url, this.opts, controller.signal))
+    (isLineLeaf(leaf) ? fetchLineChunk(leaf, url, this.tree.index.meta, this.opts, controller.signal) : fetchChunk(leaf, url, this.opts, controller.signal, this.endsFor(leaf)))
       .then(
         (chunk) => {
           if (e.controller !== controller) return; // aborted meanwhile
           e.controller = null;
           this.failed.delete(leaf.file);
           this.setStatus(e, 'received');
-          const transfer = chunk.kind === 'lines' ? [chunk.segments.buffer, chunk.segmentLine.buffer, chunk.segmentRule.buffer, chunk.lineClass.buffer, chunk.lineFeature.buffer, chunk.lineRamp.buffer] : [chunk.buffer, chunk.blocks.cellBox.buffer, chunk.blocks.cellBlocks.buffer, chunk.blocks.zLow.buffer, chunk.blocks.first.buffer];
+          const transfer = chunk.kind === 'lines' ? [chunk.segments.buffer, chunk.segmentLine.buffer, chunk.segmentRule.buffer, chunk.lineClass.buffer, chunk.lineFeature.buffer, chunk.lineRamp.buffer] : [chunk.buffer, chunk.blocks.cellBox.buffer, chunk.blocks.cellBands.buffer, chunk.blocks.bandEnd.buffer, chunk.blocks.bandBlocks.buffer, chunk.blocks.zLow.buffer, chunk.blocks.first.buffer];
           this.post({ type: 'chunk', chunk }, transfer as ArrayBuffer[]);
         },
         (err: unknown) => {

@@ -35,8 +35,9 @@ scope.addEventListener('message', (ev) => {
         return IndexTree.fromBody(b, msg.url, options);
       }).then(
         (tree) => {
-          scheduler = new ChunkScheduler(tree, options, post);
-          pages = new FeaturePages(tree.index.meta.faces, tree.index.meta.attributes, (f) => tree.url(f), options);
+          const p = new FeaturePages(tree.index.meta.faces, tree.index.meta.attributes, (f) => tree.url(f), options);
+          pages = p;
+          scheduler = new ChunkScheduler(tree, options, post, () => p.faceEnds(tree.index.meta.steps));
           post({ type: 'meta', meta: tree.index.meta });
           if (pendingView) scheduler.setView(pendingView);
           pendingView = null;

@@ -47,6 +47,23 @@ export class FeaturePages {
     return featureAttributes(await this.attrPage(ap.file), feature);
   }
 
+  /**
+   * Every face's end as a step (its stepHigh: at or just above the z where it ends, so a
+   * triangle of it is left out only once newer surfaces cover it), Infinity for a face alive to
+   * the top of a cube of `steps` steps, from all face pages.
+   */
+  async faceEnds(steps: number): Promise<Float64Array> {
+    const ends = new Float64Array(this.faces.count).fill(Infinity);
+    const pages = await Promise.all(this.faces.pages.map((p) => this.facePage(p.file)));
+    for (const page of pages) {
+      for (let i = 0; i < page.count && page.first + i < ends.length; i++) {
+        const high = page.stepHigh[i]!;
+        ends[page.first + i] = high > steps ? Infinity : high;
+      }
+    }
+    return ends;
+  }
+
   private facePage(file: string): Promise<FacePage> {
     let p = this.facePages.get(file);
     if (!p) {
