@@ -56,7 +56,7 @@ interface Harness {
  * when not given); index.json is always served at once. With `uploads`, every chunk posted goes
  * on the GPU at the next turn of the event loop (else only by uploadAll).
  */
-async function harness(t: TestContext, files: Map<string, Uint8Array>, options: Partial<SourceOptions>, answer?: (url: string, n: number) => Answer, uploads = false, faceEnds = (): Promise<Float64Array> => Promise.resolve(new Float64Array(0))): Promise<Harness> {
+async function harness(t: TestContext, files: Map<string, Uint8Array>, options: Partial<SourceOptions>, answer?: (url: string, n: number) => Answer, uploads = false, faceEnds = (_faces: Uint32Array): Promise<(face: number) => number> => Promise.resolve(() => Infinity)): Promise<Harness> {
   const serve = serveFiles(BASE, files);
   const fetch = installFakeFetch(t, (url, n) => (url.endsWith('index.json') ? serve(url) : (answer ?? serve)(url, n)));
   const opts: SourceOptions = { concurrency: 4, retries: 0, backoffMs: 0, maxBackoffMs: 0, marginRestMs: 0, ...options };
@@ -272,13 +272,17 @@ describe('the chunk scheduler', () => {
   test('a chunk is ordered by when its faces end; face ends that fail to load leave a chunk whole and are asked for again', async (t) => {
     // Every triangle of a hand-made chunk has upper face 5: ended at step 7, its one band ends there.
     let asked = 0;
-    const ends = (): Promise<Float64Array> => (++asked === 1 ? Promise.reject(new Error('face page: 503')) : Promise.resolve(Float64Array.from([0, 0, 0, 0, 0, 7])));
+    const faces: number[][] = [];
+    const ends = (f: Uint32Array): Promise<(face: number) => number> => {
+      faces.push([...new Set(f)]);
+      return ++asked === 1 ? Promise.reject(new Error('face page: 503')) : Promise.resolve((face) => (face === 5 ? 7 : 0));
+    };
     const h = await harness(t, handMadeCube(row(2)).files, { concurrency: 1 }, undefined, true, ends);
     h.scheduler.setView(view(1, 0, 20, { centerX: 5 }));
     await eventually(() => h.received().length === 2, 'both chunks');
     assert.deepEqual([...h.payload('c-0.bin')!.blocks.bandEnd], [Infinity], 'the first chunk, without ends: drawn at every z');
     assert.deepEqual([...h.payload('c-1.bin')!.blocks.bandEnd], [7], 'the second chunk, with them');
-    assert.equal(asked, 2);
+    assert.deepEqual(faces, [[5], [5]], 'each chunk asks for its own faces');
     assert.deepEqual(h.errors(), []);
   });
 

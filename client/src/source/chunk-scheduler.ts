@@ -15,7 +15,7 @@
 //   (floorShown): the first map at the base scale takes a fifth of the bytes.
 import type { ChunkLeaf, LineChunkLeaf } from '../../../format/cube-index.js';
 import { boxMeets, chunkPriority, queryLineChunks, type QueryBox, type QueryResult } from '../../../format/index-query.js';
-import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
+import { ChunkCorrupt, fetchChunk, type FaceEnds } from './chunk-fetch.js';
 import { fetchLineChunk } from './line-chunk-fetch.js';
 import { FetchFailure } from './fetch-retry.js';
 import { indexError } from './index-error.js';
@@ -57,24 +57,19 @@ export class ChunkScheduler {
     private readonly tree: IndexTree,
     private readonly opts: SourceOptions,
     private readonly post: Post,
-    /** Every face's end (FeaturePages.faceEnds), asked for with the first chunk above the floor. */
-    private readonly loadFaceEnds: () => Promise<Float64Array>,
+    /** Where faces end (FeaturePages.faceEnds), asked for each chunk above the floor. */
+    private readonly faceEnds: (faces: Uint32Array) => Promise<(face: number) => number>,
   ) {}
 
-  private faceEnds: Promise<Float64Array | undefined> | null = null;
-
   /**
-   * The face ends a chunk is ordered by; none for a floor chunk (no face ends below the floor's
-   * top). Where the face pages fail to load, chunks come without ends (drawn whole, as if every
-   * face lived on) and the next chunk asks again.
+   * Where the faces of a chunk end, to order it by; not asked for a floor chunk (no face ends
+   * below the floor's top). Where the face pages fail to load, the chunk comes without ends
+   * (drawn whole, as if every face lived on); the next chunk asks again.
    */
-  private endsFor(leaf: ChunkLeaf): Promise<Float64Array | undefined> | undefined {
+  private endsFor(leaf: ChunkLeaf): FaceEnds | undefined {
     const top = this.tree.index.floor?.top;
     if (top !== undefined && leaf.bbox[5] <= top) return undefined;
-    return (this.faceEnds ??= this.loadFaceEnds().catch(() => {
-      this.faceEnds = null;
-      return undefined;
-    }));
+    return (faces) => this.faceEnds(faces).catch(() => undefined);
   }
 
   setView(view: ViewRequest): void {

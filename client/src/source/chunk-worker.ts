@@ -37,7 +37,7 @@ scope.addEventListener('message', (ev) => {
         (tree) => {
           const p = new FeaturePages(tree.index.meta.faces, tree.index.meta.attributes, (f) => tree.url(f), options);
           pages = p;
-          scheduler = new ChunkScheduler(tree, options, post, () => p.faceEnds(tree.index.meta.steps));
+          scheduler = new ChunkScheduler(tree, options, post, (faces) => p.faceEnds(faces, tree.index.meta.steps));
           post({ type: 'meta', meta: tree.index.meta });
           if (pendingView) scheduler.setView(pendingView);
           pendingView = null;

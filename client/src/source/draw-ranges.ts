@@ -18,7 +18,8 @@
 //   in a cube most triangles have ended: on bgt_otterlo_1800m at 1:8,929 (bench:passes) a frame
 //   drew 70,384 triangles before, 37,263 now (26,933 are live, offline for a centre view; 8
 //   bands would draw 7% fewer there for 11% more ranges). A chunk's ends come from the face
-//   pages; floor chunks and a cube without pages leave every triangle unended (Infinity).
+//   pages that hold its faces; a floor chunk, or one whose pages failed to load, leaves every
+//   triangle unended (Infinity).
 //
 // Ended triangles used to fill pixels the GPU leaves uncovered where live triangles meet at a
 // T-junction (one piece's corner on another's edge) or beside a sliver: on bgt_otterlo_400m at

@@ -1,5 +1,5 @@
-// Face ends from the face pages: every face's stepHigh, from pages fetched once, and Infinity for
-// a face alive to the top of the cube, on two hand-made pages.
+// Face ends from the face pages: a face's stepHigh, from the pages that hold the faces asked for,
+// each fetched once, and Infinity for a face alive to the top of the cube; on two hand-made pages.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { encodeFacePage, type FaceFields } from '../../../format/face-page.js';
@@ -9,7 +9,7 @@ import { FeaturePages } from './feature-pages.js';
 
 const BASE = 'https://maps.test/cube/';
 
-test('face ends: each face\'s stepHigh from every page, Infinity for a face alive to the top', async (t) => {
+test('face ends: each face\'s stepHigh, Infinity for a face alive to the top, from the pages that hold the faces asked for', async (t) => {
   // Faces 0..4: 0 the outside; 1 ends at 3, 2 at 8; 3 lives to the top (stepHigh above the
   // cube's 10 steps); 4 ends at the top, step 10.
   const faces: FaceFields[] = [
@@ -27,8 +27,13 @@ test('face ends: each face\'s stepHigh from every page, Infinity for a face aliv
     (f) => BASE + f,
     { retries: 0, backoffMs: 0, maxBackoffMs: 0 },
   );
-  assert.deepEqual([...(await pages.faceEnds(10))], [Infinity, 3, 8, Infinity, 10]);
+  // Faces of the first page only: the second is not fetched.
+  const first = await pages.faceEnds(Uint32Array.of(1, 2, 1), 10);
+  assert.deepEqual([0, 1, 2].map(first), [Infinity, 3, 8]);
+  assert.deepEqual(fetch.urls(), [`${BASE}f-0.bin`]);
+  const all = await pages.faceEnds(Uint32Array.of(4, 0, 3), 10);
+  assert.deepEqual([0, 1, 2, 3, 4, 5].map(all), [Infinity, 3, 8, Infinity, 10, Infinity]);
   // Picking afterwards reads the same pages: nothing fetched again.
   assert.equal((await pages.lookup(2))?.stepHigh, 8);
-  assert.equal(fetch.urls().length, 2);
+  assert.deepEqual(fetch.urls(), [`${BASE}f-0.bin`, `${BASE}f-1.bin`]);
 });

@@ -48,20 +48,25 @@ export class FeaturePages {
   }
 
   /**
-   * Every face's end as a step (its stepHigh: at or just above the z where it ends, so a
-   * triangle of it is left out only once newer surfaces cover it), Infinity for a face alive to
-   * the top of a cube of `steps` steps, from all face pages.
+   * The end of each of `faces` as a step: its stepHigh, at or just above the z where it ends (so
+   * a triangle of it is left out only once newer surfaces cover it), Infinity for a face alive
+   * to the top of a cube of `steps` steps or not in `faces`. Reads the pages that hold them,
+   * each fetched once: a chunk's faces lie in a few of the cube's pages (2 to 4 of nlcd_zion's 12).
    */
-  async faceEnds(steps: number): Promise<Float64Array> {
-    const ends = new Float64Array(this.faces.count).fill(Infinity);
-    const pages = await Promise.all(this.faces.pages.map((p) => this.facePage(p.file)));
-    for (const page of pages) {
-      for (let i = 0; i < page.count && page.first + i < ends.length; i++) {
-        const high = page.stepHigh[i]!;
-        ends[page.first + i] = high > steps ? Infinity : high;
-      }
+  async faceEnds(faces: ArrayLike<number>, steps: number): Promise<(face: number) => number> {
+    const files = new Set<string>();
+    for (let i = 0; i < faces.length; i++) {
+      const p = pageOf(this.faces, faces[i]!);
+      if (p) files.add(p.file);
     }
-    return ends;
+    const pages = await Promise.all([...files].map((f) => this.facePage(f)));
+    return (face) => {
+      for (const page of pages) {
+        const i = face - page.first;
+        if (i >= 0 && i < page.count) return page.stepHigh[i]! > steps ? Infinity : page.stepHigh[i]!;
+      }
+      return Infinity;
+    };
   }
 
   private facePage(file: string): Promise<FacePage> {
