@@ -16,7 +16,6 @@ import { fitBbox, viewBbox } from '../client/src/geometry/view.js';
 import { launchChromium, openMap, type MapPage } from './helpers/browser.js';
 import { buildCube, clientDir, compareIds, cpuSliceWithZ, cubeTriangles, otterlo400, type BuiltCube, type CubeTriangles, type Comparison, type SliceArgs } from './helpers/cube.js';
 import { readIds, waitIdle, type PageIds } from './helpers/map-page.js';
-import { CubeReader } from '../preprocess/ssc/read-cube.js';
 import { startTestServer, type TestServer } from './helpers/test-server.js';
 
 const W = 640, H = 480;
@@ -166,29 +165,6 @@ for (const smooth of [false, true]) describe(`GPU slicing equals the CPU referen
     // Of the 9,006 triangles up to the slice, the chunks this view meets hold 1,216 (1,552 on
     // the smooth cube; the map drew them all before the cells), the cells it meets 589 (712).
     assert.ok(drawn <= below / 10, `${drawn} triangles drawn for the ${needed} under the view (${below} in the cube up to the slice)`);
-  });
-
-  test('a view high in the cube leaves out the triangles whose faces have ended', async () => {
-    // Of a chunk's triangles, the map draws only bands whose upper faces have not all ended
-    // below the slice (draw-ranges.ts): the picture still equals the CPU's, with every live
-    // triangle drawn and far fewer than all up to the slice.
-    const z = 350;
-    await check(`z ${z}, whole extent`, extent, z);
-    const drawn = await mp.page.evaluate(() => engine.stats().triangles);
-    const ends = await (await CubeReader.open(cube.dir)).faceEnds();
-    const d = tris.data;
-    let below = 0, live = 0;
-    for (let t = 0; t < d.length; t += 9) {
-      const area = (d[t + 3]! - d[t]!) * (d[t + 7]! - d[t + 1]!) - (d[t + 6]! - d[t]!) * (d[t + 4]! - d[t + 1]!);
-      if (!(area > 0) || Math.min(d[t + 2]!, d[t + 5]!, d[t + 8]!) > z) continue;
-      below++;
-      if ((ends[tris.upper[t / 9]!] ?? Infinity) > z) live++;
-    }
-    const msg = `${drawn} triangles drawn, ${live} live, ${below} up to the slice`;
-    assert.ok(drawn >= live, msg);
-    // Measured: 10,632 drawn, 9,578 live of 19,924 (smooth; 18,183 drawn before); 6,090, 5,312
-    // of 15,976 (classic). At most a quarter of the ended ones.
-    assert.ok(drawn <= live + (below - live) / 4, msg);
   });
 
   test('a view given by centre and scale denominator matches ssc slice --scale', async () => {

@@ -106,20 +106,19 @@ export async function readCube(cubeDir: string): Promise<CubeContents> {
   return { meta: index.meta, leaves, floorLeaves, floorTop: index.floor?.top ?? 0, lines: index.lines ?? [], subIndexFiles: [...subs.keys()], root: index.root, subs };
 }
 
-/** Every triangle of a cube, x, y and z of each corner in ground coordinates, and its upper face; found by place. */
+/** Every triangle of a cube, x, y and z of each corner in ground coordinates, found by place. */
 export async function cubeTriangles(cubeDir: string): Promise<CubeTriangles> {
   const { leaves } = await readCube(cubeDir);
-  const out: number[] = [], upper: number[] = [];
+  const out: number[] = [];
   for (const leaf of leaves) {
     const c = await decodeChunk(await readFile(path.join(cubeDir, leaf.file)));
     const p = c.positions;
     for (let k = 0; k < c.indices.length; k++) {
       const v = c.indices[k]!;
       out.push(c.originX + p[3 * v]!, c.originY + p[3 * v + 1]!, p[3 * v + 2]!);
-      if (k % 3 === 0) upper.push(c.upper[v]!);
     }
   }
-  return new CubeTriangles(Float64Array.from(out), Uint32Array.from(upper));
+  return new CubeTriangles(Float64Array.from(out));
 }
 
 
@@ -134,8 +133,7 @@ export class CubeTriangles {
   private readonly cells = new Map<string, number[]>();
   private readonly cell: number;
 
-  /** `upper`: each triangle's upper face. */
-  constructor(readonly data: Float64Array, readonly upper: Uint32Array) {
+  constructor(readonly data: Float64Array) {
     let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
     for (let t = 0; t < data.length; t += 3) {
       x0 = Math.min(x0, data[t]!); x1 = Math.max(x1, data[t]!);

@@ -14,7 +14,7 @@ const BOX: Box3 = [0, 0, 0, 10, 10, 100];
 const chunk = (file: string, bytes = 100, bbox = BOX): ChunkPayload => ({
   kind: 'surfaces', file, bbox, buffer: new ArrayBuffer(0), vertexCount: 0, triangleCount: 0, originX: 0, originY: 0,
   vertexByteOffset: 0, vertexByteLength: bytes, indexByteOffset: 0, indexSize: 2,
-  blocks: { cellBox: new Float32Array(0), cellBands: Uint32Array.of(0), bandEnd: new Float32Array(0), bandBlocks: Uint32Array.of(0), zLow: new Float32Array(0), first: Uint32Array.of(0) }, verified: true,
+  blocks: { cellBox: new Float32Array(0), cellBlocks: Uint32Array.of(0), zLow: new Float32Array(0), first: Uint32Array.of(0) }, verified: true,
 });
 
 const answer = (seq: number, visible: string[], margin: string[] = [], o: Partial<NeededChunks> = {}): NeededChunks => ({ seq, visible, margin, ahead: [], indexComplete: true, queryMs: 1, ...o });

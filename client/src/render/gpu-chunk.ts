@@ -1,8 +1,7 @@
 // A chunk on the GPU: its vertex section as one buffer (attributes at offsets into it, exactly
 // as the file lays them out) and its triangle indices, bound in a vertex array object. It draws
 // only the triangles the view can show: in a ground cell that meets the view, not above the
-// slice everywhere, not of a face that ended below it (draw-ranges.ts), in one call where
-// WEBGL_multi_draw is there.
+// slice everywhere (draw-ranges.ts), in one call where WEBGL_multi_draw is there.
 import { VERTEX_COLUMNS, vertexColumnOffset } from '../../../format/chunk-layout.js';
 import type { Box3 } from '../../../format/cube-index.js';
 import { drawRanges, rangesFor, type DrawBlocks, type DrawRanges } from '../source/draw-ranges.js';
@@ -64,16 +63,16 @@ export class GpuChunk {
   }
 
   /**
-   * Draws the triangles that a slicing surface from zMin up to zMax over the ground box `view`
-   * (x0, y0, x1, y1, absolute) can show; returns how many.
+   * Draws the triangles that a slicing surface up to zMax over the ground box `view` (x0, y0,
+   * x1, y1, absolute) can show; returns how many.
    */
-  draw(gl: WebGL2RenderingContext, zMin: number, zMax: number, view: ArrayLike<number>, multiDraw: WEBGL_multi_draw | null): number {
+  draw(gl: WebGL2RenderingContext, zMax: number, view: ArrayLike<number>, multiDraw: WEBGL_multi_draw | null): number {
     const rect = this.rect;
     rect[0] = view[0]! - this.originX;
     rect[1] = view[1]! - this.originY;
     rect[2] = view[2]! - this.originX;
     rect[3] = view[3]! - this.originY;
-    const r = rangesFor(this.blocks, zMin, zMax, rect, this.ranges);
+    const r = rangesFor(this.blocks, zMax, rect, this.ranges);
     if (r.n === 0) return 0;
     gl.bindVertexArray(this.vao);
     const indexBytes = this.indexType === gl.UNSIGNED_SHORT ? 2 : 4;

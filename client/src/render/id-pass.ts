@@ -15,8 +15,6 @@ import type { Targets } from './targets.js';
 export interface DrawLimits {
   /** The slicing surface's highest z over the view: triangles wholly above it are not drawn. */
   sliceTop: number;
-  /** Its lowest z: triangles whose upper face has ended at or below it are covered, not drawn. */
-  sliceBottom: number;
   /** Also the ground cells beside the view (to compare with drawing whole chunks). */
   beside: boolean;
 }
@@ -86,7 +84,7 @@ export class IdPass {
     let triangles = 0;
     for (const c of chunks) {
       gl.uniform2f(uOffset, c.originX - rx, c.originY - ry);
-      triangles += c.draw(gl, limits.sliceBottom, limits.sliceTop, ground, this.multiDraw);
+      triangles += c.draw(gl, limits.sliceTop, ground, this.multiDraw);
     }
     gl.bindVertexArray(null);
     gl.disable(gl.CULL_FACE);

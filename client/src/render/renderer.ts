@@ -287,7 +287,7 @@ export class Renderer {
    * chunk beside the view (all of every chunk with wholeChunks).
    */
   private drawLimits(f: FrameParams): DrawLimits {
-    return this.wholeChunks ? { sliceTop: Infinity, sliceBottom: -Infinity, beside: true } : { sliceTop: f.sliceRange[1], sliceBottom: f.sliceRange[0], beside: false };
+    return this.wholeChunks ? { sliceTop: Infinity, beside: true } : { sliceTop: f.sliceRange[1], beside: false };
   }
 
   /** The ID targets as drawn without jitter (drawn again if the last frame was jittered); null when lost. */

@@ -42,20 +42,11 @@ export async function fetchChunkFile<T>(leaf: { file: string; sha256: string }, 
   return { data, verified: hash !== null };
 }
 
-/** Where each of the faces given ends, as a step (Infinity: never, or unknown). */
-export type FaceEnds = (faces: Uint32Array) => Promise<((face: number) => number) | undefined>;
-
-/**
- * A surface chunk, ready for the GPU: its upward triangles ordered for drawing (draw-ranges.ts),
- * by the end of each one's upper face where `faceEnds` is given.
- */
-export async function fetchChunk(leaf: ChunkLeaf, url: string, retry: RetryOptions, signal: AbortSignal, faceEnds?: FaceEnds): Promise<ChunkPayload> {
+export async function fetchChunk(leaf: ChunkLeaf, url: string, retry: RetryOptions, signal: AbortSignal): Promise<ChunkPayload> {
   const { data: chunk, verified } = await fetchChunkFile(leaf, url, retry, signal, decodeChunk);
   // After the hash check: this rewrites the index section in place.
   const triangleCount = keepUpwardTriangles(chunk.positions, chunk.indices);
-  const { upper, indices } = chunk;
-  const endOf = await faceEnds?.(upper);
-  const blocks = orderForDrawing(chunk.positions, indices, triangleCount, endOf ? (t) => endOf(upper[indices[3 * t]!]!) : undefined);
+  const blocks = orderForDrawing(chunk.positions, chunk.indices, triangleCount);
   return {
     kind: 'surfaces',
     file: leaf.file,

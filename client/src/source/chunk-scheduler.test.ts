@@ -12,7 +12,7 @@ import { installFakeFetch, status, type Answer, type FakeFetch } from '../../../
 import { handMadeCube, serveFiles, squareChunk, twoLevelCube, type ChunkSpec } from '../../../testing/hand-made-cube.js';
 import { ChunkScheduler } from './chunk-scheduler.js';
 import { IndexTree } from './index-tree.js';
-import type { AheadView, ChunkPayload, ChunkStatus, FromWorker, NeededChunks, SourceErrorInfo, SourceOptions, ViewRequest } from './worker-protocol.js';
+import type { AheadView, ChunkStatus, FromWorker, NeededChunks, SourceErrorInfo, SourceOptions, ViewRequest } from './worker-protocol.js';
 
 const BASE = 'https://maps.test/cube/';
 
@@ -41,8 +41,6 @@ interface Harness {
   statuses(file: string): ChunkStatus[];
   /** Chunks posted to the map, in order. */
   received(): string[];
-  /** The last chunk posted of this file. */
-  payload(file: string): ChunkPayload | undefined;
   errors(): SourceErrorInfo[];
   needed(): NeededChunks[];
   /** Answers the oldest open request with the file it asks for. */
@@ -56,7 +54,7 @@ interface Harness {
  * when not given); index.json is always served at once. With `uploads`, every chunk posted goes
  * on the GPU at the next turn of the event loop (else only by uploadAll).
  */
-async function harness(t: TestContext, files: Map<string, Uint8Array>, options: Partial<SourceOptions>, answer?: (url: string, n: number) => Answer, uploads = false, faceEnds = (_faces: Uint32Array): Promise<(face: number) => number> => Promise.resolve(() => Infinity)): Promise<Harness> {
+async function harness(t: TestContext, files: Map<string, Uint8Array>, options: Partial<SourceOptions>, answer?: (url: string, n: number) => Answer, uploads = false): Promise<Harness> {
   const serve = serveFiles(BASE, files);
   const fetch = installFakeFetch(t, (url, n) => (url.endsWith('index.json') ? serve(url) : (answer ?? serve)(url, n)));
   const opts: SourceOptions = { concurrency: 4, retries: 0, backoffMs: 0, maxBackoffMs: 0, marginRestMs: 0, ...options };
@@ -65,7 +63,7 @@ async function harness(t: TestContext, files: Map<string, Uint8Array>, options: 
   const scheduler = new ChunkScheduler(tree, opts, (msg) => {
     posted.push(msg);
     if (uploads && msg.type === 'chunk') setTimeout(() => scheduler.uploaded(msg.chunk.file), 0);
-  }, faceEnds);
+  });
   const name = (url: string): string => url.slice(BASE.length);
   const fetched = (): string[] => fetch.urls().map(name).filter((f) => f !== 'index.json');
   return {
@@ -75,7 +73,6 @@ async function harness(t: TestContext, files: Map<string, Uint8Array>, options: 
     times: (file) => fetched().filter((f) => f === file).length,
     statuses: (file) => posted.flatMap((m) => (m.type === 'status' && m.file === file ? [m.status] : [])),
     received: () => posted.flatMap((m) => (m.type === 'chunk' ? [m.chunk.file] : [])),
-    payload: (file) => posted.flatMap((m) => (m.type === 'chunk' && m.chunk.kind === 'surfaces' && m.chunk.file === file ? [m.chunk] : [])).at(-1),
     errors: () => posted.flatMap((m) => (m.type === 'error' ? [m.error] : [])),
     needed: () => posted.flatMap((m) => (m.type === 'needed' ? [m] : [])),
     answerOldest: () => {
@@ -267,23 +264,6 @@ describe('the chunk scheduler', () => {
     assert.deepEqual(h.received(), ['c-0.bin']);
     assert.deepEqual(h.statuses('c-0.bin'), ['requested', 'not-requested', 'requested', 'received']);
     assert.equal(h.times('c-0.bin'), 2);
-  });
-
-  test('a chunk is ordered by when its faces end; face ends that fail to load leave a chunk whole and are asked for again', async (t) => {
-    // Every triangle of a hand-made chunk has upper face 5: ended at step 7, its one band ends there.
-    let asked = 0;
-    const faces: number[][] = [];
-    const ends = (f: Uint32Array): Promise<(face: number) => number> => {
-      faces.push([...new Set(f)]);
-      return ++asked === 1 ? Promise.reject(new Error('face page: 503')) : Promise.resolve((face) => (face === 5 ? 7 : 0));
-    };
-    const h = await harness(t, handMadeCube(row(2)).files, { concurrency: 1 }, undefined, true, ends);
-    h.scheduler.setView(view(1, 0, 20, { centerX: 5 }));
-    await eventually(() => h.received().length === 2, 'both chunks');
-    assert.deepEqual([...h.payload('c-0.bin')!.blocks.bandEnd], [Infinity], 'the first chunk, without ends: drawn at every z');
-    assert.deepEqual([...h.payload('c-1.bin')!.blocks.bandEnd], [7], 'the second chunk, with them');
-    assert.deepEqual(faces, [[5], [5]], 'each chunk asks for its own faces');
-    assert.deepEqual(h.errors(), []);
   });
 
   test('chunks under a sub-index not loaded yet are fetched once it arrives', async (t) => {

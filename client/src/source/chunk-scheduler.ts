@@ -15,7 +15,7 @@
 //   (floorShown): the first map at the base scale takes a fifth of the bytes.
 import type { ChunkLeaf, LineChunkLeaf } from '../../../format/cube-index.js';
 import { boxMeets, chunkPriority, queryLineChunks, type QueryBox, type QueryResult } from '../../../format/index-query.js';
-import { ChunkCorrupt, fetchChunk, type FaceEnds } from './chunk-fetch.js';
+import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
 import { fetchLineChunk } from './line-chunk-fetch.js';
 import { FetchFailure } from './fetch-retry.js';
 import { indexError } from './index-error.js';
@@ -57,20 +57,7 @@ export class ChunkScheduler {
     private readonly tree: IndexTree,
     private readonly opts: SourceOptions,
     private readonly post: Post,
-    /** Where faces end (FeaturePages.faceEnds), asked for each chunk above the floor. */
-    private readonly faceEnds: (faces: Uint32Array) => Promise<(face: number) => number>,
   ) {}
-
-  /**
-   * Where the faces of a chunk end, to order it by; not asked for a floor chunk (no face ends
-   * below the floor's top). Where the face pages fail to load, the chunk comes without ends
-   * (drawn whole, as if every face lived on); the next chunk asks again.
-   */
-  private endsFor(leaf: ChunkLeaf): FaceEnds | undefined {
-    const top = this.tree.index.floor?.top;
-    if (top !== undefined && leaf.bbox[5] <= top) return undefined;
-    return (faces) => this.faceEnds(faces).catch(() => undefined);
-  }
 
   setView(view: ViewRequest): void {
     // The same view again (its sub-index files came in) has not moved.
@@ -236,14 +223,14 @@ export class ChunkScheduler {
     this.setStatus(e, 'requested');
     const leaf = e.leaf;
     const url = this.tree.url(leaf.file);
-    (isLineLeaf(leaf) ? fetchLineChunk(leaf, url, this.tree.index.meta, this.opts, controller.signal) : fetchChunk(leaf, url, this.opts, controller.signal, this.endsFor(leaf)))
+    (isLineLeaf(leaf) ? fetchLineChunk(leaf, url, this.tree.index.meta, this.opts, controller.signal) : fetchChunk(leaf, url, this.opts, controller.signal))
       .then(
         (chunk) => {
           if (e.controller !== controller) return; // aborted meanwhile
           e.controller = null;
           this.failed.delete(leaf.file);
           this.setStatus(e, 'received');
-          const transfer = chunk.kind === 'lines' ? [chunk.segments.buffer, chunk.segmentLine.buffer, chunk.segmentRule.buffer, chunk.lineClass.buffer, chunk.lineFeature.buffer, chunk.lineRamp.buffer] : [chunk.buffer, chunk.blocks.cellBox.buffer, chunk.blocks.cellBands.buffer, chunk.blocks.bandEnd.buffer, chunk.blocks.bandBlocks.buffer, chunk.blocks.zLow.buffer, chunk.blocks.first.buffer];
+          const transfer = chunk.kind === 'lines' ? [chunk.segments.buffer, chunk.segmentLine.buffer, chunk.segmentRule.buffer, chunk.lineClass.buffer, chunk.lineFeature.buffer, chunk.lineRamp.buffer] : [chunk.buffer, chunk.blocks.cellBox.buffer, chunk.blocks.cellBlocks.buffer, chunk.blocks.zLow.buffer, chunk.blocks.first.buffer];
           this.post({ type: 'chunk', chunk }, transfer as ArrayBuffer[]);
         },
         (err: unknown) => {

@@ -35,9 +35,8 @@ scope.addEventListener('message', (ev) => {
         return IndexTree.fromBody(b, msg.url, options);
       }).then(
         (tree) => {
-          const p = new FeaturePages(tree.index.meta.faces, tree.index.meta.attributes, (f) => tree.url(f), options);
-          pages = p;
-          scheduler = new ChunkScheduler(tree, options, post, (faces) => p.faceEnds(faces, tree.index.meta.steps));
+          scheduler = new ChunkScheduler(tree, options, post);
+          pages = new FeaturePages(tree.index.meta.faces, tree.index.meta.attributes, (f) => tree.url(f), options);
           post({ type: 'meta', meta: tree.index.meta });
           if (pendingView) scheduler.setView(pendingView);
           pendingView = null;

@@ -47,28 +47,6 @@ export class FeaturePages {
     return featureAttributes(await this.attrPage(ap.file), feature);
   }
 
-  /**
-   * The end of each of `faces` as a step: its stepHigh, at or just above the z where it ends (so
-   * a triangle of it is left out only once newer surfaces cover it), Infinity for a face alive
-   * to the top of a cube of `steps` steps or not in `faces`. Reads the pages that hold them,
-   * each fetched once: a chunk's faces lie in a few of the cube's pages (2 to 4 of nlcd_zion's 12).
-   */
-  async faceEnds(faces: ArrayLike<number>, steps: number): Promise<(face: number) => number> {
-    const files = new Set<string>();
-    for (let i = 0; i < faces.length; i++) {
-      const p = pageOf(this.faces, faces[i]!);
-      if (p) files.add(p.file);
-    }
-    const pages = await Promise.all([...files].map((f) => this.facePage(f)));
-    return (face) => {
-      for (const page of pages) {
-        const i = face - page.first;
-        if (i >= 0 && i < page.count) return page.stepHigh[i]! > steps ? Infinity : page.stepHigh[i]!;
-      }
-      return Infinity;
-    };
-  }
-
   private facePage(file: string): Promise<FacePage> {
     let p = this.facePages.get(file);
     if (!p) {
