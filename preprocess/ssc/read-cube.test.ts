@@ -1,5 +1,5 @@
 // CubeReader.faceEnds: each face's stepHigh from every face page of a cube directory, Infinity
-// for a face alive to the top; a page that cannot be read is an error naming the file.
+// for a face alive to the top; a page that cannot be read or decoded is an error naming the file.
 import assert from 'node:assert/strict';
 import { mkdtemp, rm, unlink, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
@@ -30,6 +30,8 @@ test('face ends: each face\'s stepHigh from every page, Infinity for a face aliv
   await writeFile(path.join(dir, 'f-1.bin'), encodeFacePage(faces, 3, 2));
   const cube = await CubeReader.open(dir);
   assert.deepEqual([...(await cube.faceEnds())], [Infinity, 3, 8, Infinity, 100]);
+  await writeFile(path.join(dir, 'f-1.bin'), new Uint8Array(8));
+  await assert.rejects(cube.faceEnds(), (e: unknown) => e instanceof InputError && e.file === path.join(dir, 'f-1.bin') && /is not a valid face page/.test(e.message));
   await unlink(path.join(dir, 'f-1.bin'));
   await assert.rejects(cube.faceEnds(), (e: unknown) => e instanceof InputError && e.file === path.join(dir, 'f-1.bin') && /cannot read face page/.test(e.message));
 });

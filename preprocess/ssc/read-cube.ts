@@ -82,14 +82,7 @@ export class CubeReader {
     const meta = this.index.meta;
     const ends = new Float64Array(meta.faces.count).fill(Infinity);
     for (const p of meta.faces.pages) {
-      const file = path.join(this.dir, p.file);
-      let bytes: Buffer;
-      try {
-        bytes = await fs.readFile(file);
-      } catch (err) {
-        throw new InputError(`cannot read face page: ${(err as Error).message}`, { file });
-      }
-      const page = decodeFacePage(Uint8Array.from(bytes).buffer);
+      const page = await this.decodedFile(p.file, 'face page', (bytes) => decodeFacePage(Uint8Array.from(bytes).buffer));
       for (let i = 0; i < page.count && page.first + i < ends.length; i++) {
         if (page.stepHigh[i]! <= meta.steps) ends[page.first + i] = page.stepHigh[i]!;
       }
@@ -107,19 +100,26 @@ export class CubeReader {
   }
 
   /** A file of the index read, checked against the index's size and SHA-256, and decoded. */
-  private async checkedFile<T>(leaf: { file: string; bytes: number; sha256: string }, kind: string, decode: (bytes: Uint8Array, name: string) => T | Promise<T>): Promise<T> {
-    const file = path.join(this.dir, leaf.file);
+  private checkedFile<T>(leaf: { file: string; bytes: number; sha256: string }, kind: string, decode: (bytes: Uint8Array, name: string) => T | Promise<T>): Promise<T> {
+    return this.decodedFile(leaf.file, kind, decode, (bytes, file) => {
+      if (bytes.length !== leaf.bytes) throw new InputError(`is ${bytes.length} bytes; the index says ${leaf.bytes} (truncated or replaced)`, { file });
+      const sha = createHash('sha256').update(bytes).digest('hex');
+      if (sha !== leaf.sha256) throw new InputError(`is corrupt: its SHA-256 does not match the index`, { file });
+    });
+  }
+
+  /** A file of the cube read, checked by `check` where given, and decoded; every failure names the file. */
+  private async decodedFile<T>(name: string, kind: string, decode: (bytes: Uint8Array, name: string) => T | Promise<T>, check?: (bytes: Buffer, file: string) => void): Promise<T> {
+    const file = path.join(this.dir, name);
     let bytes: Buffer;
     try {
       bytes = await fs.readFile(file);
     } catch (err) {
       throw new InputError(`cannot read ${kind}: ${(err as Error).message}`, { file });
     }
-    if (bytes.length !== leaf.bytes) throw new InputError(`is ${bytes.length} bytes; the index says ${leaf.bytes} (truncated or replaced)`, { file });
-    const sha = createHash('sha256').update(bytes).digest('hex');
-    if (sha !== leaf.sha256) throw new InputError(`is corrupt: its SHA-256 does not match the index`, { file });
+    check?.(bytes, file);
     try {
-      return await decode(new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength), leaf.file);
+      return await decode(new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.byteLength), name);
     } catch (err) {
       throw new InputError(`is not a valid ${kind}: ${(err as Error).message}`, { file });
     }
