@@ -5,6 +5,7 @@ import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import type { Page } from 'playwright-core';
 import { openMap } from './helpers/browser.js';
+import { lngLatToRd, rdToLngLat } from './helpers/geo.js';
 import { LIB_PAGE_HEAD, useLibSite } from './helpers/lib-site.js';
 import { hexColour, pixel, screenshot } from './helpers/map-page.js';
 import { camera, idle, settle, type VarioWindow } from './helpers/vario-page.js';
@@ -26,6 +27,34 @@ const PAGES: Record<string, string> = {
     const map = new VarioMap({ container: 'map', source: 'cube/index.json' });
     map.addControl(new ZoomControl());
     map.addControl(new ScaleBar(), 'bottom-left');
+    window.map = map;
+  </script>
+</body>
+</html>
+`,
+  // The ES build opening where the query says (?center=lng,lat&scale=S; none: the whole cube),
+  // noting when its first 'complete', 'meta' and 'load' events come and what it said of
+// longitude/latitude then.
+  'lazy-proj4.html': `${LIB_PAGE_HEAD}
+  <script type="module">
+    import { VarioMap } from './lib/vario-map.js';
+    const q = new URLSearchParams(location.search);
+    const center = q.get('center')?.split(',').map(Number);
+    const scale = q.get('scale');
+    const map = new VarioMap({ container: 'map', source: 'cube/', supersampling: 1, ...(center ? { center, scaleDenominator: Number(scale) } : {}) });
+    window.events = [];
+    const note = (type) => {
+      let lngLat;
+      try {
+        lngLat = map.getCenter().toArray();
+      } catch (err) {
+        lngLat = String(err);
+      }
+      window.events.push({ type, at: Date.now(), metadata: map.getMetadata() !== null, lngLat });
+    };
+    map.once('complete').then(() => note('complete'));
+    map.on('load', () => note('load'));
+    map.on('meta', () => note('meta'));
     window.map = map;
   </script>
 </body>
@@ -93,6 +122,67 @@ describe('the library builds in plain pages (bgt_otterlo_400m)', () => {
     assert.match(urls[0]!, /\/lib\/assets\/chunk-worker-[\w-]+\.js$/);
     assert.ok((await mapShare(page)) > 0.5, 'the map is drawn');
     await wheelZooms(page);
+  });
+
+  describe('proj4 is fetched once the index is in, not with the library', () => {
+    type Noted = { type: 'complete' | 'meta' | 'load'; at: number; metadata: boolean; lngLat: [number, number] | string };
+
+    /**
+     * The page with proj4's file held back until `release(page)` resolves, open until 'meta' and
+     * idle; what it noted, and the server's log of proj4 and the chunks.
+     */
+    async function openSlowProj4(params: Record<string, string>, release: (page: Page) => Promise<unknown>): Promise<{ page: Page; noted: Noted[]; proj4: { start: number; end: number }; chunks: { start: number }[] }> {
+      const site = bed.site;
+      const from = site.server.log.length;
+      bed.page = await openMap(site.browser, site.server.url, params, {
+        page: 'lazy-proj4.html',
+        onPage: (p) => void p.route(/\/lib\/assets\/proj4-[\w-]+\.js$/, async (route) => {
+          await release(p);
+          await route.continue();
+        }),
+      });
+      const page = bed.page.page;
+      await page.waitForFunction(() => (globalThis as unknown as { events: Noted[] }).events.some((e) => e.type === 'load'), null, { timeout: 60_000 });
+      await idle(page);
+      const noted = await page.evaluate(() => (globalThis as unknown as { events: Noted[] }).events);
+      const log = site.server.log.slice(from);
+      const proj4 = log.filter((e) => /^\/lib\/assets\/proj4-[\w-]+\.js$/.test(e.path));
+      assert.equal(proj4.length, 1, `proj4 fetched once: ${log.map((e) => e.path).join(' ')}`);
+      const index = log.find((e) => e.path === '/cube/index.json')!;
+      assert.ok(proj4[0]!.start >= index.end, 'proj4 is asked for after the index has arrived, not with the library');
+      return { page, noted, proj4: proj4[0]!, chunks: log.filter((e) => /^\/cube\/c-/.test(e.path)) };
+    }
+
+    test("a page in the cube's own coordinates draws its first map without waiting for proj4; longitude/latitude work from its meta event on", async () => {
+      // proj4 comes only after the first complete map: that map cannot have waited for it.
+      const { noted, proj4, chunks } = await openSlowProj4({}, (p) => p.waitForFunction(() => (globalThis as unknown as { events: Noted[] }).events.some((e) => e.type === 'complete'), null, { timeout: 60_000 }));
+      assert.ok(chunks.length > 0 && chunks[0]!.start < proj4.start, 'chunks were asked for while proj4 was held back');
+      assert.deepEqual(noted.map((e) => e.type), ['complete', 'meta', 'load'], "the first map came before proj4; 'load' waited for 'meta'");
+      assert.match(String(noted[0]!.lngLat), /CrsError: .*wait for the 'meta' event/, 'before meta, longitude/latitude say why they wait');
+      assert.equal(noted[0]!.metadata, false, 'getMetadata() is null until meta');
+      for (const at of noted.slice(1)) {
+        assert.equal(at.metadata, true);
+        if (typeof at.lngLat === 'string') assert.fail(`getCenter() at ${at.type}: ${at.lngLat}`);
+      }
+      const [lng, lat] = noted[2]!.lngLat as [number, number];
+      const e = bed.contents.meta.extent;
+      const [x, y] = lngLatToRd([lng, lat]);
+      assert.ok(Math.hypot(x - (e[0] + e[2]) / 2, y - (e[1] + e[3]) / 2) < 0.01, `the whole cube's centre, ${lng}, ${lat}, is within 1 cm of its extent's`);
+    });
+
+    test('a page that opens at a longitude/latitude asks for no chunk before proj4 has arrived, then opens there', async () => {
+      const e = bed.contents.meta.extent;
+      const centre = rdToLngLat([e[0] + (e[2] - e[0]) * 0.3, e[1] + (e[3] - e[1]) * 0.6]);
+      const { page, noted, proj4, chunks } = await openSlowProj4({ center: centre.join(','), scale: '2000' }, () => new Promise((r) => setTimeout(r, 1000)));
+      assert.ok(chunks.length > 0, 'chunks were fetched');
+      assert.ok(chunks.every((c) => c.start >= proj4.end), 'no chunk of the fitted whole cube was fetched in vain while the CRS loaded');
+      assert.deepEqual(noted.map((n) => n.type).sort(), ['complete', 'load', 'meta']);
+      assert.equal(noted[0]!.type, 'meta', 'nothing was drawn before the CRS was known');
+      const got = await page.evaluate(() => (globalThis as unknown as VarioWindow).map.getCenter()).then((c): [number, number] => [c.lng, c.lat]);
+      const [gx, gy] = lngLatToRd(got), [cx, cy] = lngLatToRd(centre);
+      assert.ok(Math.hypot(gx - cx, gy - cy) < 0.01, `opened at ${got.join(', ')}, within 1 cm of ${centre.join(', ')}`);
+      assert.equal(await page.evaluate(() => (globalThis as unknown as VarioWindow).map.getScaleDenominator()), 2000);
+    });
   });
 
   test('remove() ends the worker, gives the GPU context back and leaves no listener', async () => {

@@ -13,6 +13,7 @@ import { after, afterEach, before, describe, test } from 'node:test';
 import type { Browser } from 'playwright-core';
 import { launchChromium, openMap, type MapPage } from './helpers/browser.js';
 import { otterlo400, repoRoot } from './helpers/cube.js';
+import { rdToLngLat } from './helpers/geo.js';
 import { checkAndClose } from './helpers/test-bed.js';
 import { startTestServer, type TestServer } from './helpers/test-server.js';
 import { idle, type VarioWindow } from './helpers/vario-page.js';
@@ -27,9 +28,10 @@ import 'vario-scale-map/vario-map.css';
 const options: VarioMapOptions = { container: 'map', source: 'cube/' };
 const map = new VarioMap(options);
 map.addControl(new ZoomControl());
-const page = window as unknown as { map: VarioMap; clicked?: Feature | null };
+const page = window as unknown as { map: VarioMap; clicked?: Feature | null; clickedAt?: [number, number] | null };
 map.on('click', (e) => {
   page.clicked = e.features.find((f) => f.kind === 'face') ?? null;
+  page.clickedAt = e.lngLat ? e.lngLat.toArray() : null;
 });
 page.map = map;
 `;
@@ -165,5 +167,10 @@ describe('the packed package in a fresh project (bgt_otterlo_400m)', () => {
     assert.ok(clicked && clicked.face > 0, `a face: ${JSON.stringify(clicked)}`);
     const classes = (JSON.parse(await readFile(style, 'utf8')) as { classes: Record<string, unknown> }).classes;
     assert.ok(clicked.classKey in classes, `a class of the style: ${clicked.classKey}`);
+    // Longitude/latitude come from proj4, which the library imports lazily: the app's bundle
+    // carries it as a file of its own, and the page loads it.
+    const at = await page.evaluate(() => (globalThis as unknown as { clickedAt: [number, number] | null }).clickedAt);
+    const expected = rdToLngLat(await page.evaluate((p) => (globalThis as unknown as VarioWindow).map.unprojectProjected(p), [320, 240] as [number, number]));
+    assert.ok(at && Math.abs(at[0] - expected[0]) < 1e-7 && Math.abs(at[1] - expected[1]) < 1e-7, `the click's lngLat ${JSON.stringify(at)} is proj4's ${expected.join(', ')}`);
   });
 });

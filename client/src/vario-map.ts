@@ -37,17 +37,25 @@ export type { Bbox, FaceFeature, Feature, LineFeature, QueryOptions, FeatureRef,
 export type { LngLatLike, LngLatBoundsLike };
 export type { AnimationOptions, CameraOptions, FitBoundsOptions, FlyToOptions, MapMoveEvent, VarioMapEvents, VarioMapOptions, VarioMapSettings } from './map-options.js';
 
-/** Passed on from the engine as they are ('meta' after the map's own state follows it). */
-const DATA_EVENTS: (keyof DataEvents)[] = ['load', 'complete', 'idle', 'error', 'contextlost', 'contextrestored', 'dataloading', 'data'];
+/** Passed on from the engine as they are ('meta' after the map's own state follows it, 'load' not before 'meta'). */
+const DATA_EVENTS: (keyof DataEvents)[] = ['complete', 'idle', 'error', 'contextlost', 'contextrestored', 'dataloading', 'data'];
 
 /** How many views along a flight's path are prefetched. */
 const FLIGHT_SAMPLES = 16;
 
-/** A view asked for before the cube (and so its CRS) is known: shown when it is. */
-type PendingView = { camera: CameraOptions } | { fit: ProjectedBox; options: FitBoundsOptions } | { maxBounds: ProjectedBox };
+/**
+ * A view asked for before the cube (and so its CRS) is known: shown when it is. `lngLat`: it
+ * needs the CRS (the cube's index alone does not do).
+ */
+type PendingView = ({ camera: CameraOptions } | { fit: ProjectedBox; options: FitBoundsOptions } | { maxBounds: ProjectedBox }) & { lngLat: boolean };
 
 /** A box in the cube's CRS, computed when asked (a longitude/latitude box needs the CRS). */
 type ProjectedBox = () => Bbox;
+
+/** A camera asked for before the cube is known; a centre in longitude/latitude or a zoom (which depends on latitude) needs the CRS. */
+function pendingCamera(o: CameraOptions): PendingView {
+  return { camera: o, lngLat: o.center !== undefined || o.zoom !== undefined };
+}
 
 export class VarioMap extends Evented<VarioMapEvents> {
   readonly handlers: Handlers | null;
@@ -63,8 +71,12 @@ export class VarioMap extends Evented<VarioMapEvents> {
   private readonly motionQuery: MediaQueryList | null;
   private hash: UrlHash | null = null;
   private readonly scaleLimits: ScaleLimits;
-  /** Between longitude/latitude and the cube's CRS; the reason there is none; null before the cube is known. */
+  /** Between longitude/latitude and the cube's CRS; the reason there is none; null before it is known (proj4 loads after the index). */
   private crs: CrsTransform | CrsError | null = null;
+  /** The 'meta' event has fired: the cube and its CRS are known. */
+  private metaFired = false;
+  /** The first complete map, when it came before 'meta': its 'load' event waits for it. */
+  private loadAfterMeta: DataEvents['load'] | null = null;
   private pending: PendingView[] = [];
   private removed = false;
 
@@ -90,17 +102,17 @@ export class VarioMap extends Evented<VarioMapEvents> {
     this.view.place({}, options.sliceZ ?? null);
     // Longitude/latitude and zoom need the cube's CRS: the first view is set when it is known.
     const { bounds, boundsProjected } = options;
-    if (boundsProjected) this.pending.push({ fit: () => boundsProjected, options: {} });
-    else if (bounds) this.pending.push({ fit: () => this.geo().projectedBox(LngLatBounds.convert(bounds)), options: {} });
+    if (boundsProjected) this.pending.push({ fit: () => boundsProjected, options: {}, lngLat: false });
+    else if (bounds) this.pending.push({ fit: () => this.geo().projectedBox(LngLatBounds.convert(bounds)), options: {}, lngLat: true });
     const { center, centerProjected, zoom, scaleDenominator } = options;
-    this.pending.push({ camera: { center, centerProjected, zoom, scaleDenominator } });
+    this.pending.push(pendingCamera({ center, centerProjected, zoom, scaleDenominator }));
     this.scaleLimits = new ScaleLimits(this.view, options.minScale, options.maxScale);
     const { maxBounds, maxBoundsProjected } = options;
     if (maxBoundsProjected) this.view.setLimits({ maxBounds: maxBoundsProjected });
     // Before the views, so that they keep to it.
-    else if (maxBounds) this.pending.unshift({ maxBounds: () => this.geo().projectedBox(LngLatBounds.convert(maxBounds)) });
+    else if (maxBounds) this.pending.unshift({ maxBounds: () => this.geo().projectedBox(LngLatBounds.convert(maxBounds)), lngLat: true });
     if (options.surface) this.view.setSurface(typeof options.surface === 'string' ? parseSurface(options.surface) : options.surface);
-    this.engine = new MapEngine(this.dom.canvasContainer, this.view, options);
+    this.engine = new MapEngine(this.dom.canvasContainer, this.view, { ...options, beforeMeta: (meta) => this.loadCrs(meta) });
     bindEngine(this, this.engine);
     this.stepZoom = new StepZoom(this.view);
     this.forwardEngineEvents();
@@ -185,8 +197,8 @@ export class VarioMap extends Evented<VarioMapEvents> {
 
   /** Goes there at once (asked before the cube is known: when it is, without movement events). */
   jumpTo(o: CameraOptions): this {
-    if (this.view.meta) this.view.jump(this.target(o));
-    else this.pending.push({ camera: o });
+    if (this.metaFired) this.view.jump(this.target(o));
+    else this.pending.push(pendingCamera(o));
     return this;
   }
 
@@ -233,7 +245,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
    * (0: at once). Resolves true if it completed.
    */
   fitBounds(bounds: LngLatBoundsLike, o: FitBoundsOptions = {}): Promise<boolean> {
-    return this.fitBox(() => this.geo().projectedBox(LngLatBounds.convert(bounds)), o);
+    return this.fitBox(() => this.geo().projectedBox(LngLatBounds.convert(bounds)), o, true);
   }
 
   /**
@@ -241,7 +253,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
    * `ssc slice --bbox` shows on a canvas of this size.
    */
   fitBoundsProjected(bbox: Bbox, o: FitBoundsOptions = {}): Promise<boolean> {
-    return this.fitBox(() => bbox, o);
+    return this.fitBox(() => bbox, o, false);
   }
 
   /** One zoom step (the zoom step factor) in or out about the centre, as the + and - keys. */
@@ -270,8 +282,8 @@ export class VarioMap extends Evented<VarioMapEvents> {
   setMaxBounds(bounds: LngLatBoundsLike | null): this {
     if (bounds === null) return this.setMaxBoundsProjected(null);
     const box = (): Bbox => this.geo().projectedBox(LngLatBounds.convert(bounds));
-    if (this.view.meta) return this.setMaxBoundsProjected(box());
-    this.pending.push({ maxBounds: box });
+    if (this.metaFired) return this.setMaxBoundsProjected(box());
+    this.pending.push({ maxBounds: box, lngLat: true });
     return this;
   }
 
@@ -394,9 +406,9 @@ export class VarioMap extends Evented<VarioMapEvents> {
     return this.levels.slice();
   }
 
-  /** The dataset's metadata (null until it has loaded). */
+  /** The dataset's metadata (null until the 'meta' event: the cube and its CRS known). */
   getMetadata(): CubeMeta | null {
-    return this.view.meta;
+    return this.metaFired ? this.view.meta : null;
   }
 
   /** The faces under a CSS px point of the map (`{ outline: true }`: with the face's outline on screen). */
@@ -531,9 +543,9 @@ export class VarioMap extends Evented<VarioMapEvents> {
   // ---- internals ---------------------------------------------------------------------------------
 
   /** The fit of a box in the cube's CRS (before the cube is known: when it is). */
-  private fitBox(box: ProjectedBox, o: FitBoundsOptions): Promise<boolean> {
-    if (!this.view.meta) {
-      this.pending.push({ fit: box, options: o });
+  private fitBox(box: ProjectedBox, o: FitBoundsOptions, lngLat: boolean): Promise<boolean> {
+    if (!this.metaFired) {
+      this.pending.push({ fit: box, options: o, lngLat });
       return Promise.resolve(true);
     }
     const c = this.engine.fitCamera(box(), o.padding ?? 0);
@@ -543,8 +555,8 @@ export class VarioMap extends Evented<VarioMapEvents> {
 
   /** Before the cube is known there is nothing to animate over: the view is just set then (true). */
   private setBeforeMeta(o: CameraOptions): boolean {
-    if (this.view.meta) return false;
-    this.pending.push({ camera: o });
+    if (this.metaFired) return false;
+    this.pending.push(pendingCamera(o));
     return true;
   }
 
@@ -554,10 +566,14 @@ export class VarioMap extends Evented<VarioMapEvents> {
     throw new CrsError(this.crs?.message ?? `longitude/latitude need the cube's CRS, known once its index (${this.getSourceUrl()}) has loaded: wait for the 'meta' event`);
   }
 
-  /** The views asked for before the cube was known, in order, set without movement events. */
+  /**
+   * The views asked for before the cube was known, in order, set without movement events; while
+   * the CRS is still loading, up to the first that needs it.
+   */
   private placePending(): void {
-    const pending = this.pending;
-    this.pending = [];
+    const now = this.crs === null ? this.pending.findIndex((p) => p.lngLat) : -1;
+    const pending = now < 0 ? this.pending : this.pending.slice(0, now);
+    this.pending = now < 0 ? [] : this.pending.slice(now);
     for (const p of pending) {
       try {
         if ('camera' in p) this.view.place(this.target(p.camera));
@@ -594,6 +610,22 @@ export class VarioMap extends Evented<VarioMapEvents> {
     return this.stepZoom.by(n * Math.log2(s.zoomStep), [0, 0], { durationMs: s.zoomDurationMs, minFrames: s.minZoomFrames });
   }
 
+  /**
+   * The cube's index has arrived: its CRS is loaded (proj4 is imported then, not with the
+   * library). The view waits for it only when the views asked for so far need longitude/latitude
+   * (or the hash, which is in longitude/latitude, will place it); else the map starts at once.
+   */
+  private loadCrs(meta: CubeMeta): Promise<void> | null {
+    const settled = CrsTransform.load(meta, this.getSourceUrl())
+      .catch((err: unknown) => (err instanceof CrsError ? err : new CrsError(err instanceof Error ? err.message : String(err))))
+      .then((crs) => {
+        if (this.removed) return;
+        this.crs = crs;
+        this.showMeta();
+      });
+    return this.hash || this.pending.some((p) => p.lngLat) ? settled : null;
+  }
+
   /** The cube is known (the view has fitted itself): the scale limits and the comparison scales. */
   private onMeta(meta: CubeMeta): void {
     const [w, h] = this.dom.cssSize();
@@ -601,12 +633,6 @@ export class VarioMap extends Evented<VarioMapEvents> {
     this.scaleLimits.setDefaults(meta.baseScale / 4, extentScale * 4);
     this.levels = discreteLevels(meta.baseScale, extentScale, this.options.comparisonFactor ?? 2);
     if (this.settings.comparisonMode) this.view.setLevels(this.levels);
-    try {
-      this.crs = CrsTransform.of(meta, this.getSourceUrl());
-    } catch (err) {
-      if (!(err instanceof CrsError)) throw err;
-      this.crs = err;
-    }
     this.placePending();
     this.view.place({ scale: this.view.clamp(this.view.camera.scale) });
     if (this.options.style !== undefined) {
@@ -617,6 +643,15 @@ export class VarioMap extends Evented<VarioMapEvents> {
         this.fire('error', { kind: 'style', message: err instanceof Error ? err.message : String(err), url: this.getSourceUrl() });
       }
     }
+    this.showMeta();
+  }
+
+  /** Once both the cube and its CRS are known: the views that waited for the CRS, and the 'meta' event. */
+  private showMeta(): void {
+    const meta = this.view.meta;
+    if (this.metaFired || !meta || this.crs === null) return;
+    this.metaFired = true;
+    this.placePending();
     this.fire('meta', meta);
     const style = this.getStyle();
     if (style) this.fire('style', style);
@@ -624,9 +659,12 @@ export class VarioMap extends Evented<VarioMapEvents> {
       // The hash is in longitude/latitude, as MapLibre's.
       this.hash.remove();
       this.hash = null;
-      this.fire('error', { kind: 'index', message: `hash: ${this.crs?.message ?? ''}`, url: this.getSourceUrl() });
+      this.fire('error', { kind: 'index', message: `hash: ${this.crs.message}`, url: this.getSourceUrl() });
     }
     this.hash?.apply();
+    const load = this.loadAfterMeta;
+    this.loadAfterMeta = null;
+    if (load) this.fire('load', load);
   }
 
   private forwardEngineEvents(): void {
@@ -634,6 +672,12 @@ export class VarioMap extends Evented<VarioMapEvents> {
     // The map's own state follows the metadata before anyone else hears of it.
     e.on('meta', (m) => this.onMeta(m));
     for (const type of DATA_EVENTS) e.on(type, (ev) => this.fire(type, ev));
+    // The first map may be drawn before proj4 has come: a page's 'load' handler can use
+    // longitude/latitude, as in MapLibre.
+    e.on('load', (ev) => {
+      if (this.metaFired) this.fire('load', ev);
+      else this.loadAfterMeta = ev;
+    });
     e.on('render', (st) => this.fire('render', { frame: st.frame, z: this.view.z(), scaleDenominator: this.getScaleDenominator(), triangles: st.triangles }));
   }
 }

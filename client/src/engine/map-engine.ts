@@ -44,6 +44,12 @@ export interface EngineOptions {
   sourceOptions?: Partial<SourceOptions>;
   /** Overrides window.devicePixelRatio. */
   pixelRatio?: number;
+  /**
+   * Called when the cube's index has arrived, before the view is placed on the cube; the view
+   * waits for the promise it may return (VarioMap: the CRS, when the first view is given in
+   * longitude/latitude, so that no chunk of the fitted view is fetched in vain).
+   */
+  beforeMeta?: (meta: CubeMeta) => Promise<void> | null;
 }
 
 export interface EngineEvents {
@@ -81,6 +87,7 @@ export class MapEngine extends Evented<EngineEvents> {
   private readonly featureStates = new FeatureStates();
   /** The index could not be loaded: nothing will ever be drawn. */
   private failed = false;
+  private removed = false;
 
   constructor(
     container: HTMLElement,
@@ -120,13 +127,9 @@ export class MapEngine extends Evented<EngineEvents> {
       showWebGl2Missing(container);
     }
     this.source.on('meta', (meta) => {
-      const g = this.canvas.deviceSize();
-      // VarioMap then shows what its options ask for (they may need the cube's CRS).
-      view.setMeta(meta, () => view.fitCamera(meta.extent, g.width, g.height, this.canvas.deviceRatio()));
-      this.style = meta.style;
-      this.featureStates.faceCount = meta.faces.count;
-      this.renderer?.setMeta(meta);
-      this.fire('meta', meta);
+      const wait = options.beforeMeta?.(meta) ?? null;
+      if (!wait) this.takeMeta(meta);
+      else void wait.then(() => this.removed || this.takeMeta(meta));
     });
     this.source.on('needed', (n) => {
       this.residency?.answer(n);
@@ -152,6 +155,16 @@ export class MapEngine extends Evented<EngineEvents> {
       this.fire('idle', { complete: false });
     });
     this.canvas.measure();
+  }
+
+  /** The cube is known: the view fits it, and VarioMap then shows what its options ask for. */
+  private takeMeta(meta: CubeMeta): void {
+    const g = this.canvas.deviceSize();
+    this.view.setMeta(meta, () => this.view.fitCamera(meta.extent, g.width, g.height, this.canvas.deviceRatio()));
+    this.style = meta.style;
+    this.featureStates.faceCount = meta.faces.count;
+    this.renderer?.setMeta(meta);
+    this.fire('meta', meta);
   }
 
   // ---- the view on the canvas --------------------------------------------------------------------
@@ -353,6 +366,7 @@ export class MapEngine extends Evented<EngineEvents> {
   }
 
   remove(): void {
+    this.removed = true;
     this.loop?.stop();
     this.source.destroy();
     this.renderer?.destroy();

@@ -13,8 +13,13 @@ const URL = 'https://example.org/cube/index.json';
 const meta = (m: Partial<CubeMeta>): CubeMeta => ({ crs: 'EPSG:28992', ...m }) as CubeMeta;
 
 describe('CrsTransform', () => {
-  test("RD New's origin is the Amersfoort tower, and points go there and back to a millimetre", () => {
-    const t = CrsTransform.of(meta({ proj4: RD }), URL);
+  // First: proj4 is imported by load(), not with the module.
+  test('before proj4 has been imported, of() says to wait for the meta event', () => {
+    assert.throws(() => CrsTransform.of(meta({ proj4: RD }), URL), (e: unknown) => e instanceof CrsError && /proj4, which is still loading for https:\/\/example\.org\/cube\/index\.json: wait for the map's 'meta' event/.test(e.message));
+  });
+
+  test("RD New's origin is the Amersfoort tower, and points go there and back to a millimetre", async () => {
+    const t = await CrsTransform.load(meta({ proj4: RD }), URL);
     // x 155000, y 463000 is 52.15517440 N, 5.38720621 E in WGS 84 (RDNAPTRANS), to the
     // definition's metre or so.
     const o = t.toLngLat([155000, 463000]);
@@ -25,8 +30,8 @@ describe('CrsTransform', () => {
     }
   });
 
-  test('boxes convert through their outlines: the image of every edge point lies inside', () => {
-    const t = CrsTransform.of(meta({ proj4: RD }), URL);
+  test('boxes convert through their outlines: the image of every edge point lies inside', async () => {
+    const t = await CrsTransform.load(meta({ proj4: RD }), URL);
     const ll = new LngLatBounds([5.7, 52.0], [5.9, 52.2]);
     const b = t.projectedBox(ll);
     for (let i = 0; i <= 10; i++) {
@@ -39,13 +44,13 @@ describe('CrsTransform', () => {
     assert.ok(back.contains([5.7, 52.0]) && back.contains([5.9, 52.2]), back.toString());
   });
 
-  test('a cube without meta.proj4, or with one proj4 cannot read, gets an error naming the index, the CRS and the projected methods', () => {
-    assert.throws(() => CrsTransform.of(meta({}), URL), (e: unknown) => {
+  test('a cube without meta.proj4, or with one proj4 cannot read, gets an error naming the index, the CRS and the projected methods', async () => {
+    await assert.rejects(CrsTransform.load(meta({}), URL), (e: unknown) => {
       assert.ok(e instanceof CrsError);
       assert.match(e.message, /index\.json has no proj4 definition of its CRS \(meta\.crs "EPSG:28992"\)/);
       assert.match(e.message, /getCenterProjected\(\)/);
       return true;
     });
-    assert.throws(() => CrsTransform.of(meta({ crs: '', proj4: '+proj=nonsense' }), URL), /meta\.proj4 \("\+proj=nonsense"\) is not a proj4 definition/);
+    await assert.rejects(CrsTransform.load(meta({ crs: '', proj4: '+proj=nonsense' }), URL), /meta\.proj4 \("\+proj=nonsense"\) is not a proj4 definition/);
   });
 });

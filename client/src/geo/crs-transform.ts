@@ -1,7 +1,10 @@
 // Between longitude/latitude (WGS 84) and the cube's projected CRS, with the proj4 definition
 // that ssc build writes into index.json (meta.proj4). Boxes are converted through their
 // outlines, since a straight edge in one is curved in the other.
-import proj4, { type Converter } from 'proj4';
+// proj4 is imported when a cube's index has arrived, not with the library: it is 44 of the ES
+// build's 122 kB gzip, and a page on a slow network waits for all of the library before it can
+// ask for the index (bench:session, first map on Slow 4G).
+import type { Converter } from 'proj4';
 import type { CubeMeta } from '../../../format/cube-index.js';
 import { boxAround } from '../geometry/box-around.js';
 import type { Bbox } from '../geometry/view.js';
@@ -22,15 +25,47 @@ export class CrsError extends Error {
 
 const PROJECTED_METHODS = 'use the projected methods instead (centerProjected, boundsProjected, getCenterProjected(), getBoundsProjected(), projectProjected(), unprojectProjected(), fitBoundsProjected())';
 
+type Proj4 = typeof import('proj4');
+
+/** proj4 once imported; the reason it could not be, when that failed. */
+let proj4: Proj4 | Error | null = null;
+let importing: Promise<void> | null = null;
+
+function importProj4(): Promise<void> {
+  importing ??= import('proj4').then(
+    (m) => {
+      proj4 = m.default;
+    },
+    (err: unknown) => {
+      proj4 = err instanceof Error ? err : new Error(String(err));
+    },
+  );
+  return importing;
+}
+
 export class CrsTransform {
   private constructor(private readonly conv: Converter) {}
 
-  /** The transform of the cube described by `meta` (index at `url`), or a CrsError saying why there is none. */
+  /**
+   * The transform of the cube described by `meta` (index at `url`), with proj4 imported first
+   * when a definition needs it; rejects with a CrsError saying why there is none.
+   */
+  static async load(meta: CubeMeta, url: string): Promise<CrsTransform> {
+    if (meta.proj4) await importProj4();
+    return CrsTransform.of(meta, url);
+  }
+
+  /**
+   * The same, at once: proj4 must have been imported (`load`, which the map awaits before its
+   * 'meta' event), else a CrsError.
+   */
   static of(meta: CubeMeta, url: string): CrsTransform {
     const crs = meta.crs ? `"${meta.crs}"` : 'not named';
     if (!meta.proj4) {
       throw new CrsError(`${url} has no proj4 definition of its CRS (meta.crs ${crs}), so longitude/latitude cannot be converted: build the cube again with ssc build, which writes meta.proj4 for EPSG codes, or ${PROJECTED_METHODS}`);
     }
+    if (proj4 === null) throw new CrsError(`longitude/latitude need proj4, which is still loading for ${url}: wait for the map's 'meta' event`);
+    if (proj4 instanceof Error) throw new CrsError(`proj4, which converts longitude/latitude for ${url}, could not be loaded (${proj4.message}); ${PROJECTED_METHODS}`);
     let conv: Converter;
     try {
       conv = proj4('EPSG:4326', meta.proj4);
