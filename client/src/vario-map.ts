@@ -75,6 +75,8 @@ export class VarioMap extends Evented<VarioMapEvents> {
   private crs: CrsTransform | CrsError | null = null;
   /** The 'meta' event has fired: the cube and its CRS are known. */
   private metaFired = false;
+  /** Starts loading the CRS, while it waits for the first map (loadCrs). */
+  private startCrs: (() => void) | null = null;
   /** The first complete map, when it came before 'meta': its 'load' event waits for it. */
   private loadAfterMeta: DataEvents['load'] | null = null;
   private pending: PendingView[] = [];
@@ -198,7 +200,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
   /** Goes there at once (asked before the cube is known: when it is, without movement events). */
   jumpTo(o: CameraOptions): this {
     if (this.metaFired) this.view.jump(this.target(o));
-    else this.pending.push(pendingCamera(o));
+    else this.queue(pendingCamera(o));
     return this;
   }
 
@@ -283,7 +285,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
     if (bounds === null) return this.setMaxBoundsProjected(null);
     const box = (): Bbox => this.geo().projectedBox(LngLatBounds.convert(bounds));
     if (this.metaFired) return this.setMaxBoundsProjected(box());
-    this.pending.push({ maxBounds: box, lngLat: true });
+    this.queue({ maxBounds: box, lngLat: true });
     return this;
   }
 
@@ -545,7 +547,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
   /** The fit of a box in the cube's CRS (before the cube is known: when it is). */
   private fitBox(box: ProjectedBox, o: FitBoundsOptions, lngLat: boolean): Promise<boolean> {
     if (!this.metaFired) {
-      this.pending.push({ fit: box, options: o, lngLat });
+      this.queue({ fit: box, options: o, lngLat });
       return Promise.resolve(true);
     }
     const c = this.engine.fitCamera(box(), o.padding ?? 0);
@@ -556,7 +558,7 @@ export class VarioMap extends Evented<VarioMapEvents> {
   /** Before the cube is known there is nothing to animate over: the view is just set then (true). */
   private setBeforeMeta(o: CameraOptions): boolean {
     if (this.metaFired) return false;
-    this.pending.push(pendingCamera(o));
+    this.queue(pendingCamera(o));
     return true;
   }
 
@@ -611,19 +613,32 @@ export class VarioMap extends Evented<VarioMapEvents> {
   }
 
   /**
-   * The cube's index has arrived: its CRS is loaded (proj4 is imported then, not with the
-   * library). The view waits for it only when the views asked for so far need longitude/latitude
-   * (or the hash, which is in longitude/latitude, will place it); else the map starts at once.
+   * The cube's index has arrived: its CRS is to be loaded (proj4 is imported then, not with the
+   * library). When the views asked for so far need longitude/latitude (or the hash, which is in
+   * longitude/latitude, will place the view) the view waits for it. Else the map starts at once
+   * and proj4 is fetched after the first map, so as not to share a slow network with its chunks;
+   * or sooner, when a call needs it (queue).
    */
   private loadCrs(meta: CubeMeta): Promise<void> | null {
-    const settled = CrsTransform.load(meta, this.getSourceUrl())
-      .catch((err: unknown) => (err instanceof CrsError ? err : new CrsError(err instanceof Error ? err.message : String(err))))
-      .then((crs) => {
-        if (this.removed) return;
-        this.crs = crs;
-        this.showMeta();
-      });
-    return this.hash || this.pending.some((p) => p.lngLat) ? settled : null;
+    const start = (): Promise<void> => {
+      this.startCrs = null;
+      return CrsTransform.load(meta, this.getSourceUrl())
+        .catch((err: unknown) => (err instanceof CrsError ? err : new CrsError(err instanceof Error ? err.message : String(err))))
+        .then((crs) => {
+          if (this.removed) return;
+          this.crs = crs;
+          this.showMeta();
+        });
+    };
+    if (this.hash || this.pending.some((p) => p.lngLat)) return start();
+    this.startCrs = () => void start();
+    return null;
+  }
+
+  /** A view for when the cube and its CRS are known; one that needs the CRS has it loaded now. */
+  private queue(p: PendingView): void {
+    this.pending.push(p);
+    if (p.lngLat) this.startCrs?.();
   }
 
   /** The cube is known (the view has fitted itself): the scale limits and the comparison scales. */
@@ -677,7 +692,10 @@ export class VarioMap extends Evented<VarioMapEvents> {
     e.on('load', (ev) => {
       if (this.metaFired) this.fire('load', ev);
       else this.loadAfterMeta = ev;
+      this.startCrs?.();
     });
+    // A first map whose chunks failed never loads; its CRS is still wanted.
+    e.on('idle', () => this.startCrs?.());
     e.on('render', (st) => this.fire('render', { frame: st.frame, z: this.view.z(), scaleDenominator: this.getScaleDenominator(), triangles: st.triangles }));
   }
 }
