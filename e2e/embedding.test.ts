@@ -37,7 +37,7 @@ const PAGES: Record<string, string> = {
 // longitude/latitude then.
   'lazy-proj4.html': `${LIB_PAGE_HEAD}
   <script type="module">
-    import { VarioMap } from './lib/vario-map.js';
+    import { Marker, VarioMap } from './lib/vario-map.js';
     const q = new URLSearchParams(location.search);
     const center = q.get('center')?.split(',').map(Number);
     const scale = q.get('scale');
@@ -56,8 +56,18 @@ const PAGES: Record<string, string> = {
     // ?later=lng,lat: jumped to once the first chunk is asked for (the index is in), before the first map.
     const later = q.get('later')?.split(',').map(Number);
     if (later) map.once('dataloading').then(() => map.jumpTo({ center: later }));
+    // ?jump=x,y,scale: jumped to in the cube's coordinates at the first map; its view's 'complete' noted.
+    const jump = q.get('jump')?.split(',').map(Number);
+    if (jump) map.once('complete').then(() => {
+      map.jumpTo({ centerProjected: [jump[0], jump[1]], scaleDenominator: jump[2] });
+      window.jumped = { center: map.getCenterProjected(), scale: map.getScaleDenominator() };
+      return map.once('complete');
+    }).then(() => note('jump complete'));
     map.on('load', () => note('load'));
     map.on('meta', () => note('meta'));
+    // ?marker=lng,lat: a marker there, added at once.
+    const marker = q.get('marker')?.split(',').map(Number);
+    if (marker) window.marker = new Marker().setLngLat(marker).addTo(map);
     window.map = map;
   </script>
 </body>
@@ -128,7 +138,7 @@ describe('the library builds in plain pages (bgt_otterlo_400m)', () => {
   });
 
   describe('proj4 is fetched once the index is in, not with the library', () => {
-    type Noted = { type: 'complete' | 'meta' | 'load'; at: number; metadata: boolean; lngLat: [number, number] | string };
+    type Noted = { type: 'complete' | 'meta' | 'load' | 'jump complete'; at: number; metadata: boolean; lngLat: [number, number] | string };
 
     /**
      * The page with proj4's file held back until `release(page)` resolves, open until 'meta' and
@@ -174,11 +184,44 @@ describe('the library builds in plain pages (bgt_otterlo_400m)', () => {
       assert.ok(Math.hypot(x - (e[0] + e[2]) / 2, y - (e[1] + e[3]) / 2) < 0.01, `the whole cube's centre, ${lng}, ${lat}, is within 1 cm of its extent's`);
     });
 
+    test("a jump in the cube's own coordinates is carried out while proj4 still loads", async () => {
+      const e = bed.contents.meta.extent;
+      const to: [number, number, number] = [e[0] + (e[2] - e[0]) * 0.25, e[1] + (e[3] - e[1]) * 0.75, 1500];
+      // proj4 held back until the jump's view is complete: a jump that waited for it never would be.
+      const done = (p: Page): Promise<unknown> => p.waitForFunction(() => (globalThis as unknown as { events: Noted[] }).events.some((n) => n.type === 'jump complete'), null, { timeout: 60_000 });
+      const { page, noted } = await openSlowProj4({ jump: to.join(',') }, done);
+      const jumped = await page.evaluate(() => (globalThis as unknown as { jumped: { center: [number, number]; scale: number } }).jumped);
+      assert.deepEqual(jumped, { center: [to[0], to[1]], scale: to[2] }, 'the view moved at once');
+      assert.deepEqual(noted.map((n) => n.type), ['complete', 'jump complete', 'meta', 'load']);
+      assert.equal(noted[1]!.metadata, false, 'before meta');
+    });
+
+    test('a marker added with the map shows where it belongs once proj4 has come, though the map had gone idle', async () => {
+      const e = bed.contents.meta.extent;
+      const at = rdToLngLat([e[0] + (e[2] - e[0]) * 0.4, e[1] + (e[3] - e[1]) * 0.45]);
+      // proj4 held back until the first map is drawn and the frames have stopped.
+      const idleAfterFirst = async (p: Page): Promise<void> => {
+        await p.waitForFunction(() => (globalThis as unknown as { events: Noted[] }).events.some((n) => n.type === 'complete'), null, { timeout: 60_000 });
+        await p.evaluate(() => (globalThis as unknown as VarioWindow).map.whenIdle());
+      };
+      const { page } = await openSlowProj4({ marker: at.join(',') }, idleAfterFirst);
+      type PageMarker = { getElement(): { style: { visibility: string }; getBoundingClientRect(): { left: number; width: number; bottom: number } }; getLngLat(): { lng: number; lat: number } };
+      const shown = await page.evaluate(() => {
+        const w = globalThis as unknown as VarioWindow & { marker: PageMarker };
+        const el = w.marker.getElement();
+        const r = el.getBoundingClientRect(), ll = w.marker.getLngLat();
+        return { visibility: el.style.visibility, tip: [r.left + r.width / 2, r.bottom], point: w.map.project([ll.lng, ll.lat]) };
+      });
+      assert.equal(shown.visibility, '', 'the marker is shown');
+      // The default pin's tip (its bottom centre) is on the place (the map fills the page).
+      assert.ok(Math.abs(shown.tip[0]! - shown.point[0]) < 1 && Math.abs(shown.tip[1]! - shown.point[1]) < 1, `the pin's tip at ${shown.tip.join(', ')}, its place at ${shown.point.join(', ')}`);
+    });
+
     test('a jump to a longitude/latitude before the first map fetches proj4 at once, and the map goes there', async () => {
       const e = bed.contents.meta.extent;
       const centre = rdToLngLat([e[0] + (e[2] - e[0]) * 0.7, e[1] + (e[3] - e[1]) * 0.4]);
       // The chunks held back, so that the jump comes well before the first map.
-      bed.site.server.faults.delayMs = (file) => (file.startsWith('c-') ? 1000 : 0);
+      bed.site.server.faults.delayMs = (file) => (file.startsWith('c-') ? 4000 : 0);
       try {
         const { page, noted, proj4 } = await openSlowProj4({ later: centre.join(',') }, () => Promise.resolve());
         const complete = noted.find((n) => n.type === 'complete')!;

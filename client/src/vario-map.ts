@@ -199,8 +199,9 @@ export class VarioMap extends Evented<VarioMapEvents> {
 
   /** Goes there at once (asked before the cube is known: when it is, without movement events). */
   jumpTo(o: CameraOptions): this {
-    if (this.metaFired) this.view.jump(this.target(o));
-    else this.queue(pendingCamera(o));
+    const p = pendingCamera(o);
+    if (this.placeable(p)) this.view.jump(this.target(o));
+    else this.queue(p);
     return this;
   }
 
@@ -284,8 +285,9 @@ export class VarioMap extends Evented<VarioMapEvents> {
   setMaxBounds(bounds: LngLatBoundsLike | null): this {
     if (bounds === null) return this.setMaxBoundsProjected(null);
     const box = (): Bbox => this.geo().projectedBox(LngLatBounds.convert(bounds));
-    if (this.metaFired) return this.setMaxBoundsProjected(box());
-    this.queue({ maxBounds: box, lngLat: true });
+    const p: PendingView = { maxBounds: box, lngLat: true };
+    if (this.placeable(p)) return this.setMaxBoundsProjected(box());
+    this.queue(p);
     return this;
   }
 
@@ -546,8 +548,9 @@ export class VarioMap extends Evented<VarioMapEvents> {
 
   /** The fit of a box in the cube's CRS (before the cube is known: when it is). */
   private fitBox(box: ProjectedBox, o: FitBoundsOptions, lngLat: boolean): Promise<boolean> {
-    if (!this.metaFired) {
-      this.queue({ fit: box, options: o, lngLat });
+    const p: PendingView = { fit: box, options: o, lngLat };
+    if (!this.placeable(p)) {
+      this.queue(p);
       return Promise.resolve(true);
     }
     const c = this.engine.fitCamera(box(), o.padding ?? 0);
@@ -557,9 +560,18 @@ export class VarioMap extends Evented<VarioMapEvents> {
 
   /** Before the cube is known there is nothing to animate over: the view is just set then (true). */
   private setBeforeMeta(o: CameraOptions): boolean {
-    if (this.metaFired) return false;
-    this.queue(pendingCamera(o));
+    const p = pendingCamera(o);
+    if (this.placeable(p)) return false;
+    this.queue(p);
     return true;
+  }
+
+  /**
+   * A view can be set now: the cube is known, and its CRS when the view needs it (in the cube's
+   * own coordinates the map moves while proj4 still loads), and no view asked for before waits.
+   */
+  private placeable(p: PendingView): boolean {
+    return this.view.meta !== null && this.pending.length === 0 && (!p.lngLat || this.crs !== null);
   }
 
   /** The conversion of longitude/latitude, or a clear error why there is none. */
@@ -631,6 +643,11 @@ export class VarioMap extends Evented<VarioMapEvents> {
         });
     };
     if (this.hash || this.pending.some((p) => p.lngLat)) return start();
+    // Without WebGL2 no first map comes to wait for.
+    if (!this.engine.draws()) {
+      void start();
+      return null;
+    }
     this.startCrs = () => void start();
     return null;
   }

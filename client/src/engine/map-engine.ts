@@ -304,6 +304,11 @@ export class MapEngine extends Evented<EngineEvents> {
 
   // ---- state -------------------------------------------------------------------------------------
 
+  /** There is a frame loop (WebGL2 is there): 'load' and 'idle' will come. */
+  draws(): boolean {
+    return this.loop !== null;
+  }
+
   /** Every chunk the view shows is on the GPU: the map is complete. */
   loaded(): boolean {
     return this.loop?.loaded() ?? false;

@@ -27,7 +27,7 @@ const PROJECTED_METHODS = 'use the projected methods instead (centerProjected, b
 
 type Proj4 = typeof import('proj4');
 
-/** proj4 once imported; the reason it could not be, when that failed. */
+/** proj4 once imported; the reason it could not be, when the last try failed. */
 let proj4: Proj4 | Error | null = null;
 let importing: Promise<void> | null = null;
 
@@ -38,6 +38,8 @@ function importProj4(): Promise<void> {
     },
     (err: unknown) => {
       proj4 = err instanceof Error ? err : new Error(String(err));
+      // The next map tries again (a network blip must not leave the page without it).
+      importing = null;
     },
   );
   return importing;
@@ -51,7 +53,7 @@ export class CrsTransform {
    * when a definition needs it; rejects with a CrsError saying why there is none.
    */
   static async load(meta: CubeMeta, url: string): Promise<CrsTransform> {
-    if (meta.proj4) await importProj4();
+    if (meta.proj4 && (proj4 === null || proj4 instanceof Error)) await importProj4();
     return CrsTransform.of(meta, url);
   }
 

@@ -48,11 +48,14 @@ export abstract class PlacedOverlay<Events extends object> extends Evented<Event
     this.map = map;
     map.getCanvasContainer().appendChild(this.getElement());
     map.on('render', this.update);
+    // The CRS may come after the frames have stopped (proj4 loads after the first map).
+    map.on('meta', this.update);
     this.update();
   }
 
   protected detach(): void {
     this.map?.off('render', this.update);
+    this.map?.off('meta', this.update);
     this.getElement().remove();
     this.map = null;
   }
