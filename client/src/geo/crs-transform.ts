@@ -1,9 +1,9 @@
 // Between longitude/latitude (WGS 84) and the cube's projected CRS, with the proj4 definition
 // that ssc build writes into index.json (meta.proj4). Boxes are converted through their
 // outlines, since a straight edge in one is curved in the other.
-// proj4 is imported when a cube's index has arrived, not with the library: it is 44 of the ES
-// build's 122 kB gzip, and a page on a slow network waits for all of the library before it can
-// ask for the index (bench:session, first map on Slow 4G).
+// proj4 is imported by `load`, once a cube's index has arrived (VarioMap decides when), not
+// with the library: it was 46 of the ES build's 122 kB gzip, and a page on a slow network waits
+// for all of the library before it can ask for the index (bench:session, first map on Slow 4G).
 import type { Converter } from 'proj4';
 import type { CubeMeta } from '../../../format/cube-index.js';
 import { boxAround } from '../geometry/box-around.js';
