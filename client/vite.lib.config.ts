@@ -1,5 +1,5 @@
 // The embeddable library (Vite library mode) into dist/lib: `--mode es` builds the ES module
-// (vario-map.js; its worker, and proj4, which it imports once a cube's index arrives, are
+// (vario-map.js; its worker, and proj4, which it imports after a cube's index has arrived, are
 // files in assets/) and the stylesheet; `--mode umd` the script-tag build (vario-map.umd.js,
 // global `vario`, proj4 inside) with the worker inlined, by swapping
 // create-worker.ts for create-worker-inline.ts. The type declarations come from
@@ -26,8 +26,8 @@ export default defineConfig(({ mode }) => {
       target: 'es2022',
       sourcemap: true,
       copyPublicDir: false,
-      // proj4, imported when a cube's index arrives (geo/crs-transform.ts), is a file of its own
-      // beside the worker, named for what it is.
+      // proj4, imported after a cube's index has arrived (geo/crs-transform.ts), is a file of its
+      // own beside the worker, named for what it is.
       rolldownOptions: { output: { chunkFileNames: (c: { moduleIds: string[] }) => (c.moduleIds.some((id) => id.includes('/node_modules/proj4/')) ? 'assets/proj4-[hash].js' : 'assets/[name]-[hash].js') } },
       lib: {
         entry,
