@@ -585,10 +585,8 @@ export class VarioMap extends Evented<VarioMapEvents> {
    * the CRS is still loading, up to the first that needs it.
    */
   private placePending(): void {
-    const now = this.crs === null ? this.pending.findIndex((p) => p.lngLat) : -1;
-    const pending = now < 0 ? this.pending : this.pending.slice(0, now);
-    this.pending = now < 0 ? [] : this.pending.slice(now);
-    for (const p of pending) {
+    const waits = this.crs === null ? this.pending.findIndex((p) => p.lngLat) : -1;
+    for (const p of waits < 0 ? this.pending.splice(0) : this.pending.splice(0, waits)) {
       try {
         if ('camera' in p) this.view.place(this.target(p.camera));
         else if ('maxBounds' in p) this.view.setLimits({ maxBounds: p.maxBounds() });

@@ -53,7 +53,7 @@ export class CrsTransform {
    * when a definition needs it; rejects with a CrsError saying why there is none.
    */
   static async load(meta: CubeMeta, url: string): Promise<CrsTransform> {
-    if (meta.proj4 && (proj4 === null || proj4 instanceof Error)) await importProj4();
+    if (meta.proj4) await importProj4();
     return CrsTransform.of(meta, url);
   }
 
