@@ -2,14 +2,14 @@
 // documented shape; a bad index is refused with every problem named by its place.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { encodeIndex, encodeSubIndex, IndexFormatError, isExternal, isLeaf, parseIndex, parseSubIndex, type CubeIndexJson, type InnerNode } from './cube-index.js';
+import { encodeIndex, encodeSubIndex, expectedDigest, IndexFormatError, isExternal, isLeaf, parseIndex, parseSubIndex, type CubeIndexJson, type InnerNode } from './cube-index.js';
 
 const sha = (c: string): string => c.repeat(64);
 
 function index(): CubeIndexJson {
   return {
     format: 'ssc-index',
-    version: 1,
+    version: 2,
     meta: {
       name: 'Two', crs: 'EPSG:28992', extent: [0, 0, 2, 1], zMax: 2, steps: 2, phases: 8, baseScale: 1000, baseFaces: 2,
       pixelSizeMm: 0.28, scaleTable: [[0, 2], [2, 1]],
@@ -21,7 +21,7 @@ function index(): CubeIndexJson {
     root: {
       bbox: [0, 0, 0, 2, 1, 3],
       children: [
-        { bbox: [0, 0, 0, 1, 1, 1], file: 'c-aaaaaaaaaaaaaaaa.bin', bytes: 172, triangles: 2, sha256: sha('a') },
+        { bbox: [0, 0, 0, 1, 1, 1], file: 'c-aaaaaaaaaaaaaaaa.bin', bytes: 172, triangles: 2 },
         { bbox: [1, 0, 0, 2, 1, 3], ref: 'i-bbbbbbbbbbbbbbbb.json', chunks: 1 },
       ],
     },
@@ -47,7 +47,8 @@ describe('index.json', () => {
       lines: [{ classIndex: 0, by: null, values: null, width: 0.5, color: '#aabbcc', casing: null, weight: 2 }],
     });
     const [leaf, ext] = back.root.children;
-    assert.ok(leaf && isLeaf(leaf) && leaf.sha256 === sha('a') && leaf.triangles === 2);
+    assert.ok(leaf && isLeaf(leaf) && leaf.sha256 === undefined && leaf.triangles === 2);
+    assert.equal(expectedDigest(leaf), 'aaaaaaaaaaaaaaaa', "version 2: the file's SHA-256 starts with the 16 hex digits of its name");
     assert.ok(ext && isExternal(ext) && ext.ref === 'i-bbbbbbbbbbbbbbbb.json');
   });
 
@@ -76,12 +77,29 @@ describe('index.json', () => {
       assert.ok(e.message.startsWith('index.json: 4 problems'));
       return true;
     });
-    assert.throws(() => parseIndex({ ...index(), version: 2 }), /version: must be 1/);
+    assert.throws(() => parseIndex({ ...index(), version: 3 }), /version: must be 1 or 2 \(the versions this reader reads\)/);
     assert.throws(() => parseIndex({ ...index(), format: 'geojson' }), /format: must be "ssc-index"/);
   });
 
+  test('a leaf is named by its SHA-256, or carries it whole as version 1 did; with neither it is refused', () => {
+    const j = index();
+    const leaf = j.root.children[0] as { file: string; sha256?: string };
+    leaf.file = 'c-a.bin';
+    assert.throws(() => parseIndex(j), /root\.children\.0: must be named <kind>-<16 hex digits of its SHA-256>\.<ext> \(or carry sha256, as version 1 did\)/);
+    const lines = [{ bbox: [0, 0, 0.1, 2, 1, 3] as [number, number, number, number, number, number], file: 'l-D.bin', bytes: 120, lines: 2 }];
+    assert.throws(() => parseIndex({ ...index(), lines }), /lines\.0: must be named/);
+    assert.throws(() => parseIndex({ ...j, root: { ...j.root, children: [{ ...leaf, file: 'c-aaaaaaaaaaaaaaa.bin' }] } }), /must be named/, '15 hex digits are not a name by hash');
+    // Version 1: any name, the whole SHA-256 beside it, which the file is checked against.
+    leaf.sha256 = sha('b');
+    const v1 = parseIndex({ ...j, version: 1 });
+    const back = v1.root.children[0]!;
+    assert.ok(isLeaf(back));
+    assert.equal(expectedDigest(back), sha('b'));
+    assert.throws(() => expectedDigest({ file: 'c-a.bin' }), /^IndexFormatError: c-a\.bin: is not named by its SHA-256 and the index gives none$/, 'a leaf no index would hold');
+  });
+
   test('line chunks: read back when listed, absent when not, a bad entry refused by its place', () => {
-    const lines = [{ bbox: [0, 0, 0.1, 2, 1, 3] as [number, number, number, number, number, number], file: 'l-dddddddddddddddd.bin', bytes: 120, lines: 2, sha256: sha('d') }];
+    const lines = [{ bbox: [0, 0, 0.1, 2, 1, 3] as [number, number, number, number, number, number], file: 'l-dddddddddddddddd.bin', bytes: 120, lines: 2 }];
     assert.deepEqual(parseIndex(JSON.parse(new TextDecoder().decode(encodeIndex({ ...index(), lines })))).lines, lines);
     assert.equal(parseIndex(index()).lines, undefined, 'a cube without linear classes has no lines entry');
     assert.throws(() => parseIndex({ ...index(), lines: [{ ...lines[0], file: 'http://x/l.bin' }] }), /lines\.0\.file/);
@@ -89,7 +107,7 @@ describe('index.json', () => {
   });
 
   test('floor chunks: read back when listed, absent when not, a bad entry refused by its place', () => {
-    const floor = { top: 0.25, root: { bbox: [0, 0, 0, 2, 1, 0.25] as [number, number, number, number, number, number], children: [{ bbox: [0, 0, 0, 2, 1, 0.25] as [number, number, number, number, number, number], file: 'c-eeeeeeeeeeeeeeee.bin', bytes: 90, triangles: 2, sha256: sha('e') }] } };
+    const floor = { top: 0.25, root: { bbox: [0, 0, 0, 2, 1, 0.25] as [number, number, number, number, number, number], children: [{ bbox: [0, 0, 0, 2, 1, 0.25] as [number, number, number, number, number, number], file: 'c-eeeeeeeeeeeeeeee.bin', bytes: 90, triangles: 2 }] } };
     assert.deepEqual(parseIndex(JSON.parse(new TextDecoder().decode(encodeIndex({ ...index(), floor })))).floor, floor);
     assert.equal(parseIndex(index()).floor, undefined, 'a cube of one chunk has no floor entry');
     assert.throws(() => parseIndex({ ...index(), floor: { ...floor, top: 0 } }), /floor\.top: must be > 0/);
@@ -105,9 +123,9 @@ describe('index.json', () => {
 
 describe('sub-index file', () => {
   test('reads back what was written', () => {
-    const node: InnerNode = { bbox: [1, 0, 0, 2, 1, 3], children: [{ bbox: [1, 0, 0, 2, 1, 3], file: 'c-cccccccccccccccc.bin', bytes: 9, triangles: 1, sha256: sha('c') }] };
+    const node: InnerNode = { bbox: [1, 0, 0, 2, 1, 3], children: [{ bbox: [1, 0, 0, 2, 1, 3], file: 'c-cccccccccccccccc.bin', bytes: 9, triangles: 1 }] };
     const json = encodeSubIndex(node);
-    assert.deepEqual(JSON.parse(json), { format: 'ssc-subindex', version: 1, node });
+    assert.deepEqual(JSON.parse(json), { format: 'ssc-subindex', version: 2, node });
     assert.deepEqual(parseSubIndex(JSON.parse(json), 'i-b.json'), node);
     assert.throws(() => parseSubIndex({ format: 'ssc-index', node }, 'i-b.json'), /^IndexFormatError: i-b.json: format: must be "ssc-subindex"/);
   });

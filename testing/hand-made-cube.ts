@@ -1,6 +1,7 @@
 // Small cubes made by hand for the map's source tests: real chunk files (format/chunk.ts),
-// index leaves carrying their true SHA-256, a valid index.json, and a fake-fetch answer that
-// serves the files under a base URL.
+// index leaves that name their files freely and carry their true SHA-256 (index version 1, which
+// the readers still read; `namedLeaf` makes a leaf as the build writes it now), a valid
+// index.json, and a fake-fetch answer that serves the files under a base URL.
 import { createHash } from 'node:crypto';
 import { encodeChunk } from '../format/chunk-encode.js';
 import { encodeIndex, encodeSubIndex, type Box3, type ChunkLeaf, type CubeIndexJson, type IndexNode, type InnerNode } from '../format/cube-index.js';
@@ -26,9 +27,14 @@ export function squareChunk(n = 0): Uint8Array {
   });
 }
 
-/** The index leaf for a chunk file with these bytes. */
+/** The index leaf (version 1: any name, the whole SHA-256) for a chunk file with these bytes. */
 export function leafFor(file: string, bbox: Box3, bytes: Uint8Array): ChunkLeaf {
   return { bbox, file, bytes: bytes.byteLength, triangles: 2, sha256: sha256(bytes) };
+}
+
+/** The index leaf as the build writes it (version 2): the file named by its SHA-256, no digest beside. */
+export function namedLeaf(bbox: Box3, bytes: Uint8Array): ChunkLeaf {
+  return { bbox, file: `c-${sha256(bytes).slice(0, 16)}.bin`, bytes: bytes.byteLength, triangles: 2 };
 }
 
 /** The box around some nodes' boxes. */

@@ -67,9 +67,9 @@ export interface BuildReport {
   timings: Record<string, number>;
 }
 
-export function hashName(prefix: string, bytes: Uint8Array | string, ext: string): { name: string; sha256: string } {
-  const sha256 = createHash('sha256').update(bytes).digest('hex');
-  return { name: `${prefix}-${sha256.slice(0, 16)}.${ext}`, sha256 };
+/** A file's name in the cube: its kind, the first 16 hex digits of its SHA-256 (what a reader checks it by), its extension. */
+export function hashName(prefix: string, bytes: Uint8Array | string, ext: string): string {
+  return `${prefix}-${createHash('sha256').update(bytes).digest('hex').slice(0, 16)}.${ext}`;
 }
 
 export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}): Promise<BuildReport> {
@@ -110,10 +110,10 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
       const tris = trisOf(p, c);
       if (tris.length === 0) continue;
       const ch = assembleChunk(surfaces, tris, surfaces.xs, surfaces.ys, classOf, grid);
-      const { name, sha256 } = hashName('c', ch.bytes, 'bin');
+      const name = hashName('c', ch.bytes, 'bin');
       files.set(name, ch.bytes);
       const bbox: Box3 = zTop === undefined ? ch.bbox : [ch.bbox[0], ch.bbox[1], ch.bbox[2], ch.bbox[3], ch.bbox[4], zTop];
-      out.push({ bbox, file: name, bytes: ch.bytes.length, triangles: ch.triangles, sha256 });
+      out.push({ bbox, file: name, bytes: ch.bytes.length, triangles: ch.triangles });
     }
     return out;
   };
@@ -131,16 +131,16 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const lines = lineStyle.lineRules.length > 0 ? cubeLines(t, lineStyle) : null;
   const lineLeaves: LineChunkLeaf[] = [];
   for (const ch of lines ? lineChunks(lines, view, grid) : []) {
-    const { name, sha256 } = hashName('l', ch.bytes, 'bin');
+    const name = hashName('l', ch.bytes, 'bin');
     files.set(name, ch.bytes);
-    lineLeaves.push({ bbox: ch.bbox, file: name, bytes: ch.bytes.length, lines: ch.lines, sha256 });
+    lineLeaves.push({ bbox: ch.bbox, file: name, bytes: ch.bytes.length, lines: ch.lines });
   }
   if (lines) log(`lines: ${lines.length} in ${lineLeaves.length} chunks`);
   lap('lines');
   const facePages: { first: number; file: string }[] = [];
   for (let first = 0; first < faces.length; first += FACE_PAGE_SIZE) {
     const bytes = encodeFacePage(faces, first, Math.min(FACE_PAGE_SIZE, faces.length - first));
-    const { name } = hashName('f', bytes, 'bin');
+    const name = hashName('f', bytes, 'bin');
     files.set(name, bytes);
     facePages.push({ first, file: name });
   }
@@ -148,13 +148,13 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const attrs = t.meta.attributes;
   for (let first = 0; first < attrs.length; first += ATTRIBUTE_PAGE_SIZE) {
     const bytes = encodeAttributePage(attrs, first);
-    const { name } = hashName('a', bytes, 'json');
+    const name = hashName('a', bytes, 'json');
     files.set(name, bytes);
     attributePages.push({ first, file: name });
   }
   const subIndexBytes = opts.subIndexBytes ?? 128 * 1024;
-  const tree = splitTree(packTree(leaves), subIndexBytes, (json) => hashName('i', json, 'json').name);
-  const floor = top === null ? null : { top, tree: splitTree(packTree(floorLeaves), subIndexBytes, (json) => hashName('i', json, 'json').name) };
+  const tree = splitTree(packTree(leaves), subIndexBytes, (json) => hashName('i', json, 'json'));
+  const floor = top === null ? null : { top, tree: splitTree(packTree(floorLeaves), subIndexBytes, (json) => hashName('i', json, 'json')) };
   for (const f of [...tree.files, ...(floor?.tree.files ?? [])]) files.set(f.name, new TextEncoder().encode(f.json));
   const style = t.meta.style as { name?: string; attribution?: string };
   const proj4 = t.meta.proj4 ?? proj4Definition(t.meta.crs);

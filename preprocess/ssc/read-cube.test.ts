@@ -1,14 +1,35 @@
-// CubeReader.faceEnds: each face's stepHigh from every face page of a cube directory, Infinity
-// for a face alive to the top; a page that cannot be read or decoded is an error naming the file.
+// CubeReader: a chunk is read only when its bytes are the ones its name (index version 2) or the
+// index's SHA-256 (version 1) names. faceEnds: each face's stepHigh from every face page of a
+// cube directory, Infinity for a face alive to the top; a page that cannot be read or decoded is
+// an error naming the file.
 import assert from 'node:assert/strict';
 import { mkdtemp, rm, unlink, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { test } from 'node:test';
 import { encodeFacePage, type FaceFields } from '../../format/face-page.js';
-import { handMadeCube } from '../../testing/hand-made-cube.js';
+import { handMadeCube, indexFile, leafFor, namedLeaf, squareChunk } from '../../testing/hand-made-cube.js';
 import { InputError } from '../io/errors.js';
 import { CubeReader } from './read-cube.js';
+
+test('chunks: read when their bytes are the ones named, refused by file when not', async (t) => {
+  const dir = await mkdtemp(path.join(tmpdir(), 'read-cube-'));
+  t.after(() => rm(dir, { recursive: true, force: true }));
+  const a = squareChunk(0), b = squareChunk(1);
+  const named = namedLeaf([0, 0, 0, 1, 1, 10], a);
+  const v1 = leafFor('c-b.bin', [1, 0, 0, 2, 1, 10], b);
+  await writeFile(path.join(dir, 'index.json'), indexFile({ bbox: [0, 0, 0, 2, 1, 10], children: [named, v1] }));
+  await writeFile(path.join(dir, named.file), a);
+  await writeFile(path.join(dir, 'c-b.bin'), b);
+  const cube = await CubeReader.open(dir);
+  assert.equal((await cube.chunk(named)).originX, 1000);
+  assert.equal((await cube.chunk(v1)).originX, 1001);
+  // Each file replaced by the other's bytes: the same length, a valid chunk, the wrong one.
+  await writeFile(path.join(dir, named.file), b);
+  await writeFile(path.join(dir, 'c-b.bin'), a);
+  await assert.rejects(cube.chunk(named), (e: unknown) => e instanceof InputError && e.file === path.join(dir, named.file) && /is corrupt: its SHA-256 does not match its name/.test(e.message));
+  await assert.rejects(cube.chunk(v1), (e: unknown) => e instanceof InputError && e.file === path.join(dir, 'c-b.bin') && /is corrupt: its SHA-256 does not match the index/.test(e.message));
+});
 
 test('face ends: each face\'s stepHigh from every page, Infinity for a face alive to the top', async (t) => {
   const dir = await mkdtemp(path.join(tmpdir(), 'read-cube-'));

@@ -5,7 +5,7 @@ import { promises as fs } from 'node:fs';
 import path from 'node:path';
 import { decodeChunk, type DecodedChunk } from '../../format/chunk.js';
 import { decodeFacePage } from '../../format/face-page.js';
-import { parseIndex, parseSubIndex, type ChunkLeaf, type CubeIndex, type InnerNode, type LineChunkLeaf } from '../../format/cube-index.js';
+import { expectedDigest, parseIndex, parseSubIndex, type ChunkLeaf, type CubeIndex, type InnerNode, type LineChunkLeaf } from '../../format/cube-index.js';
 import { EVERYWHERE, queryIndex, queryLineChunks, type QueryBox } from '../../format/index-query.js';
 import { decodeLineChunk, type LineChunkData } from '../../format/line-chunk.js';
 import { InputError } from '../io/errors.js';
@@ -99,12 +99,12 @@ export class CubeReader {
     return this.checkedFile(leaf, 'line chunk', decodeLineChunk);
   }
 
-  /** A file of the index read, checked against the index's size and SHA-256, and decoded. */
-  private checkedFile<T>(leaf: { file: string; bytes: number; sha256: string }, kind: string, decode: (bytes: Uint8Array, name: string) => T | Promise<T>): Promise<T> {
+  /** A file of the index read, checked against the index's size and its SHA-256 against its name (or the index's), and decoded. */
+  private checkedFile<T>(leaf: { file: string; bytes: number; sha256?: string | undefined }, kind: string, decode: (bytes: Uint8Array, name: string) => T | Promise<T>): Promise<T> {
     return this.decodedFile(leaf.file, kind, decode, (bytes, file) => {
       if (bytes.length !== leaf.bytes) throw new InputError(`is ${bytes.length} bytes; the index says ${leaf.bytes} (truncated or replaced)`, { file });
       const sha = createHash('sha256').update(bytes).digest('hex');
-      if (sha !== leaf.sha256) throw new InputError(`is corrupt: its SHA-256 does not match the index`, { file });
+      if (!sha.startsWith(expectedDigest(leaf))) throw new InputError(`is corrupt: its SHA-256 does not match ${leaf.sha256 ? 'the index' : 'its name'}`, { file });
     });
   }
 

@@ -1,18 +1,20 @@
-// One chunk from a (fake) server: real chunk files from format/chunk.ts, the index leaf holding
-// their SHA-256. What arrives is the decoded chunk with only its upward triangles; bytes that
-// differ from the index, or that are not a chunk, are refused as corrupt.
+// One chunk from a (fake) server: real chunk files from format/chunk.ts, named by their SHA-256
+// as the build names them. What arrives is the decoded chunk with only its upward triangles;
+// bytes that differ from the name (or from a version 1 index's SHA-256), or that are not a
+// chunk, are refused as corrupt.
 import assert from 'node:assert/strict';
 import { gzipSync } from 'node:zlib';
 import { describe, test } from 'node:test';
 import { installFakeFetch, body, status } from '../../../testing/fake-fetch.js';
-import { leafFor, squareChunk } from '../../../testing/hand-made-cube.js';
+import { leafFor, namedLeaf, sha256, squareChunk } from '../../../testing/hand-made-cube.js';
 import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
 import { FetchFailure } from './fetch-retry.js';
 import type { ChunkPayload } from './worker-protocol.js';
 
-const URL_C = 'https://maps.test/cube/c-1.bin';
 const retry = { retries: 0, backoffMs: 0, maxBackoffMs: 0 };
-const leaf = leafFor('c-1.bin', [0, 0, 0, 1, 1, 10], squareChunk(1));
+const leaf = namedLeaf([0, 0, 0, 1, 1, 10], squareChunk(1));
+const URL_C = `https://maps.test/cube/${leaf.file}`;
+const NAME = leaf.file.replace('.', '\\.');
 
 /**
  * The triangles the payload says to draw, as vertex index triples, each from its smallest
@@ -28,9 +30,9 @@ function drawn(p: ChunkPayload): number[] {
   });
 }
 
-/** The ChunkCorrupt the fetch of c-1.bin rejects with. */
-async function corruption(): Promise<ChunkCorrupt> {
-  const err = await fetchChunk(leaf, URL_C, retry, new AbortController().signal).then(
+/** The ChunkCorrupt the fetch of `of` rejects with. */
+async function corruption(of = leaf): Promise<ChunkCorrupt> {
+  const err = await fetchChunk(of, URL_C, retry, new AbortController().signal).then(
     () => assert.fail('the chunk was accepted'),
     (e: unknown) => e,
   );
@@ -39,10 +41,10 @@ async function corruption(): Promise<ChunkCorrupt> {
 }
 
 describe('fetching a chunk', () => {
-  test('a chunk whose bytes match the index arrives decoded and verified, with its upward triangle only', async (t) => {
+  test('a chunk whose bytes match its name arrives decoded and verified, with its upward triangle only', async (t) => {
     installFakeFetch(t, () => body(squareChunk(1)));
     const p = await fetchChunk(leaf, URL_C, retry, new AbortController().signal);
-    assert.equal(p.file, 'c-1.bin');
+    assert.equal(p.file, leaf.file);
     assert.equal(p.verified, true);
     assert.equal(p.vertexCount, 4);
     assert.equal(p.originX, 1001);
@@ -61,31 +63,38 @@ describe('fetching a chunk', () => {
     assert.deepEqual(drawn(p), [0, 2, 3]);
   });
 
-  test('a valid chunk whose bytes are not the ones the index names is refused as corrupt', async (t) => {
+  test('a valid chunk whose bytes are not the ones its name names is refused as corrupt', async (t) => {
     // Another build's chunk under the same name: a good chunk, the wrong hash.
     installFakeFetch(t, () => body(squareChunk(2)));
     const err = await corruption();
-    assert.match(err.message, /^c-1\.bin: SHA-256 [0-9a-f]{64} does not match the index/);
-    assert.ok(err.message.includes(leaf.sha256));
+    assert.match(err.message, new RegExp(`^${NAME}: SHA-256 ${sha256(squareChunk(2))} does not match its name \\(${sha256(squareChunk(1)).slice(0, 16)}\\)$`));
+  });
+
+  test('an index of version 1: any name, checked against the whole SHA-256 beside it', async (t) => {
+    const v1 = leafFor('c-1.bin', [0, 0, 0, 1, 1, 10], squareChunk(1));
+    installFakeFetch(t, () => body(squareChunk(1)));
+    assert.equal((await fetchChunk(v1, URL_C, retry, new AbortController().signal)).verified, true);
+    installFakeFetch(t, () => body(squareChunk(2)));
+    assert.match((await corruption(v1)).message, new RegExp(`^c-1\\.bin: SHA-256 [0-9a-f]{64} does not match the index \\(${v1.sha256}\\)$`));
   });
 
   test('one flipped byte is enough to refuse it', async (t) => {
     const bytes = squareChunk(1);
     bytes[88]! ^= 1; // the class of face 5 in the face table: still decodes
     installFakeFetch(t, () => body(bytes));
-    assert.match((await corruption()).message, /does not match the index/);
+    assert.match((await corruption()).message, /does not match its name/);
   });
 
   test('a truncated chunk is corrupt, and the message says why', async (t) => {
     const whole = squareChunk(1);
     installFakeFetch(t, () => body(whole.subarray(0, 100)));
-    assert.match((await corruption()).message, new RegExp(`^c-1\\.bin: 100 bytes, its header \\(2 faces, .*\\) needs ${whole.length}`));
+    assert.match((await corruption()).message, new RegExp(`^${NAME}: 100 bytes, its header \\(2 faces, .*\\) needs ${whole.length}`));
   });
 
   test('a body that starts like gzip but is not is corrupt', async (t) => {
     const bytes = new Uint8Array([0x1f, 0x8b, 1, 2, 3, 4, 5, 6]);
     installFakeFetch(t, () => body(bytes));
-    assert.match((await corruption()).message, /^c-1\.bin: bad gzip body/);
+    assert.match((await corruption()).message, new RegExp(`^${NAME}: bad gzip body`));
   });
 
   test('an HTTP error is a fetch failure, not a corrupt chunk', async (t) => {

@@ -1,6 +1,6 @@
 // One chunk from the network to GPU-ready arrays: fetch (with retries), gunzip when the body
-// is still gzip, decode and check it, and compare its SHA-256 with the index.
-import type { ChunkLeaf } from '../../../format/cube-index.js';
+// is still gzip, decode and check it, and compare its SHA-256 with its name (or the index's).
+import { expectedDigest, type ChunkLeaf } from '../../../format/cube-index.js';
 import { decodeChunk } from '../../../format/chunk.js';
 import { FormatError } from '../../../format/format-error.js';
 import { gunzipIfNeeded } from './gunzip.js';
@@ -19,10 +19,11 @@ export class ChunkCorrupt extends Error {
 
 /**
  * A chunk file of either kind, fetched, gunzipped when the body is still gzip, decoded by
- * `decode` (which checks the structure) and compared with the index's SHA-256; `verified` is
- * false where no crypto.subtle could check the hash. Every failure of the file is ChunkCorrupt.
+ * `decode` (which checks the structure) and its SHA-256 compared with the digits in its name (or
+ * the whole SHA-256 in a version 1 index); `verified` is false where no crypto.subtle could check
+ * the hash. Every failure of the file is ChunkCorrupt.
  */
-export async function fetchChunkFile<T>(leaf: { file: string; sha256: string }, url: string, retry: RetryOptions, signal: AbortSignal, decode: (bytes: ArrayBuffer, name: string) => T | Promise<T>): Promise<{ data: T; verified: boolean }> {
+export async function fetchChunkFile<T>(leaf: { file: string; sha256?: string | undefined }, url: string, retry: RetryOptions, signal: AbortSignal, decode: (bytes: ArrayBuffer, name: string) => T | Promise<T>): Promise<{ data: T; verified: boolean }> {
   const raw = await fetchBytes(url, retry, signal);
   let bytes: ArrayBuffer;
   try {
@@ -38,7 +39,8 @@ export async function fetchChunkFile<T>(leaf: { file: string; sha256: string }, 
     throw err;
   }
   const hash = await sha256Hex(bytes);
-  if (hash !== null && hash !== leaf.sha256) throw new ChunkCorrupt(`${leaf.file}: SHA-256 ${hash} does not match the index (${leaf.sha256})`);
+  const expected = expectedDigest(leaf);
+  if (hash !== null && !hash.startsWith(expected)) throw new ChunkCorrupt(`${leaf.file}: SHA-256 ${hash} does not match ${leaf.sha256 ? 'the index' : 'its name'} (${expected})`);
   return { data, verified: hash !== null };
 }
 

@@ -1,5 +1,6 @@
-// SHA-256 of a chunk, to compare with the index's `sha256`. crypto.subtle exists only in secure
-// contexts (https, localhost, 127.0.0.1): elsewhere the check cannot run and null says so.
+// SHA-256 of a chunk, to compare with the digits of its name (or a version 1 index's `sha256`).
+// crypto.subtle exists only in secure contexts (https, localhost, 127.0.0.1): elsewhere the check
+// cannot run and null says so.
 
 export async function sha256Hex(bytes: ArrayBuffer): Promise<string | null> {
   const subtle = globalThis.crypto?.subtle;
