@@ -16,7 +16,9 @@
 // Prints, per dataset, the medians over `runs` runs (3) and their ratio, the vario map's data
 // bytes by kind of file, and what the session's views need of the surface chunks
 // (triangles-in-view.ts: a floor for the chunk encoding as it is); `csv=<file>` also
-// writes every frame (medians over the runs). SwiftShader is a software GPU: the times compare
+// writes every frame (medians over the runs); `waterfall` also prints, for each map's last run,
+// every response the server finished before the first map on the slow network, with its time
+// from the navigation's start (what lies on a phone's path to the first map). SwiftShader is a software GPU: the times compare
 // the two maps on one machine, nothing more.
 import { cp, mkdir, mkdtemp, rm, stat, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
@@ -73,6 +75,8 @@ interface RunResult {
   /** The first map on a slow network (SLOW_NETWORK), ms; the bytes sent before it, code and data. */
   slowFirstMs: number;
   slowBytesBeforeFirst: number;
+  /** The responses finished before that first map: ms from the navigation's start, bytes, path. */
+  slowResponses: { ms: number; bytes: number; path: string }[];
   bytesBeforeFirst: number;
   /** Data bytes sent up to each frame's completion. */
   bytesSoFar: number[];
@@ -164,11 +168,17 @@ async function runPage(browser: Browser, url: string, views: (ProjectedView | Ln
 }
 
 /** The page opened in a fresh context on SLOW_NETWORK, to its first complete map. */
-async function firstOnSlowNetwork(browser: Browser, url: string, log: Sent[]): Promise<{ slowFirstMs: number; slowBytesBeforeFirst: number }> {
+async function firstOnSlowNetwork(browser: Browser, url: string, log: Sent[]): Promise<Pick<RunResult, 'slowFirstMs' | 'slowBytesBeforeFirst' | 'slowResponses'>> {
   const { context, first, problems } = await openToFirstMap(browser, url, log, SLOW_NETWORK);
   try {
     if (problems.length > 0) throw new Error(`${url} on a slow network: ${problems.join('; ')}`);
-    return { slowFirstMs: first.ms, slowBytesBeforeFirst: log.reduce((s, r) => s + (r.at <= first.at ? r.bytes : 0), 0) };
+    const before = log.filter((r) => r.at <= first.at);
+    const start = first.at - first.ms;
+    return {
+      slowFirstMs: first.ms,
+      slowBytesBeforeFirst: before.reduce((s, r) => s + r.bytes, 0),
+      slowResponses: before.map((r) => ({ ms: r.at - start, bytes: r.bytes, path: r.path })),
+    };
   } finally {
     await context.close();
   }
@@ -177,7 +187,7 @@ async function firstOnSlowNetwork(browser: Browser, url: string, log: Sent[]): P
 const mb = (b: number): string => `${(b / 1e6).toFixed(2)} MB`;
 const ratio = (a: number, b: number): string => `${(a / b).toFixed(2)}x`;
 
-async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFrames: number, csv: string[]): Promise<void> {
+async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFrames: number, csv: string[], waterfall: boolean): Promise<void> {
   const tmp = await mkdtemp(path.join(tmpdir(), 'ssc-bench-session-'));
   try {
     const site = path.join(tmp, 'site');
@@ -279,6 +289,13 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
     process.stdout.write(`surface chunks the session's views query (each once, no margin): ${mb(needs.queriedBytes)}; their share that some view needs: ${mb(needs.neededBytes)}\n`);
     process.stdout.write(`whole dataset, gzip: cube ${mb(gz.get('cube')!)}, tiles (z${tiles.minZoom}-${tiles.maxZoom}) ${mb(gz.get('tiles')!)}, ratio ${ratio(gz.get('cube')!, gz.get('tiles')!)}\n`);
     process.stdout.write(`tiles: ${tiles.command}\n`);
+    if (waterfall) {
+      for (const which of ['vario', 'maplibre'] as const) {
+        const last = results[which][runs - 1]!;
+        process.stdout.write(`${which}, last run, slow network: responses finished before the first map (${(last.slowFirstMs / 1000).toFixed(2)} s)\n`);
+        for (const r of last.slowResponses) process.stdout.write(`  ${(r.ms / 1000).toFixed(2)} s ${(r.bytes / 1000).toFixed(1).padStart(7)} kB  ${r.path}\n`);
+      }
+    }
     for (let i = 0; i < n; i++) {
       const f = s.frames[i]!;
       const cell = (x: number | null | undefined): string => (x === null || x === undefined ? '' : String(Math.round(x)));
@@ -300,12 +317,12 @@ async function main(): Promise<void> {
   const frames = Number(args.find((a) => a.startsWith('frames='))?.slice(7) ?? 120);
   if (!Number.isInteger(frames) || frames < 1) throw new Error('frames= takes a whole number >= 1');
   const csvFile = args.find((a) => a.startsWith('csv='))?.slice(4);
-  const sets = datasets(filter?.includes('=') ? undefined : filter, ['bgt_otterlo_1800m', 'nlcd_zion']);
+  const sets = datasets(filter?.includes('=') || filter === 'waterfall' ? undefined : filter, ['bgt_otterlo_1800m', 'nlcd_zion']);
   process.stderr.write(`${version}\n`);
   const csv = ['dataset,frame,phase,scale,vario bytes so far,maplibre bytes so far,vario ms,maplibre ms,vario triangles,maplibre triangles'];
   const browser = await launchChromium();
   try {
-    for (const d of sets) await runDataset(browser, d, runs, frames, csv);
+    for (const d of sets) await runDataset(browser, d, runs, frames, csv, args.includes('waterfall'));
   } finally {
     await browser.close();
   }
