@@ -37,6 +37,15 @@ import { lapTimer } from '../lap-timer.js';
  * 256 KiB fetched 2.29 MB in 42 chunks, 16 KiB 1.84 MB in 423.
  */
 export const DEFAULT_CHUNK_BYTES = 64 * 1024;
+/**
+ * Floor chunks are planned this many times the chunk size: a map opened at the base scale needs
+ * the floor chunks over its view before anything else, and over HTTP/1.1 a browser asks for 6
+ * files at a time. bgt_otterlo_1800m's view at 1:1,000 took 8 floor chunks (46 kB gzip over 9
+ * views) and 2 rounds, now 5 (59 kB) and 1: bench:session's first map on Slow 4G 1.96 -> 1.85 s;
+ * nlcd_zion's at 1:50,000 56 (323 kB) and now 29 (324 kB). All the floor chunks: 0.35 -> 0.34 MB
+ * and 1.69 -> 1.65 MB.
+ */
+export const FLOOR_CHUNK_FACTOR = 2;
 
 export interface BuildOptions {
   chunkBytes?: number;
@@ -123,7 +132,7 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   // (docs/FORMAT.md, "Floor chunks"): none when nothing else lies above it, or when the cube is
   // one chunk (every view takes it whole anyway).
   const top = leaves.length > 1 ? floorTop(surfaces) : null;
-  const floorLeaves = top === null ? [] : writeChunks(planFloorChunks(chunking, top), top);
+  const floorLeaves = top === null ? [] : writeChunks(planFloorChunks({ ...chunking, targetBytes: FLOOR_CHUNK_FACTOR * chunking.targetBytes }, top), top);
   if (top !== null) log(`floor: ${floorLeaves.length} chunks below z ${top}`);
   lap('floor');
   // Lines from the tGAP as generalized (the smooth build's face ids do not matter to them).
