@@ -37,7 +37,7 @@ const PAGES: Record<string, string> = {
 // longitude/latitude then.
   'lazy-proj4.html': `${LIB_PAGE_HEAD}
   <script type="module">
-    import { Marker, VarioMap } from './lib/vario-map.js';
+    import { Marker, SettingsPanel, VarioMap } from './lib/vario-map.js';
     const q = new URLSearchParams(location.search);
     const center = q.get('center')?.split(',').map(Number);
     const scale = q.get('scale');
@@ -68,6 +68,8 @@ const PAGES: Record<string, string> = {
     // ?marker=lng,lat: a marker there, added at once.
     const marker = q.get('marker')?.split(',').map(Number);
     if (marker) window.marker = new Marker().setLngLat(marker).addTo(map);
+    // ?settings: the settings panel.
+    if (q.has('settings')) map.addControl(new SettingsPanel());
     window.map = map;
   </script>
 </body>
@@ -215,6 +217,24 @@ describe('the library builds in plain pages (bgt_otterlo_400m)', () => {
       assert.equal(shown.visibility, '', 'the marker is shown');
       // The default pin's tip (its bottom centre) is on the place (the map fills the page).
       assert.ok(Math.abs(shown.tip[0]! - shown.point[0]) < 1 && Math.abs(shown.tip[1]! - shown.point[1]) < 1, `the pin's tip at ${shown.tip.join(', ')}, its place at ${shown.point.join(', ')}`);
+    });
+
+    test("a slicing surface chosen in the settings panel before 'meta' takes effect when it comes", async () => {
+      let before = '';
+      // proj4 held back until the surface has been chosen, after the first map.
+      const choose = async (p: Page): Promise<void> => {
+        await p.waitForFunction(() => (globalThis as unknown as { events: Noted[] }).events.some((n) => n.type === 'complete'), null, { timeout: 60_000 });
+        await p.click('.vario-map-settings-toggle');
+        await p.selectOption('select[id$="-surface"]', 'sine');
+        await p.keyboard.press('Escape');
+        before = await p.evaluate(() => (globalThis as unknown as VarioWindow).map.getSlicingSurface().kind);
+      };
+      const { page, noted } = await openSlowProj4({ settings: '' }, choose);
+      assert.equal(before, 'flat', 'before meta the surface cannot be sized to the cube yet');
+      assert.deepEqual(noted.map((n) => n.type), ['complete', 'meta', 'load']);
+      const surface = await page.evaluate(() => (globalThis as unknown as VarioWindow).map.getSlicingSurface() as { kind: string; amplitude?: number });
+      assert.equal(surface.kind, 'sine', 'the choice was kept and carried out at meta');
+      assert.equal(surface.amplitude, bed.contents.meta.zMax * 0.05, "sized to the cube's z range");
     });
 
     test('a jump to a longitude/latitude before the first map fetches proj4 at once, and the map goes there', async () => {

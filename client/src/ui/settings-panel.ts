@@ -107,11 +107,13 @@ export class SettingsPanel implements Control {
     group.append(toggle, panel);
 
     map.on('move', this.onMove);
+    map.on('meta', this.onMeta);
     return group;
   }
 
   onRemove(map: VarioMap): void {
     map.off('move', this.onMove);
+    map.off('meta', this.onMeta);
     this.lens.detach();
     this.idw.detach();
     this.log?.stop();
@@ -147,7 +149,12 @@ export class SettingsPanel implements Control {
     if (this.mode === 'tilted') this.applySurface();
   };
 
-  /** The surface for the mode, sized to the view (its ground size and the cube's z range). */
+  /** A mode chosen before the cube was known (proj4 may still load after the first map) takes effect now. */
+  private readonly onMeta = (): void => {
+    if (this.mode !== 'flat') this.applySurface();
+  };
+
+  /** The surface for the mode, sized to the view (its ground size and the cube's z range); none before 'meta' (onMeta). */
   private applySurface(): void {
     const map = this.map;
     const meta = map?.getMetadata();
