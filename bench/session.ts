@@ -17,8 +17,9 @@
 // bytes by kind of file, and what the session's views need of the surface chunks
 // (triangles-in-view.ts: a floor for the chunk encoding as it is); `csv=<file>` also
 // writes every frame (medians over the runs); `waterfall` also prints, for each map's last run,
-// every response the server finished before the first map on the slow network, with its time
-// from the navigation's start (what lies on a phone's path to the first map). SwiftShader is a software GPU: the times compare
+// every response the server finished before the first map on the slow network, with when it
+// finished from the navigation's start (what lies on a phone's path to the first map; Chromium's
+// throttling hands it to the page later, by the bytes still queued before it). SwiftShader is a software GPU: the times compare
 // the two maps on one machine, nothing more.
 import { cp, mkdir, mkdtemp, rm, stat, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
