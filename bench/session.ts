@@ -19,8 +19,8 @@
 // writes every frame (medians over the runs); `waterfall` also prints, for each map's last run,
 // every response the server finished before the first map on the slow network, with when it
 // finished from the navigation's start (what lies on a phone's path to the first map; Chromium's
-// throttling hands it to the page later, by the bytes still queued before it). SwiftShader is a software GPU: the times compare
-// the two maps on one machine, nothing more.
+// throttling hands it to the page later, by the bytes still queued before it). SwiftShader is
+// a software GPU: the times compare the two maps on one machine, nothing more.
 import { cp, mkdir, mkdtemp, rm, stat, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
