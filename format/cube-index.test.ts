@@ -2,7 +2,7 @@
 // documented shape; a bad index is refused with every problem named by its place.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { encodeIndex, encodeSubIndex, expectedDigest, IndexFormatError, isExternal, isLeaf, parseIndex, parseSubIndex, type CubeIndexJson, type InnerNode } from './cube-index.js';
+import { encodeIndex, encodeSubIndex, expectedDigest, hashedName, IndexFormatError, isExternal, isLeaf, parseIndex, parseSubIndex, type CubeIndexJson, type InnerNode } from './cube-index.js';
 
 const sha = (c: string): string => c.repeat(64);
 
@@ -95,6 +95,7 @@ describe('index.json', () => {
     const back = v1.root.children[0]!;
     assert.ok(isLeaf(back));
     assert.equal(expectedDigest(back), sha('b'));
+    assert.equal(expectedDigest({ file: hashedName('l', sha('c'), 'bin') }), 'c'.repeat(16), 'the name the build gives a file is read back');
     assert.throws(() => expectedDigest({ file: 'c-a.bin' }), /^IndexFormatError: c-a\.bin: is not named by its SHA-256 and the index gives none$/, 'a leaf no index would hold');
   });
 

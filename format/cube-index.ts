@@ -53,6 +53,11 @@ export type IndexNode = InnerNode | ExternalNode | ChunkLeaf;
 // leaf, 41% of a gzipped index on bgt_otterlo_1800m (17.5 kB of which 7.2) and on the first
 // map's path; 64 bits still catch any corruption a network or a disk makes.
 const HASHED_NAME = /^[a-z]+-([0-9a-f]{16})\.[a-z]+$/;
+
+/** A cube file's name from its kind, its SHA-256 (hex) and its extension: what HASHED_NAME reads back. */
+export function hashedName(kind: string, sha256: string, ext: string): string {
+  return `${kind}-${sha256.slice(0, 16)}.${ext}`;
+}
 const Sha256Schema = v.pipe(v.string(), v.regex(/^[0-9a-f]{64}$/, 'must be 64 lowercase hex digits'));
 const checkedByName = <T extends { file: string; sha256?: string | undefined }>() =>
   v.check<T, string>((leaf) => leaf.sha256 !== undefined || HASHED_NAME.test(leaf.file), 'must be named <kind>-<16 hex digits of its SHA-256>.<ext> (or carry sha256, as version 1 did)');

@@ -4,7 +4,7 @@
 // index.json, and a fake-fetch answer that serves the files under a base URL.
 import { createHash } from 'node:crypto';
 import { encodeChunk } from '../format/chunk-encode.js';
-import { encodeIndex, encodeSubIndex, type Box3, type ChunkLeaf, type CubeIndexJson, type IndexNode, type InnerNode } from '../format/cube-index.js';
+import { encodeIndex, encodeSubIndex, hashedName, type Box3, type ChunkLeaf, type CubeIndexJson, type IndexNode, type InnerNode } from '../format/cube-index.js';
 import { body, status, type Answer } from './fake-fetch.js';
 
 export const sha256 = (bytes: Uint8Array): string => createHash('sha256').update(bytes).digest('hex');
@@ -34,7 +34,7 @@ export function leafFor(file: string, bbox: Box3, bytes: Uint8Array): ChunkLeaf 
 
 /** The index leaf as the build writes it (version 2): the file named by its SHA-256, no digest beside. */
 export function namedLeaf(bbox: Box3, bytes: Uint8Array): ChunkLeaf {
-  return { bbox, file: `c-${sha256(bytes).slice(0, 16)}.bin`, bytes: bytes.byteLength, triangles: 2 };
+  return { bbox, file: hashedName('c', sha256(bytes), 'bin'), bytes: bytes.byteLength, triangles: 2 };
 }
 
 /** The box around some nodes' boxes. */

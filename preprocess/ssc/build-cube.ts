@@ -5,7 +5,7 @@ import { createHash } from 'node:crypto';
 import { promises as fs } from 'node:fs';
 import path from 'node:path';
 import { brotliCompressSync, constants as zc, gzipSync } from 'node:zlib';
-import { encodeIndex, INDEX_FORMAT, INDEX_VERSION, type Box3, type ChunkLeaf, type CubeIndexJson, type LineChunkLeaf } from '../../format/cube-index.js';
+import { encodeIndex, hashedName, INDEX_FORMAT, INDEX_VERSION, type Box3, type ChunkLeaf, type CubeIndexJson, type LineChunkLeaf } from '../../format/cube-index.js';
 import { PIXEL_SIZE_MM } from '../../format/pixel-size.js';
 import { scaleAtZ } from '../../format/scale.js';
 import { writeDirAtomic } from '../io/atomic-write.js';
@@ -78,7 +78,7 @@ export interface BuildReport {
 
 /** A file's name in the cube: its kind, the first 16 hex digits of its SHA-256 (what a reader checks it by), its extension. */
 export function hashName(prefix: string, bytes: Uint8Array | string, ext: string): string {
-  return `${prefix}-${createHash('sha256').update(bytes).digest('hex').slice(0, 16)}.${ext}`;
+  return hashedName(prefix, createHash('sha256').update(bytes).digest('hex'), ext);
 }
 
 export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}): Promise<BuildReport> {
