@@ -92,6 +92,7 @@ interface RunResult {
 /** What a cube's file holds, from its name (docs/FORMAT.md, "Cube directory"). */
 const CUBE_FILE_KINDS: [RegExp, string][] = [
   [/\/c-[^/]*$/, 'surface chunks'],
+  [/\/b-[^/]*$/, 'floor chunks'],
   [/\/l-[^/]*$/, 'line chunks'],
   [/\/(index\.json|i-[^/]*)$/, 'index'],
   [/\/f-[^/]*$/, 'face tables'],

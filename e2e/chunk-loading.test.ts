@@ -110,7 +110,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     walk(contents.root);
     return out;
   };
-  const chunkRequests = (): LoggedRequest[] => server.log.slice(logStart).filter((e) => /^\/cube\/c-/.test(e.path));
+  const chunkRequests = (): LoggedRequest[] => server.log.slice(logStart).filter((e) => /^\/cube\/[cb]-/.test(e.path));
   const fileOf = (e: LoggedRequest): string => e.path.slice('/cube/'.length);
   const countBy = (rs: LoggedRequest[]): Map<string, number> => {
     const m = new Map<string, number>();
@@ -253,7 +253,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   });
 
   test('panning away aborts the requests for the view left behind', async () => {
-    server.faults.delayMs = (f) => (f.startsWith('c-') ? 1500 : 0);
+    server.faults.delayMs = (f) => (/^[cb]-/.test(f) ? 1500 : 0);
     const z = 30;
     const only = (a: Bbox, b: Bbox): Set<string> => {
       const out = files(needed(a, z).all);
@@ -284,7 +284,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     const newOnes = fresh(a, b, z);
     const p = await open(a, z);
     assert.equal(await waitIdle(p.page), true);
-    server.faults.delayMs = (f) => (f.startsWith('c-') ? 2000 : 0);
+    server.faults.delayMs = (f) => (/^[cb]-/.test(f) ? 2000 : 0);
     await p.page.evaluate(() => {
       (globalThis as unknown as { frames: number }).frames = 0;
       map.on('render', () => (globalThis as unknown as { frames: number }).frames++);

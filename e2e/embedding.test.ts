@@ -165,7 +165,7 @@ describe('the library builds in plain pages (bgt_otterlo_400m)', () => {
       assert.equal(proj4.length, 1, `proj4 fetched once: ${log.map((e) => e.path).join(' ')}`);
       const index = log.find((e) => e.path === '/cube/index.json')!;
       assert.ok(proj4[0]!.start >= index.end, 'proj4 is asked for after the index has arrived, not with the library');
-      return { page, noted, proj4: proj4[0]!, chunks: log.filter((e) => /^\/cube\/c-/.test(e.path)) };
+      return { page, noted, proj4: proj4[0]!, chunks: log.filter((e) => /^\/cube\/[cb]-/.test(e.path)) };
     }
 
     test("a page in the cube's own coordinates fetches proj4 after its first map; longitude/latitude work from its meta event on, and 'load' waits for it", async () => {
@@ -241,7 +241,7 @@ describe('the library builds in plain pages (bgt_otterlo_400m)', () => {
       const e = bed.contents.meta.extent;
       const centre = rdToLngLat([e[0] + (e[2] - e[0]) * 0.7, e[1] + (e[3] - e[1]) * 0.4]);
       // The chunks held back, so that the jump comes well before the first map.
-      bed.site.server.faults.delayMs = (file) => (file.startsWith('c-') ? 4000 : 0);
+      bed.site.server.faults.delayMs = (file) => (/^[cb]-/.test(file) ? 4000 : 0);
       try {
         const { page, noted, proj4 } = await openSlowProj4({ later: centre.join(',') }, () => Promise.resolve());
         const complete = noted.find((n) => n.type === 'complete')!;

@@ -7,6 +7,7 @@ import assert from 'node:assert/strict';
 import { existsSync, mkdirSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { decodeChunk, type DecodedChunk } from '../format/chunk.js';
+import { decodeSurfaceFile } from '../format/surface-file.js';
 import { encodeChunk } from '../format/chunk-encode.js';
 import { parseSurface, surfaceZ } from '../format/slicing-surface.js';
 import { fitView, rasterizeAt, type View } from '../preprocess/map/rasterize.js';
@@ -175,12 +176,13 @@ test('bgt_otterlo_400m cube', async (t) => {
     // (position-grid.ts), the same in every chunk. On each box's own grid (2^-15 m or finer here)
     // a shared corner came out a few micrometres apart in two chunks.
     assert.equal(tgap.meta.options.precision, 2 ** -7);
-    const files = readdirSync(cube).filter((n) => n.startsWith('c-') && n.endsWith('.bin'));
-    assert.ok(files.length > 1);
+    // The floor chunks (b-) too: a map at the floor draws them beside the cube's.
+    const files = readdirSync(cube).filter((n) => /^[cb]-.*\.bin$/.test(n));
+    assert.ok(files.some((n) => n.startsWith('b-')) && files.length > 2);
     const seen = new Map<string, [number, number, string]>();
     let shared = 0, grid: number | null = null;
     for (const f of files) {
-      const c = await decodeChunk(new Uint8Array(readFileSync(path.join(cube, f))));
+      const c = await decodeSurfaceFile(new Uint8Array(readFileSync(path.join(cube, f))));
       grid ??= c.gridExponent;
       assert.ok(grid <= -7 && grid >= -10, `the cube's grid 2^${grid}`);
       assert.equal(c.gridExponent, grid, `${f}: the cube's grid`);
@@ -361,38 +363,43 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
     for (const z of [0, zMax]) assert.deepEqual(smooth(view, z).ids, classic(view, z).ids, `z ${z}: smooth and classic differ`);
   });
 
-  await t.test('the floor chunks hold the cube\'s floor triangles again, and slice below their top as the cube\'s chunks do', async () => {
+  await t.test('the floor chunks cover each face as the cube\'s floor triangles do, and slice below their top as the cube\'s chunks do', async () => {
     const reader = await CubeReader.open(cubes.smooth);
     const floor = reader.index.floor;
     assert.ok(floor, 'the cube has floor chunks');
-    // Each triangle as its corners (absolute, in order) and upper face; its lowest corner's z.
-    const triangles = (c: DecodedChunk): { key: string; zMin: number }[] => Array.from({ length: c.triangleCount }, (_, t) => {
-      const vs = [0, 1, 2].map((k) => c.indices[3 * t + k]!);
-      const corners = vs.map((v) => `${c.originX + c.positions[3 * v]!},${c.originY + c.positions[3 * v + 1]!}`).sort();
-      return { key: `${corners.join(' ')} ${c.upper[vs[0]!]}`, zMin: Math.min(...vs.map((v) => c.positions[3 * v + 2]!)) };
+    // Each triangle's area, upper face and lowest corner.
+    const triangles = (c: DecodedChunk): { area: number; face: number; lower: number; zMin: number }[] => Array.from({ length: c.triangleCount }, (_, t) => {
+      const [a, b, d] = [0, 1, 2].map((k) => c.indices[3 * t + k]!) as [number, number, number];
+      const p = c.positions;
+      const area = ((p[3 * b]! - p[3 * a]!) * (p[3 * d + 1]! - p[3 * a + 1]!) - (p[3 * d]! - p[3 * a]!) * (p[3 * b + 1]! - p[3 * a + 1]!)) / 2;
+      return { area, face: c.upper[a]!, lower: c.lower[a]!, zMin: Math.min(p[3 * a + 2]!, p[3 * b + 2]!, p[3 * d + 2]!) };
     });
-    // The cube's chunks: their floor triangles (counted), and the lowest corner of all others.
-    const inCube = new Map<string, number>();
+    // The cube's chunks: each face's floor area, and the lowest corner of all other triangles.
+    const inCube = new Map<number, number>();
     let top = Infinity;
     for (const leaf of await reader.loadAll()) {
       for (const tri of triangles(await reader.chunk(leaf))) {
-        if (tri.zMin <= 0) inCube.set(tri.key, (inCube.get(tri.key) ?? 0) + 1);
+        if (tri.zMin <= 0) inCube.set(tri.face, (inCube.get(tri.face) ?? 0) + tri.area);
         else top = Math.min(top, tri.zMin);
       }
     }
     assert.equal(Math.fround(floor.top), top, 'the top is the lowest corner of every triangle off the floor');
     const floorLeaves = await reader.loadAll(floor.root);
     assert.ok(floorLeaves.length > 1, `floor chunks: ${floorLeaves.length}`);
+    const inFloor = new Map<number, number>();
     for (const leaf of floorLeaves) {
+      assert.match(leaf.file, /^b-[0-9a-f]{16}\.bin$/);
       assert.deepEqual([leaf.bbox[2], leaf.bbox[5]], [0, floor.top], `${leaf.file}: its box reaches from the floor to the top`);
-      for (const tri of triangles(await reader.chunk(leaf))) {
-        assert.equal(tri.zMin, 0, `${leaf.file}: a triangle off the floor`);
-        const n = inCube.get(tri.key) ?? 0;
-        assert.ok(n > 0, `${leaf.file}: a triangle the cube's chunks do not hold on the floor (${tri.key})`);
-        inCube.set(tri.key, n - 1);
+      const c = await reader.chunk(leaf);
+      assert.equal(c.triangleCount, leaf.triangles, `${leaf.file}: the index counts its triangles`);
+      for (const tri of triangles(c)) {
+        assert.deepEqual([tri.zMin, tri.lower], [0, 0], `${leaf.file}: a triangle off the floor`);
+        assert.ok(tri.area > 0, `${leaf.file}: a triangle seen from below`);
+        inFloor.set(tri.face, (inFloor.get(tri.face) ?? 0) + tri.area);
       }
     }
-    assert.deepEqual([...inCube.values()].filter((n) => n !== 0), [], 'every floor triangle of the cube is in the floor chunks, once');
+    assert.deepEqual([...inFloor.keys()].sort((a, b) => a - b), [...inCube.keys()].sort((a, b) => a - b), 'the same faces on the floor');
+    for (const [face, area] of inCube) assert.ok(Math.abs(inFloor.get(face)! - area) <= 1e-6 * Math.max(1, area), `face ${face}: ${inFloor.get(face)} on the floor chunks, ${area} in the cube`);
     // A view of the middle of the data at a tenth of its width, and the whole extent.
     const [x0, y0, x1, y1] = tgap.meta.extent;
     const dx = (x1 - x0) / 20, dy = (y1 - y0) / 20, cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;

@@ -152,7 +152,8 @@ export function decodedByteLength(vertices: number, triangles: number): number {
 
 type Columns = Pick<ChunkData, VertexColumn['name']>;
 
-function columnViews(buf: ArrayBufferLike, V: number): Columns {
+/** The vertex columns of a decoded chunk's buffer of `V` vertices (decodedByteLength). */
+export function columnViews(buf: ArrayBufferLike, V: number): Columns {
   const at = (i: number): number => vertexColumnOffset(i, V);
   return {
     positions: new Float32Array(buf, at(0), 3 * V),

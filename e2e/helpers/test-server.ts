@@ -17,7 +17,7 @@ export interface LoggedRequest {
 }
 
 export interface Faults {
-  /** Share of chunk requests (c-*.bin) that fail, half with 503, half by a dropped connection. */
+  /** Share of chunk requests (c-*.bin, and the floor's b-*.bin) that fail, half with 503, half by a dropped connection. */
   chunkFailRate: number;
   /** Seed of the failure choices (deterministic per run). */
   seed: number;
@@ -39,7 +39,7 @@ export interface TestServer {
   cubeUrl: string;
   log: LoggedRequest[];
   faults: Faults;
-  /** Requests for a cube file, e.g. requestsFor('c-') for all chunks. */
+  /** Requests for a cube file, e.g. requestsFor('c-') for the cube's chunks. */
   requestsFor(prefix: string): LoggedRequest[];
   close(): Promise<void>;
 }
@@ -134,7 +134,7 @@ export async function startTestServer(opts: { clientDir: string; cubeDir: string
         res.end('503 try again\n');
         return;
       }
-      if (/^c-[0-9a-f]+\.bin$/.test(file) && faults.chunkFailRate > 0) {
+      if (/^[cb]-[0-9a-f]+\.bin$/.test(file) && faults.chunkFailRate > 0) {
         if (seedUsed !== faults.seed) {
           seedUsed = faults.seed;
           random = mulberry32(faults.seed);
@@ -155,7 +155,7 @@ export async function startTestServer(opts: { clientDir: string; cubeDir: string
         }
       }
       const corrupt = faults.corrupt.get(file);
-      if (faults.gzipWithoutEncoding && /^c-[0-9a-f]+\.bin$/.test(file)) {
+      if (faults.gzipWithoutEncoding && /^[cb]-[0-9a-f]+\.bin$/.test(file)) {
         forward(req, res, cubePort, `/${file}.gz`, entry, (b) => b, true);
       } else {
         forward(req, res, cubePort, `/${file}${url.search}`, entry, corrupt);

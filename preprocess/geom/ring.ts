@@ -1,4 +1,5 @@
 // Small helpers on rings stored as vertex-id lists over shared coordinate arrays.
+export { ringArea2 } from '../../format/face-rings.js';
 
 /** Twice the signed area (positive = counterclockwise) of a closed ring given as flat x,y pairs. */
 export function ringArea2Flat(coords: ArrayLike<number>): number {
@@ -24,21 +25,6 @@ export function ringPerimeterFlat(coords: ArrayLike<number>): number {
     p += Math.hypot(coords[2 * j]! - coords[2 * i]!, coords[2 * j + 1]! - coords[2 * i + 1]!);
   }
   return p;
-}
-
-/** Twice the signed area of the closed ring through the given vertex ids (last id may repeat the first). */
-export function ringArea2(ids: ArrayLike<number>, xs: Float64Array, ys: Float64Array): number {
-  let n = ids.length;
-  if (n > 1 && ids[0] === ids[n - 1]) n--;
-  if (n < 3) return 0;
-  const x0 = xs[ids[0]!]!, y0 = ys[ids[0]!]!;
-  let s = 0;
-  for (let i = 1; i < n - 1; i++) {
-    const ax = xs[ids[i]!]! - x0, ay = ys[ids[i]!]! - y0;
-    const bx = xs[ids[i + 1]!]! - x0, by = ys[ids[i + 1]!]! - y0;
-    s += ax * by - bx * ay;
-  }
-  return s;
 }
 
 /**

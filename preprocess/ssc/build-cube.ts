@@ -5,7 +5,7 @@ import { createHash } from 'node:crypto';
 import { promises as fs } from 'node:fs';
 import path from 'node:path';
 import { brotliCompressSync, constants as zc, gzipSync } from 'node:zlib';
-import { encodeIndex, hashedName, INDEX_FORMAT, INDEX_VERSION, type Box3, type ChunkLeaf, type CubeIndexJson, type LineChunkLeaf } from '../../format/cube-index.js';
+import { encodeIndex, hashedName, INDEX_FORMAT, INDEX_VERSION, type ChunkLeaf, type CubeIndexJson, type LineChunkLeaf } from '../../format/cube-index.js';
 import { PIXEL_SIZE_MM } from '../../format/pixel-size.js';
 import { scaleAtZ } from '../../format/scale.js';
 import { writeDirAtomic } from '../io/atomic-write.js';
@@ -13,7 +13,8 @@ import { proj4Definition } from '../io/crs-definition.js';
 import { PHASES, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
 import { assembleChunk } from './assemble-chunk.js';
 import { chooseGrid, coarsestGrid } from './position-grid.js';
-import { floorTop, planChunks, planFloorChunks, type ChunkPlan } from './chunking.js';
+import { floorTop, planChunks, type ChunkPlan } from './chunking.js';
+import { floorChunks } from './floor-chunks.js';
 import { encodeAttributePage, ATTRIBUTE_PAGE_SIZE } from '../../format/attribute-page.js';
 import { encodeFacePage, FACE_PAGE_SIZE } from '../../format/face-page.js';
 import { packTree, splitTree } from './rtree-index.js';
@@ -112,8 +113,8 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const grid = chooseGrid(coarsest, (e) =>
     sample.reduce((sum, c) => sum + (trisOf(plan, c).length > 0 ? assembleChunk(surfaces, trisOf(plan, c), surfaces.xs, surfaces.ys, classOf, e).bytes.length : 0), 0));
   log(`position grid: 2^${grid}`);
-  /** The plan's chunks written; with `zTop`, floor chunks, whose boxes reach up to it. */
-  const writeChunks = (p: ChunkPlan, zTop?: number): ChunkLeaf[] => {
+  /** The plan's chunks written. */
+  const writeChunks = (p: ChunkPlan): ChunkLeaf[] => {
     const out: ChunkLeaf[] = [];
     for (let c = 0; c + 1 < p.start.length; c++) {
       const tris = trisOf(p, c);
@@ -121,8 +122,7 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
       const ch = assembleChunk(surfaces, tris, surfaces.xs, surfaces.ys, classOf, grid);
       const name = hashName('c', ch.bytes, 'bin');
       files.set(name, ch.bytes);
-      const bbox: Box3 = zTop === undefined ? ch.bbox : [ch.bbox[0], ch.bbox[1], ch.bbox[2], ch.bbox[3], ch.bbox[4], zTop];
-      out.push({ bbox, file: name, bytes: ch.bytes.length, triangles: ch.triangles });
+      out.push({ bbox: ch.bbox, file: name, bytes: ch.bytes.length, triangles: ch.triangles });
     }
     return out;
   };
@@ -132,7 +132,14 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   // (docs/FORMAT.md, "Floor chunks"): none when nothing else lies above it, or when the cube is
   // one chunk (every view takes it whole anyway).
   const top = leaves.length > 1 ? floorTop(surfaces) : null;
-  const floorLeaves = top === null ? [] : writeChunks(planFloorChunks({ ...chunking, targetBytes: FLOOR_CHUNK_FACTOR * chunking.targetBytes }, top), top);
+  const floorLeaves: ChunkLeaf[] = [];
+  if (top !== null) {
+    for (const ch of floorChunks({ ...chunking, targetBytes: FLOOR_CHUNK_FACTOR * chunking.targetBytes }, top, classOf, grid)) {
+      const name = hashName('b', ch.bytes, 'bin');
+      files.set(name, ch.bytes);
+      floorLeaves.push({ bbox: ch.bbox, file: name, bytes: ch.bytes.length, triangles: ch.triangles });
+    }
+  }
   if (top !== null) log(`floor: ${floorLeaves.length} chunks below z ${top}`);
   lap('floor');
   // Lines from the tGAP as generalized (the smooth build's face ids do not matter to them).

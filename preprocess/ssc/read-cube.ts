@@ -3,7 +3,8 @@
 import { createHash } from 'node:crypto';
 import { promises as fs } from 'node:fs';
 import path from 'node:path';
-import { decodeChunk, type DecodedChunk } from '../../format/chunk.js';
+import type { DecodedChunk } from '../../format/chunk.js';
+import { decodeSurfaceFile } from '../../format/surface-file.js';
 import { decodeFacePage } from '../../format/face-page.js';
 import { expectedDigest, parseIndex, parseSubIndex, type ChunkLeaf, type CubeIndex, type InnerNode, type LineChunkLeaf } from '../../format/cube-index.js';
 import { EVERYWHERE, queryIndex, queryLineChunks, type QueryBox } from '../../format/index-query.js';
@@ -71,7 +72,7 @@ export class CubeReader {
   }
 
   async chunk(leaf: ChunkLeaf): Promise<DecodedChunk> {
-    return this.checkedFile(leaf, 'chunk', decodeChunk);
+    return this.checkedFile(leaf, 'chunk', decodeSurfaceFile);
   }
 
   /**

@@ -144,7 +144,7 @@ export class ChunkResidency {
   /**
    * The chunks view `seq` shows, once the worker has answered it and all are on the GPU; null
    * before. Others on the GPU may meet the view too: at the floor the cube's chunks (its margin)
-   * beside the floor chunks, the same triangles.
+   * beside the floor chunks, the same floor.
    */
   shownChunks(seq: number): ReadonlySet<string> | null {
     return this.shows(seq, this.renderer.store) ? this.visibleSet : null;

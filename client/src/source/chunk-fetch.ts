@@ -1,7 +1,7 @@
 // One chunk from the network to GPU-ready arrays: fetch (with retries), gunzip when the body
 // is still gzip, decode and check it, and compare its SHA-256 with its name (or the index's).
 import { expectedDigest, type ChunkLeaf } from '../../../format/cube-index.js';
-import { decodeChunk } from '../../../format/chunk.js';
+import { decodeSurfaceFile } from '../../../format/surface-file.js';
 import { FormatError } from '../../../format/format-error.js';
 import { gunzipIfNeeded } from './gunzip.js';
 import { sha256Hex } from './sha256.js';
@@ -45,7 +45,7 @@ export async function fetchChunkFile<T>(leaf: { file: string; sha256?: string | 
 }
 
 export async function fetchChunk(leaf: ChunkLeaf, url: string, retry: RetryOptions, signal: AbortSignal): Promise<ChunkPayload> {
-  const { data: chunk, verified } = await fetchChunkFile(leaf, url, retry, signal, decodeChunk);
+  const { data: chunk, verified } = await fetchChunkFile(leaf, url, retry, signal, decodeSurfaceFile);
   // After the hash check: this rewrites the index section in place.
   const triangleCount = keepUpwardTriangles(chunk.positions, chunk.indices);
   const blocks = orderForDrawing(chunk.positions, chunk.indices, triangleCount);

@@ -132,7 +132,7 @@ export class ChunkScheduler {
 
   /**
    * Below the floor's top, the floor chunks a view shows on screen (docs/FORMAT.md, "Floor
-   * chunks"): the same triangles as the cube's chunks there hold among others', in fewer bytes.
+   * chunks"): the floor the cube's chunks there hold among others' triangles, in fewer bytes.
    * The cube's chunks are then the margin: the next view may as well be a zoom out, for which
    * the floor's are no use, as a pan, which the cube's serve too. Null (the cube's on screen
    * too) when the cube's leave fewer bytes to fetch on screen (they are here already, say,

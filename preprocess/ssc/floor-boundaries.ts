@@ -1,0 +1,141 @@
+// The floor's faces as boundaries (the floor chunk file, docs/FORMAT.md): from each face's floor
+// triangles, the sides no other triangle of the face shares, each piece of boundary between two
+// faces once (with the face on its left and the one on its right), joined into runs of points.
+// Taken from the triangles rather than the tGAP's edges, so that the floor chunks bound exactly
+// the area the floor triangles cover, with the same points.
+import type { Surfaces } from './surfaces.js';
+
+export interface FloorBoundary {
+  /** Vertex ids (into the surfaces' xs, ys), in order with `left` on the left. */
+  verts: number[];
+  /** The faces on either side; 0: none among the triangles given (another chunk's, or the edge of the data). */
+  left: number;
+  right: number;
+}
+
+export interface FloorFaces {
+  /** The floor's faces, in order of their first triangle. */
+  faces: number[];
+  /** Per face (as in `faces`): its ground box x0, y0, x1, y1, and its triangles. */
+  box: Float64Array;
+  trianglesOf: number[][];
+  edges: FloorBoundary[];
+}
+
+/** Vertex ids below this make one exact key for a directed side. */
+const VERTEX_KEY = 2 ** 26;
+
+export function floorBoundaries(s: Surfaces, floor: ArrayLike<number>, xs: Float64Array, ys: Float64Array): FloorFaces {
+  if (xs.length > VERTEX_KEY) throw new Error(`floor boundaries: ${xs.length} vertices, at most ${VERTEX_KEY}`);
+  const faceAt = new Map<number, number>();
+  const faces: number[] = [], trianglesOf: number[][] = [];
+  // Each directed side of a floor triangle, and the face of the triangle.
+  const sideFace = new Map<number, number>();
+  for (let k = 0; k < floor.length; k++) {
+    const i = floor[k]!, f = s.upper[i]!;
+    let fi = faceAt.get(f);
+    if (fi === undefined) {
+      faceAt.set(f, (fi = faces.length));
+      faces.push(f);
+      trianglesOf.push([]);
+    }
+    trianglesOf[fi]!.push(i);
+    for (let j = 0; j < 3; j++) sideFace.set(s.v[3 * i + j]! * VERTEX_KEY + s.v[3 * i + ((j + 1) % 3)]!, f);
+  }
+
+  // The boundary sides, each once: a side whose reverse is another face's is kept by the lower face id.
+  const groups = new Map<string, { left: number; right: number; from: number[]; to: number[] }>();
+  for (const [key, f] of sideFace) {
+    const a = Math.floor(key / VERTEX_KEY), b = key % VERTEX_KEY;
+    const other = sideFace.get(b * VERTEX_KEY + a) ?? 0;
+    if (other === f || (other !== 0 && other < f)) continue;
+    const g = `${f} ${other}`;
+    let group = groups.get(g);
+    if (!group) groups.set(g, (group = { left: f, right: other, from: [], to: [] }));
+    group.from.push(a);
+    group.to.push(b);
+  }
+
+  // Sides of one pair of faces joined into runs, broken where the run would branch.
+  const runs: FloorBoundary[] = [];
+  for (const g of groups.values()) {
+    const next = new Map<number, number[]>(), into = new Map<number, number>();
+    g.from.forEach((a, k) => {
+      const l = next.get(a);
+      if (l) l.push(k);
+      else next.set(a, [k]);
+      into.set(g.to[k]!, (into.get(g.to[k]!) ?? 0) + 1);
+    });
+    const through = (v: number): boolean => next.get(v)?.length === 1 && into.get(v) === 1;
+    const used = new Uint8Array(g.from.length);
+    const run = (k0: number): void => {
+      const verts = [g.from[k0]!];
+      let k = k0;
+      for (;;) {
+        used[k] = 1;
+        const v = g.to[k]!;
+        verts.push(v);
+        if (v === verts[0] || !through(v)) break;
+        k = next.get(v)![0]!;
+        if (used[k]) break;
+      }
+      runs.push({ verts, left: g.left, right: g.right });
+    };
+    // Open runs first (from a point that is not passed through), then the closed loops.
+    g.from.forEach((a, k) => { if (!used[k] && !through(a)) run(k); });
+    g.from.forEach((_, k) => { if (!used[k]) run(k); });
+  }
+
+  const edges = chained(runs);
+  const box = new Float64Array(4 * faces.length);
+  for (let fi = 0; fi < faces.length; fi++) box.set([Infinity, Infinity, -Infinity, -Infinity], 4 * fi);
+  for (const ed of edges) {
+    for (const f of [ed.left, ed.right]) {
+      const fi = faceAt.get(f);
+      if (fi === undefined) continue;
+      for (const v of ed.verts) {
+        box[4 * fi] = Math.min(box[4 * fi]!, xs[v]!);
+        box[4 * fi + 1] = Math.min(box[4 * fi + 1]!, ys[v]!);
+        box[4 * fi + 2] = Math.max(box[4 * fi + 2]!, xs[v]!);
+        box[4 * fi + 3] = Math.max(box[4 * fi + 3]!, ys[v]!);
+      }
+    }
+  }
+  return { faces, box, trianglesOf, edges };
+}
+
+/**
+ * The edges in an order where each starts, as far as it can, where the one before it ended
+ * (turned around where that helps): the floor chunk file then stores that point once.
+ */
+function chained(edges: FloorBoundary[]): FloorBoundary[] {
+  const touching = new Map<number, number[]>();
+  edges.forEach((ed, k) => {
+    for (const v of new Set([ed.verts[0]!, ed.verts[ed.verts.length - 1]!])) {
+      const l = touching.get(v);
+      if (l) l.push(k);
+      else touching.set(v, [k]);
+    }
+  });
+  const used = new Uint8Array(edges.length);
+  const out: FloorBoundary[] = [];
+  let next = 0, end = -1, left = -1;
+  while (out.length < edges.length) {
+    // Going on around the same face where one can: the faces then change little from edge to edge.
+    const free = (touching.get(end) ?? []).filter((j) => !used[j]);
+    const leftAfter = (j: number): number => (edges[j]!.verts[0] === end ? edges[j]!.left : edges[j]!.right);
+    let k = free.find((j) => leftAfter(j) === left) ?? free[0] ?? -1;
+    if (k < 0) {
+      while (used[next]) next++;
+      k = next;
+    }
+    used[k] = 1;
+    const ed = edges[k]!;
+    const turned = ed.verts[0] !== end && ed.verts[ed.verts.length - 1] === end;
+    out.push(turned ? { verts: [...ed.verts].reverse(), left: ed.right, right: ed.left } : ed);
+    const last = out[out.length - 1]!;
+    end = last.verts[last.verts.length - 1]!;
+    left = last.left;
+  }
+  return out;
+}
