@@ -36,8 +36,9 @@ precacheAndRoute(self.__WB_MANIFEST, { directoryIndex: 'demo.html', ignoreURLPar
 cleanupOutdatedCaches();
 
 const isIndex = (url: URL): boolean => url.pathname.endsWith('/index.json');
-// c- chunks, l- line chunks, f- face pages, a- attribute pages, i- sub-indexes: their names change with their content.
-const isCubeFile = (url: URL): boolean => /\/[cflai]-[0-9a-f]{8,}\.(?:bin|json)$/.test(url.pathname);
+// c- chunks, b- floor chunks, l- line chunks, f- face pages, a- attribute pages, i- sub-indexes:
+// their names change with their content.
+const isCubeFile = (url: URL): boolean => /\/[cbflai]-[0-9a-f]{8,}\.(?:bin|json)$/.test(url.pathname);
 
 /**
  * The files of the cube that the index about to be used does not refer to are deleted: they
