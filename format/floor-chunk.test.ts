@@ -120,6 +120,23 @@ describe('floor chunk file', () => {
     assert.deepEqual([corners(0), corners(1)].sort(), ['0,0 0,1 1,0', '0,1 1,0 1,1']);
   });
 
+  test('a face earcut cannot cut from its boundary is written with the triangles the build gives for it', async () => {
+    // A boundary that crosses itself: earcut's triangles do not add up to its rings' area.
+    const input: FloorChunkInput = {
+      originX: 0, originY: 0, faces: [4], classes: [0], gridExponent: 0,
+      edges: [{ xy: [0, 0, 4, 0, 4, 4, 2, -2, 0, 4, 0, 0], left: 4, right: 0 }],
+    };
+    assert.throws(() => encodeFloorChunk(input), /earcut cannot cut face 4 from its boundary/);
+    // One corner off every edge: the writer adds it as a point of its own.
+    const given = [0, 0, 4, 0, 1, 1, 1, 1, 4, 0, 4, 4, 0, 0, 1, 1, 0, 4];
+    const { bytes, triangles } = encodeFloorChunk({ ...input, triangles: (face) => (face === 4 ? given : []) });
+    const dv = new DataView(bytes.buffer);
+    assert.deepEqual([dv.getUint32(52, true), dv.getUint32(56, true), triangles], [6 + 1, 3, 3]);
+    const c = await decodeFloorChunk(bytes);
+    assert.deepEqual([...areas(c)], [[4, 2 + 6 + 2]]);
+    assert.deepEqual(facesAt(c, 0.3, 1.6), [4]);
+  });
+
   test('decodeSurfaceFile tells a floor chunk from a triangle chunk by its magic, and refuses anything else', async () => {
     const floor = await decodeSurfaceFile(encodeFloorChunk(square()).bytes, 'b-a.bin');
     assert.equal(floor.triangleCount, encodeFloorChunk(square()).triangles);

@@ -177,28 +177,34 @@ export async function decodeFloorChunk(input: Uint8Array | ArrayBuffer, name = '
   const { xs, ys, byFace, failed } = floorFaceTriangles(c);
   if (failed.length > 0) throw fail(`the boundaries of face ${failed.map((f) => faceIds[f]).join(', ')} do not close into rings that triangulate`);
 
-  // Each face's own vertices: a point on two faces' boundary is a vertex of each.
+  // Each face's own vertices: a point on two faces' boundary is a vertex of each. `seen[v]` is
+  // the last face (+ 1) that took point v, `slot[v]` its vertex there: two passes, one to count.
+  const seen = new Uint32Array(xs.length), slot = new Uint32Array(xs.length);
   let V = 0, T = 0;
-  const vertexOf = byFace.map((tris) => {
-    const local = new Map<number, number>();
-    for (const v of tris) if (!local.has(v)) local.set(v, V++);
+  byFace.forEach((tris, f) => {
+    for (const v of tris) if (seen[v] !== f + 1) { seen[v] = f + 1; V++; }
     T += tris.length / 3;
-    return local;
   });
   const out = new ArrayBuffer(decodedByteLength(V, T));
   const { positions, upper, lower, upperClass, lowerClass } = columnViews(out, V);
   const indexOffset = pad4(V * VERTEX_BYTES);
   const indices = indexSizeFor(V) === 2 ? new Uint16Array(out, indexOffset, 3 * T) : new Uint32Array(out, indexOffset, 3 * T);
   const step = 2 ** e;
-  let i = 0;
+  seen.fill(0);
+  let i = 0, k = 0;
   byFace.forEach((tris, f) => {
-    for (const [v, k] of vertexOf[f]!) {
-      positions[3 * k] = xs[v]! * step;
-      positions[3 * k + 1] = ys[v]! * step;
-      upper[k] = faceIds[f]!;
-      upperClass[k] = faceClasses[f]!;
+    for (const v of tris) {
+      if (seen[v] !== f + 1) {
+        seen[v] = f + 1;
+        slot[v] = k;
+        positions[3 * k] = xs[v]! * step;
+        positions[3 * k + 1] = ys[v]! * step;
+        upper[k] = faceIds[f]!;
+        upperClass[k] = faceClasses[f]!;
+        k++;
+      }
+      indices[i++] = slot[v]!;
     }
-    for (const v of tris) indices[i++] = vertexOf[f]!.get(v)!;
   });
   // z = 0, face 0 below: as the buffer starts.
   lowerClass.fill(NO_CLASS);
