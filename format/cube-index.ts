@@ -120,7 +120,7 @@ const IndexSchema = v.object({
   version: v.picklist(READ_VERSIONS, VERSION_MESSAGE),
   meta: MetaSchema,
   root: InnerSchema,
-  /** Floor chunks: the floor triangles again, for slices below `top` (docs/FORMAT.md, "Floor chunks"). */
+  /** Floor chunks: the floor again, as its faces' boundaries, for slices below `top` (docs/FORMAT.md, "Floor chunks"). */
   floor: v.optional(v.object({ top: v.pipe(num(), v.gtValue(0, 'must be > 0')), root: InnerSchema })),
   /** Line chunks, a flat list (absent when the style has no linear classes). */
   lines: v.optional(v.array(LineLeafSchema)),

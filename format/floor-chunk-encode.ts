@@ -4,7 +4,7 @@
 import { gridExponentFor, gridSteps, POINT_BYTES } from './chunk.js';
 import { encodeRecords } from './chunk-encode.js';
 import {
-  FLOOR_CONTINUES, FLOOR_MAGIC, FLOOR_TRIANGLE_BYTES, FLOOR_VERSION, floorEdgeBytes, floorEdgeLaneSize, floorFaceTriangles, floorSections,
+  FLOOR_CONTINUES, FLOOR_MAGIC, FLOOR_TRIANGLE_BYTES, gridPointKey, FLOOR_VERSION, floorEdgeBytes, floorEdgeLaneSize, floorFaceTriangles, floorSections,
   type FloorContent,
 } from './floor-chunk.js';
 
@@ -36,8 +36,11 @@ export interface FloorChunkInput {
   triangles?: (face: number) => ArrayLike<number>;
 }
 
-/** The file, and the number of triangles a reader cuts from it. */
-export function encodeFloorChunk(c: FloorChunkInput): { bytes: Uint8Array; triangles: number } {
+/**
+ * The file, the number of triangles a reader cuts from it, and its ground box (x0, y0, x1, y1
+ * relative to the origin, as given).
+ */
+export function encodeFloorChunk(c: FloorChunkInput): { bytes: Uint8Array; triangles: number; ground: [number, number, number, number] } {
   const F = c.faces.length, E = c.edges.length;
   const classOf = new Map<number, number>();
   for (let f = 0; f < F; f++) {
@@ -87,10 +90,13 @@ export function encodeFloorChunk(c: FloorChunkInput): { bytes: Uint8Array; trian
     content.edgeCount[k] = n;
     content.left[k] = l;
     content.right[k] = r;
-    for (let j = 2 * skip; j < 2 * n; j++) content.points[2 * at + j - 2 * skip] = q(ed.xy[j]!);
+    for (let j = 2 * skip; j < 2 * n; j++) {
+      const v = q(ed.xy[j]!);
+      if (Number.isNaN(v)) throw new Error(`floor chunk encoder: a point of edge ${k} lies outside the grid`);
+      content.points[2 * at + j - 2 * skip] = v;
+    }
     at += n - skip;
   });
-  if (content.points.some(Number.isNaN)) throw new Error('floor chunk encoder: a point lies outside the grid');
 
   // The faces the reader's earcut cannot cut (from these very grid points) get their triangles,
   // their corners as points, those on no edge after the edges' points.
@@ -98,15 +104,16 @@ export function encodeFloorChunk(c: FloorChunkInput): { bytes: Uint8Array; trian
   const triangles: number[] = [], loose: number[] = [];
   if (cut.failed.length > 0) {
     const pointOf = new Map<number, number>();
-    for (let k = P - 1; k >= 0; k--) pointOf.set(content.points[2 * k]! * 2 ** 26 + content.points[2 * k + 1]!, k);
+    for (let k = P - 1; k >= 0; k--) pointOf.set(gridPointKey(content.points[2 * k]!, content.points[2 * k + 1]!), k);
     for (const f of cut.failed) {
       if (!c.triangles) throw new Error(`floor chunk encoder: earcut cannot cut face ${table[f]} from its boundary`);
       const xy = c.triangles(table[f]!);
+      if (xy.length === 0 || xy.length % 6 !== 0) throw new Error(`floor chunk encoder: face ${table[f]} is given ${xy.length} coordinates for its triangles`);
       for (let t = 0; t < xy.length; t += 6) {
         for (let j = 0; j < 3; j++) {
           const qx = gridSteps(xy[t + 2 * j]!, e), qy = gridSteps(xy[t + 2 * j + 1]!, e);
           if (Number.isNaN(qx) || Number.isNaN(qy)) throw new Error(`floor chunk encoder: a triangle of face ${table[f]} lies outside the grid`);
-          const key = qx * 2 ** 26 + qy;
+          const key = gridPointKey(qx, qy);
           let p = pointOf.get(key);
           if (p === undefined) {
             pointOf.set(key, (p = P + loose.length / 2));
@@ -123,13 +130,14 @@ export function encodeFloorChunk(c: FloorChunkInput): { bytes: Uint8Array; trian
   all.set(loose, 2 * P);
   content.points = all;
   content.triangles = Uint32Array.from(triangles);
+  const failed = new Set(cut.failed);
   let T = triangles.length / 4;
-  cut.byFace.forEach((tris, f) => { if (!cut.failed.includes(f)) T += tris.length / 3; });
+  cut.byFace.forEach((tris, f) => { if (!failed.has(f)) T += tris.length / 3; });
   const bytes = writeFloorChunk({
     originX: c.originX, originY: c.originY, gridExponent: e, ground: [x0, y0, x1, y1],
     faceIds: table, faceClasses: table.map((f) => classOf.get(f)!), content,
   });
-  return { bytes, triangles: T };
+  return { bytes, triangles: T, ground: [x0, y0, x1, y1] };
 }
 
 /** A floor chunk file's fields as they are written. */

@@ -166,6 +166,9 @@ describe('floor chunk file', () => {
     test('counts that cannot hold', async () => {
       await refuses(damaged((dv) => dv.setUint32(12, 1000, true)), /counts out of bounds \(3 faces, 1000 edges, 13 points\)/);
       await refuses(damaged((dv) => dv.setUint32(8, 0, true)), /counts out of bounds|bytes, its header/);
+      // Two billion points: refused before anything is allocated for them.
+      await refuses(damaged((dv) => dv.setUint32(52, 2 ** 31, true)), /counts out of bounds for their streams \(4 edges in \d+ bytes, 2147483648 points in \d+/);
+      await refuses(damaged((dv) => dv.setUint32(56, 5, true)), /counts out of bounds for their streams .*, 5 triangles in 0\)/);
     });
     test('edges naming faces the table does not hold, or points beyond the stream', async () => {
       const content = (edit: (c: FloorFile['content']) => void): Uint8Array => {

@@ -19,6 +19,9 @@ export const FLOOR_HEADER_BYTES = 72;
 /** Bytes of one triangle record: three point indices and the face's table position (u32 each). */
 export const FLOOR_TRIANGLE_BYTES = 16;
 
+/** More than meshoptimizer's vertex codec (version 1) packs into a byte: 1,000 bytes of zeros in about one. */
+const MAX_CODEC_RATIO = 2048;
+
 /** An edge record's flag: the edge starts at the last point of the edge before it, which is not stored again. */
 export const FLOOR_CONTINUES = 1;
 
@@ -61,6 +64,9 @@ export interface FloorContent {
   triangles: Uint32Array;
 }
 
+/** One number for a point in grid steps (|x|, |y| at most 2^24, POSITION_BITS): exact, and equal only for equal points. */
+export const gridPointKey = (x: number, y: number): number => (x + 2 ** 24) * 2 ** 26 + (y + 2 ** 24);
+
 /** One vertex id per distinct grid point, and each id's x, y in grid steps. */
 function distinctPoints(points: Int32Array): { id: Uint32Array; xs: Float64Array; ys: Float64Array } {
   const n = points.length / 2;
@@ -69,8 +75,7 @@ function distinctPoints(points: Int32Array): { id: Uint32Array; xs: Float64Array
   const xs: number[] = [], ys: number[] = [];
   for (let k = 0; k < n; k++) {
     const x = points[2 * k]!, y = points[2 * k + 1]!;
-    // |x|, |y| <= 2^24 (POSITION_BITS): one exact key.
-    const key = (x + 2 ** 24) * 2 ** 26 + (y + 2 ** 24);
+    const key = gridPointKey(x, y);
     let v = seen.get(key);
     if (v === undefined) {
       seen.set(key, (v = xs.length));
@@ -135,6 +140,12 @@ export async function decodeFloorChunk(input: Uint8Array | ArrayBuffer, name = '
   const sec = floorSections(F, u32(60), u32(64), u32(68));
   if (b.byteLength !== sec.end) throw fail(`${b.byteLength} bytes, its header (${F} faces, ${u32(60)} + ${u32(64)} + ${u32(68)} bytes of streams) needs ${sec.end}`);
   const size = floorEdgeLaneSize(P, F);
+  // meshoptimizer's vertex codec packs at most about 1,000 bytes into one (all zeros): a count
+  // beyond what its stream could hold is refused before anything is allocated for it.
+  const holds = (n: number, stride: number, length: number): boolean => n * stride <= MAX_CODEC_RATIO * length;
+  if (!holds(E, floorEdgeBytes(size), u32(60)) || !holds(P, POINT_BYTES, u32(64)) || !holds(Tg, FLOOR_TRIANGLE_BYTES, u32(68)) || (Tg === 0 && u32(68) > 0)) {
+    throw fail(`counts out of bounds for their streams (${E} edges in ${u32(60)} bytes, ${P} points in ${u32(64)}, ${Tg} triangles in ${u32(68)})`);
+  }
   const rawEdges = new Uint8Array(E * floorEdgeBytes(size));
   const rawPoints = new Uint8Array(P * POINT_BYTES);
   const rawTriangles = new Uint8Array(Tg * FLOOR_TRIANGLE_BYTES);

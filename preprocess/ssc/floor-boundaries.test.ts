@@ -50,7 +50,7 @@ function faceLeftOf(side: string): number {
 
 test('every side between two faces, or at the edge of the data, is in one edge, with the faces on its left and right', () => {
   const { s, xs, ys } = floor();
-  const f = floorBoundaries(s, all(s), xs, ys);
+  const f = floorBoundaries(s, all(s));
   assert.deepEqual(f.faces, [1, 2, 3]);
   const got = sides(f.edges, xs, ys);
   // 16 sides around the grid, 4 along x = 2 (between face 1 and faces 2 and 3), 3 more around face 3.
@@ -61,13 +61,12 @@ test('every side between two faces, or at the edge of the data, is in one edge, 
     assert.equal(left, faceLeftOf(side), `${side}: the face on its left`);
     assert.equal(right, faceLeftOf(turned), `${side}: the face on its right`);
   }
-  assert.deepEqual([...f.box.subarray(8, 12)], [102, 201, 103, 202], 'face 3\'s box');
-  assert.deepEqual(f.trianglesOf.map((t) => t.length), [16, 14, 2]);
+  assert.deepEqual([...f.trianglesOf].map(([face, t]) => [face, t.length]), [[1, 16], [2, 14], [3, 2]]);
 });
 
 test('the edges come in an order in which each starts where the one before it ended, where it can', () => {
-  const { s, xs, ys } = floor();
-  const { edges } = floorBoundaries(s, all(s), xs, ys);
+  const { s } = floor();
+  const { edges } = floorBoundaries(s, all(s));
   let joined = 0;
   for (let k = 1; k < edges.length; k++) if (edges[k]!.verts[0] === edges[k - 1]!.verts[edges[k - 1]!.verts.length - 1]) joined++;
   // Face 1's outline, the three runs along x = 2 (faces 2, 3, 2 on their right), face 2's
@@ -76,10 +75,18 @@ test('the edges come in an order in which each starts where the one before it en
   assert.equal(joined, 4);
 });
 
+test('a triangle off the floor, or over a face, is refused', () => {
+  const { s } = floor();
+  s.addTilted(0, 1, 6, 0, 0, 0.5, 1, 0, 'ramp');
+  assert.throws(() => floorBoundaries(s, Uint32Array.of(s.count - 1)), /triangle 32 \(face 1\) is not at z = 0 over face 0/);
+  s.add(0, 1, 6, 0, 1, 2);
+  assert.throws(() => floorBoundaries(s, Uint32Array.of(s.count - 1)), /triangle 33 \(face 1\) is not at z = 0 over face 0/);
+});
+
 test('over part of the triangles, a face cut by the chunk\'s border has none on the other side of the cut', () => {
   const { s, xs, ys } = floor();
   // The bottom row of cells.
-  const f = floorBoundaries(s, Uint32Array.from({ length: 2 * N }, (_, i) => i), xs, ys);
+  const f = floorBoundaries(s, Uint32Array.from({ length: 2 * N }, (_, i) => i));
   const got = sides(f.edges, xs, ys);
   assert.ok(got.includes('1,1>0,1 1|0'), 'the cut through face 1');
   assert.ok(got.includes('2,0>2,1 1|2'));

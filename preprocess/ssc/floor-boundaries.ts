@@ -16,31 +16,29 @@ export interface FloorBoundary {
 export interface FloorFaces {
   /** The floor's faces, in order of their first triangle. */
   faces: number[];
-  /** Per face (as in `faces`): its ground box x0, y0, x1, y1, and its triangles. */
-  box: Float64Array;
-  trianglesOf: number[][];
+  /** Each face's triangles. */
+  trianglesOf: Map<number, number[]>;
   edges: FloorBoundary[];
 }
 
 /** Vertex ids below this make one exact key for a directed side. */
 const VERTEX_KEY = 2 ** 26;
 
-export function floorBoundaries(s: Surfaces, floor: ArrayLike<number>, xs: Float64Array, ys: Float64Array): FloorFaces {
-  if (xs.length > VERTEX_KEY) throw new Error(`floor boundaries: ${xs.length} vertices, at most ${VERTEX_KEY}`);
-  const faceAt = new Map<number, number>();
-  const faces: number[] = [], trianglesOf: number[][] = [];
+export function floorBoundaries(s: Surfaces, floor: ArrayLike<number>): FloorFaces {
+  const trianglesOf = new Map<number, number[]>();
   // Each directed side of a floor triangle, and the face of the triangle.
   const sideFace = new Map<number, number>();
   for (let k = 0; k < floor.length; k++) {
     const i = floor[k]!, f = s.upper[i]!;
-    let fi = faceAt.get(f);
-    if (fi === undefined) {
-      faceAt.set(f, (fi = faces.length));
-      faces.push(f);
-      trianglesOf.push([]);
+    // A floor triangle is flat at z = 0 over face 0: what the floor chunk file can say.
+    if (s.lower[i] !== 0 || s.zMin[i] !== 0 || [0, 1, 2].some((j) => s.z[3 * i + j] !== 0)) throw new Error(`floor boundaries: triangle ${i} (face ${f}) is not at z = 0 over face 0`);
+    let tris = trianglesOf.get(f);
+    if (!tris) trianglesOf.set(f, (tris = []));
+    tris.push(i);
+    for (let j = 0; j < 3; j++) {
+      if (s.v[3 * i + j]! >= VERTEX_KEY) throw new Error(`floor boundaries: vertex ${s.v[3 * i + j]}, at most ${VERTEX_KEY - 1}`);
+      sideFace.set(s.v[3 * i + j]! * VERTEX_KEY + s.v[3 * i + ((j + 1) % 3)]!, f);
     }
-    trianglesOf[fi]!.push(i);
-    for (let j = 0; j < 3; j++) sideFace.set(s.v[3 * i + j]! * VERTEX_KEY + s.v[3 * i + ((j + 1) % 3)]!, f);
   }
 
   // The boundary sides, each once: a side whose reverse is another face's is kept by the lower face id.
@@ -86,22 +84,7 @@ export function floorBoundaries(s: Surfaces, floor: ArrayLike<number>, xs: Float
     g.from.forEach((_, k) => { if (!used[k]) run(k); });
   }
 
-  const edges = chained(runs);
-  const box = new Float64Array(4 * faces.length);
-  for (let fi = 0; fi < faces.length; fi++) box.set([Infinity, Infinity, -Infinity, -Infinity], 4 * fi);
-  for (const ed of edges) {
-    for (const f of [ed.left, ed.right]) {
-      const fi = faceAt.get(f);
-      if (fi === undefined) continue;
-      for (const v of ed.verts) {
-        box[4 * fi] = Math.min(box[4 * fi]!, xs[v]!);
-        box[4 * fi + 1] = Math.min(box[4 * fi + 1]!, ys[v]!);
-        box[4 * fi + 2] = Math.max(box[4 * fi + 2]!, xs[v]!);
-        box[4 * fi + 3] = Math.max(box[4 * fi + 3]!, ys[v]!);
-      }
-    }
-  }
-  return { faces, box, trianglesOf, edges };
+  return { faces: [...trianglesOf.keys()], trianglesOf, edges: chained(runs) };
 }
 
 /**

@@ -21,29 +21,27 @@ export function floorChunks(inp: ChunkingInput, top: number, classOf: (face: num
   for (let c = 0; c + 1 < plan.start.length; c++) {
     const tris = plan.order.subarray(plan.start[c], plan.start[c + 1]);
     if (tris.length === 0) continue;
-    // The faces' pieces in this chunk: their sides that no other of the chunk's triangles of the face share.
-    const ff = floorBoundaries(s, tris, inp.xs, inp.ys);
-    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
-    for (let fi = 0; fi < ff.faces.length; fi++) {
-      x0 = Math.min(x0, ff.box[4 * fi]!); y0 = Math.min(y0, ff.box[4 * fi + 1]!);
-      x1 = Math.max(x1, ff.box[4 * fi + 2]!); y1 = Math.max(y1, ff.box[4 * fi + 3]!);
-    }
+    // The faces' parts in this chunk: their sides that no other of the chunk's triangles of the face share.
+    const ff = floorBoundaries(s, tris);
     // A whole-unit origin, as the triangle chunks have (assemble-chunk.ts).
-    const ox = Math.floor(x0), oy = Math.floor(y0);
+    let ox = Infinity, oy = Infinity;
+    for (const ed of ff.edges) for (const v of ed.verts) { ox = Math.min(ox, inp.xs[v]!); oy = Math.min(oy, inp.ys[v]!); }
+    ox = Math.floor(ox);
+    oy = Math.floor(oy);
     const edges: FloorEdgeInput[] = ff.edges.map((ed) => {
       const xy = new Float64Array(2 * ed.verts.length);
       ed.verts.forEach((v, k) => { xy[2 * k] = inp.xs[v]! - ox; xy[2 * k + 1] = inp.ys[v]! - oy; });
       return { xy, left: ed.left, right: ed.right };
     });
-    const { bytes, triangles } = encodeFloorChunk({
+    const { bytes, triangles, ground } = encodeFloorChunk({
       originX: ox, originY: oy, faces: ff.faces, classes: ff.faces.map(classOf), edges, gridExponent,
       // The face's own floor triangles where earcut fails on the grid's points.
-      triangles: (f) => ff.trianglesOf[ff.faces.indexOf(f)]!.flatMap((i) => [0, 1, 2].flatMap((j) => {
+      triangles: (f) => ff.trianglesOf.get(f)!.flatMap((i) => [0, 1, 2].flatMap((j) => {
         const v = s.v[3 * i + j]!;
         return [inp.xs[v]! - ox, inp.ys[v]! - oy];
       })),
     });
-    out.push({ bytes, triangles, bbox: [x0, y0, 0, x1, y1, top] });
+    out.push({ bytes, triangles, bbox: [ox + ground[0], oy + ground[1], 0, ox + ground[2], oy + ground[3], top] });
   }
   return out;
 }
