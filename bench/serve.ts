@@ -12,7 +12,7 @@ import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { brotliCompressSync, gzipSync } from 'node:zlib';
-import { hashedName } from '../format/cube-index.js';
+import { hashName } from '../preprocess/ssc/build-cube.js';
 import { NGINX_BIN, startNginx } from '../server/nginx-process.js';
 import { median, root as repoRoot } from './datasets.js';
 
@@ -57,7 +57,7 @@ function writeFiles(dir: string): { index: string; chunk: string; sizes: string 
     floats[i] = 190_000 + ((x >>> 0) / 2 ** 32) * 5000;
   }
   const chunkBytes = Buffer.from(floats.buffer);
-  const chunk = hashedName('c', createHash('sha256').update(chunkBytes).digest('hex'), 'bin');
+  const chunk = hashName('c', chunkBytes, 'bin');
   const leaves = Array.from({ length: 150 }, (_, i) => ({ bbox: [i, i, 0, i + 1, i + 1, 1], file: chunk, bytes: chunkBytes.length, triangles: 9000 + i, sha256: createHash('sha256').update(String(i)).digest('hex') }));
   const index = Buffer.from(JSON.stringify({ format: 'ssc-index', version: 1, root: { bbox: [0, 0, 0, 150, 150, 1], children: leaves } }));
   const s1 = put('index.json', index);

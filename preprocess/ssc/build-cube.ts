@@ -13,7 +13,7 @@ import { proj4Definition } from '../io/crs-definition.js';
 import { PHASES, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
 import { assembleChunk } from './assemble-chunk.js';
 import { chooseGrid, coarsestGrid } from './position-grid.js';
-import { floorTop, planChunks, type ChunkPlan } from './chunking.js';
+import { floorTop, planChunks } from './chunking.js';
 import { floorChunks } from './floor-chunks.js';
 import { encodeAttributePage, ATTRIBUTE_PAGE_SIZE } from '../../format/attribute-page.js';
 import { encodeFacePage, FACE_PAGE_SIZE } from '../../format/face-page.js';
@@ -105,29 +105,28 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const plan = planChunks(chunking);
   lap('plan');
   const files = new Map<string, Uint8Array>();
+  /** A file of the cube kept under its name by hash (hashName); returns the name. */
+  const put = (kind: string, bytes: Uint8Array, ext = 'bin'): string => {
+    const name = hashName(kind, bytes, ext);
+    files.set(name, bytes);
+    return name;
+  };
   const classOf = (f: number): number => faces[f]!.classIndex;
   const chunkCount = plan.start.length - 1;
-  const trisOf = (p: ChunkPlan, c: number): Uint32Array => p.order.subarray(p.start[c], p.start[c + 1]);
+  const trisOf = (c: number): Uint32Array => plan.order.subarray(plan.start[c], plan.start[c + 1]);
   // The cube's grid, tried on every chunk up to 32 of them, spread evenly (position-grid.ts).
   const sampled = Math.min(32, chunkCount);
   const sample = Array.from({ length: sampled }, (_, i) => Math.floor((i * chunkCount) / sampled));
   const grid = chooseGrid(coarsest, (e) =>
-    sample.reduce((sum, c) => sum + (trisOf(plan, c).length > 0 ? assembleChunk(surfaces, trisOf(plan, c), surfaces.xs, surfaces.ys, classOf, e).bytes.length : 0), 0));
+    sample.reduce((sum, c) => sum + (trisOf(c).length > 0 ? assembleChunk(surfaces, trisOf(c), surfaces.xs, surfaces.ys, classOf, e).bytes.length : 0), 0));
   log(`position grid: 2^${grid}`);
-  /** The plan's chunks written. */
-  const writeChunks = (p: ChunkPlan): ChunkLeaf[] => {
-    const out: ChunkLeaf[] = [];
-    for (let c = 0; c + 1 < p.start.length; c++) {
-      const tris = trisOf(p, c);
-      if (tris.length === 0) continue;
-      const ch = assembleChunk(surfaces, tris, surfaces.xs, surfaces.ys, classOf, grid);
-      const name = hashName('c', ch.bytes, 'bin');
-      files.set(name, ch.bytes);
-      out.push({ bbox: ch.bbox, file: name, bytes: ch.bytes.length, triangles: ch.triangles });
-    }
-    return out;
-  };
-  const leaves = writeChunks(plan);
+  const leaves: ChunkLeaf[] = [];
+  for (let c = 0; c < chunkCount; c++) {
+    const tris = trisOf(c);
+    if (tris.length === 0) continue;
+    const ch = assembleChunk(surfaces, tris, surfaces.xs, surfaces.ys, classOf, grid);
+    leaves.push({ bbox: ch.bbox, file: put('c', ch.bytes), bytes: ch.bytes.length, triangles: ch.triangles });
+  }
   lap('chunks');
   // The floor once more, in chunks of its own for the views below every other surface
   // (docs/FORMAT.md, "Floor chunks"): none when nothing else lies above it, or when the cube is
@@ -136,38 +135,30 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const floorLeaves: ChunkLeaf[] = [];
   if (top !== null) {
     for (const ch of floorChunks({ ...chunking, targetBytes: FLOOR_CHUNK_FACTOR * chunking.targetBytes }, top, classOf, grid)) {
-      const name = hashName('b', ch.bytes, 'bin');
-      files.set(name, ch.bytes);
-      floorLeaves.push({ bbox: ch.bbox, file: name, bytes: ch.bytes.length, triangles: ch.triangles });
+      floorLeaves.push({ bbox: ch.bbox, file: put('b', ch.bytes), bytes: ch.bytes.length, triangles: ch.triangles });
     }
+    log(`floor: ${floorLeaves.length} chunks below z ${top}`);
   }
-  if (top !== null) log(`floor: ${floorLeaves.length} chunks below z ${top}`);
   lap('floor');
   // Lines from the tGAP as generalized (the smooth build's face ids do not matter to them).
   const lineStyle = parseStyle(t.meta.style, `${t.meta.source}: the tGAP's style`);
   const lines = lineStyle.lineRules.length > 0 ? cubeLines(t, lineStyle) : null;
   const lineLeaves: LineChunkLeaf[] = [];
   for (const ch of lines ? lineChunks(lines, view, grid) : []) {
-    const name = hashName('l', ch.bytes, 'bin');
-    files.set(name, ch.bytes);
-    lineLeaves.push({ bbox: ch.bbox, file: name, bytes: ch.bytes.length, lines: ch.lines });
+    lineLeaves.push({ bbox: ch.bbox, file: put('l', ch.bytes), bytes: ch.bytes.length, lines: ch.lines });
   }
   if (lines) log(`lines: ${lines.length} in ${lineLeaves.length} chunks`);
   lap('lines');
   const facePages: { first: number; file: string }[] = [];
   for (let first = 0; first < faces.length; first += FACE_PAGE_SIZE) {
     const bytes = encodeFacePage(faces, first, Math.min(FACE_PAGE_SIZE, faces.length - first));
-    const name = hashName('f', bytes, 'bin');
-    files.set(name, bytes);
-    facePages.push({ first, file: name });
+    facePages.push({ first, file: put('f', bytes) });
   }
   const attributePages: { first: number; file: string }[] = [];
   const attrs = t.meta.attributes;
   for (let first = 0; first < attrs.length; first += ATTRIBUTE_PAGE_SIZE) {
     const bytes = encodeAttributePage(attrs, first);
-    const name = hashName('a', bytes, 'json');
-    files.set(name, bytes);
-    attributePages.push({ first, file: name });
+    attributePages.push({ first, file: put('a', bytes, 'json') });
   }
   const subIndexBytes = opts.subIndexBytes ?? 128 * 1024;
   const tree = splitTree(packTree(leaves), subIndexBytes, (json) => hashName('i', json, 'json'));
