@@ -34,11 +34,11 @@ export function ringArea2(ids: ArrayLike<number>, xs: ArrayLike<number>, ys: Arr
  * degenerate configuration).
  */
 export function earcutFace(edges: FaceEdge[], xs: ArrayLike<number>, ys: ArrayLike<number>, out: number[]): boolean {
-  const rings = assembleRings(edges, xs, ys);
+  const { rings, areas } = faceRings(edges, xs, ys);
   let expected2 = 0;
-  for (const r of rings) expected2 += ringArea2(r, xs, ys);
+  for (const a of areas) expected2 += a;
   const before = out.length;
-  const got2 = earcutRings(rings, xs, ys, out);
+  const got2 = earcutRings(rings, xs, ys, out, areas);
   if (Math.abs(got2 - expected2) <= 1e-9 * Math.abs(expected2) + 1e-12) return true;
   out.length = before;
   return false;
@@ -47,40 +47,67 @@ export function earcutFace(edges: FaceEdge[], xs: ArrayLike<number>, ys: ArrayLi
 /** Twice the area of the face bounded by `edges` (its rings', holes taken off). */
 export function faceArea2(edges: FaceEdge[], xs: ArrayLike<number>, ys: ArrayLike<number>): number {
   let a2 = 0;
-  for (const r of assembleRings(edges, xs, ys)) a2 += ringArea2(r, xs, ys);
+  for (const a of faceRings(edges, xs, ys).areas) a2 += a;
   return a2;
 }
 
 /** Closed rings of vertex ids (last != first), each simple, outer counterclockwise, holes clockwise. */
 export function assembleRings(edges: FaceEdge[], xs: ArrayLike<number>, ys: ArrayLike<number>): number[][] {
-  const chains = edges.map((e) => (e.forward ? Array.from(e.verts) : Array.from(e.verts).reverse()));
-  const starting = new Map<number, number[]>();
-  chains.forEach((c, i) => {
-    let l = starting.get(c[0]!);
-    if (!l) starting.set(c[0]!, (l = []));
-    l.push(i);
-  });
-  const used = new Uint8Array(chains.length);
-  const walks: number[][] = [];
-  for (let i0 = 0; i0 < chains.length; i0++) {
+  return faceRings(edges, xs, ys).rings;
+}
+
+/** Vertex `k` of an edge, counted in the face's direction. */
+const vertexAt = (e: FaceEdge, k: number): number => (e.forward ? e.verts[k]! : e.verts[e.verts.length - 1 - k]!);
+
+/**
+ * A face of at most this many edges finds the edge that goes on from a vertex by a scan, not a
+ * map: most faces have a few, and the map cost more than the scan (the map reads the floor
+ * chunks, whose speed the first map waits for).
+ */
+const SCAN_EDGES = 16;
+
+/** assembleRings, with each ring's twice signed area (ringArea2), worked out once. */
+function faceRings(edges: FaceEdge[], xs: ArrayLike<number>, ys: ArrayLike<number>): { rings: number[][]; areas: number[] } {
+  const n = edges.length;
+  const firstOf: number[] = [];
+  for (const e of edges) firstOf.push(vertexAt(e, 0));
+  let starting: Map<number, number[]> | null = null;
+  if (n > SCAN_EDGES) {
+    starting = new Map();
+    for (let i = 0; i < n; i++) {
+      let l = starting.get(firstOf[i]!);
+      if (!l) starting.set(firstOf[i]!, (l = []));
+      l.push(i);
+    }
+  }
+  const used = new Uint8Array(n);
+  const rings: number[][] = [], areas: number[] = [];
+  const cands: number[] = [];
+  for (let i0 = 0; i0 < n; i0++) {
     if (used[i0]) continue;
     const walk: number[] = [];
     let i = i0;
-    for (let guard = 0; guard <= chains.length; guard++) {
+    for (let guard = 0; guard <= n; guard++) {
       used[i] = 1;
-      const c = chains[i]!;
-      for (let k = 0; k < c.length - 1; k++) walk.push(c[k]!);
-      const v = c[c.length - 1]!;
-      const cands = (starting.get(v) ?? []).filter((j) => !used[j] || j === i0);
+      const e = edges[i]!, len = e.verts.length;
+      for (let k = 0; k < len - 1; k++) walk.push(vertexAt(e, k));
+      const v = vertexAt(e, len - 1);
+      cands.length = 0;
+      if (starting) {
+        for (const j of starting.get(v) ?? []) if (!used[j] || j === i0) cands.push(j);
+      } else {
+        for (let j = 0; j < n; j++) if (firstOf[j] === v && (!used[j] || j === i0)) cands.push(j);
+      }
       if (cands.length === 0) break;
       // The face's next boundary piece is the first one clockwise from the way we came in.
-      const prev = c[c.length - 2]!;
-      const back = Math.atan2(ys[prev]! - ys[v]!, xs[prev]! - xs[v]!);
-      let best = cands[0]!, bestTurn = Infinity;
+      let best = cands[0]!;
       if (cands.length > 1) {
+        const prev = vertexAt(e, len - 2);
+        const back = Math.atan2(ys[prev]! - ys[v]!, xs[prev]! - xs[v]!);
+        let bestTurn = Infinity;
         for (const j of cands) {
-          const n = chains[j]![1]!;
-          let turn = back - Math.atan2(ys[n]! - ys[v]!, xs[n]! - xs[v]!);
+          const nx = vertexAt(edges[j]!, 1);
+          let turn = back - Math.atan2(ys[nx]! - ys[v]!, xs[nx]! - xs[v]!);
           while (turn <= 0) turn += 2 * Math.PI;
           if (turn < bestTurn || (turn === bestTurn && j < best)) {
             bestTurn = turn;
@@ -91,37 +118,79 @@ export function assembleRings(edges: FaceEdge[], xs: ArrayLike<number>, ys: Arra
       if (best === i0) break;
       i = best;
     }
-    walks.push(walk);
+    splitWalk(walk, xs, ys, rings, areas);
   }
-  // A walk that passes a vertex twice is two rings touching there.
-  const rings: number[][] = [];
-  for (const w of walks) {
-    const stack: number[] = [];
-    const at = new Map<number, number>();
-    for (const v of w) {
-      const k = at.get(v);
-      if (k !== undefined) {
-        const loop = stack.splice(k + 1);
-        for (const u of loop) at.delete(u);
-        if (loop.length >= 2) rings.push([v, ...loop]);
-        continue;
-      }
-      at.set(v, stack.length);
-      stack.push(v);
-    }
-    if (stack.length >= 3) rings.push(stack);
-  }
-  return rings.filter((r) => r.length >= 3 && ringArea2(r, xs, ys) !== 0);
+  return { rings, areas };
 }
 
-/** Triangulates rings with earcut into counterclockwise triangles (vertex ids appended to `out`); returns twice the area of what it produced. */
-export function earcutRings(rings: number[][], xs: ArrayLike<number>, ys: ArrayLike<number>, out: number[]): number {
+/** Marks for `repeats`: a vertex is marked when `mark[v] === markGen` (no clearing between calls). */
+let mark = new Uint32Array(0);
+let markGen = 0;
+
+/** Whether a vertex id occurs twice in `w`. */
+function repeats(w: number[]): boolean {
+  let top = 0;
+  for (const v of w) if (v >= top) top = v + 1;
+  if (top > mark.length) {
+    mark = new Uint32Array(Math.max(top, 2 * mark.length));
+    markGen = 0;
+  }
+  if (++markGen === 0xffffffff) {
+    mark.fill(0);
+    markGen = 1;
+  }
+  for (const v of w) {
+    if (mark[v] === markGen) return true;
+    mark[v] = markGen;
+  }
+  return false;
+}
+
+/** Keeps a ring of 3 vertices or more and some area, with that area. */
+function keepRing(r: number[], xs: ArrayLike<number>, ys: ArrayLike<number>, rings: number[][], areas: number[]): void {
+  if (r.length < 3) return;
+  const a2 = ringArea2(r, xs, ys);
+  if (a2 === 0) return;
+  rings.push(r);
+  areas.push(a2);
+}
+
+/** The rings of a walk: one that passes a vertex twice is two rings touching there. */
+function splitWalk(w: number[], xs: ArrayLike<number>, ys: ArrayLike<number>, rings: number[][], areas: number[]): void {
+  if (!repeats(w)) {
+    keepRing(w, xs, ys, rings, areas);
+    return;
+  }
+  const stack: number[] = [];
+  const at = new Map<number, number>();
+  for (const v of w) {
+    const k = at.get(v);
+    if (k !== undefined) {
+      const loop = stack.splice(k + 1);
+      for (const u of loop) at.delete(u);
+      if (loop.length >= 2) keepRing([v, ...loop], xs, ys, rings, areas);
+      continue;
+    }
+    at.set(v, stack.length);
+    stack.push(v);
+  }
+  keepRing(stack, xs, ys, rings, areas);
+}
+
+/**
+ * Triangulates rings with earcut into counterclockwise triangles (vertex ids appended to `out`);
+ * returns twice the area of what it produced. `areas`: each ring's ringArea2, when known.
+ */
+export function earcutRings(rings: number[][], xs: ArrayLike<number>, ys: ArrayLike<number>, out: number[], areas?: ArrayLike<number>): number {
+  // Most faces are one ring.
+  if (rings.length === 1) return (areas ? areas[0]! : ringArea2(rings[0]!, xs, ys)) > 0 ? cutRings(rings[0]!, [], xs, ys, out) : 0;
   const outers: { ring: number[]; area2: number; holes: number[][]; bbox: number[]; vertices?: Set<number> }[] = [];
   const holes: number[][] = [];
-  for (const r of rings) {
-    const a2 = ringArea2(r, xs, ys);
-    if (a2 > 0) outers.push({ ring: r, area2: a2, holes: [], bbox: bboxOf(r, xs, ys) });
-    else holes.push(r);
+  for (let r = 0; r < rings.length; r++) {
+    const ring = rings[r]!;
+    const a2 = areas ? areas[r]! : ringArea2(ring, xs, ys);
+    if (a2 > 0) outers.push({ ring, area2: a2, holes: [], bbox: bboxOf(ring, xs, ys) });
+    else holes.push(ring);
   }
   if (outers.length === 0) return 0;
   for (const h of holes) {
@@ -144,31 +213,43 @@ export function earcutRings(rings: number[][], xs: ArrayLike<number>, ys: ArrayL
     (best ?? outers[0]!).holes.push(h);
   }
   let total2 = 0;
-  for (const o of outers) {
-    const ids: number[] = [...o.ring];
-    const holeIndex: number[] = [];
-    for (const h of o.holes) {
+  for (const o of outers) total2 += cutRings(o.ring, o.holes, xs, ys, out);
+  return total2;
+}
+
+/** earcut's triangles of one outer ring with its holes, counterclockwise (appended to `out`); twice their area. */
+function cutRings(ring: number[], holes: number[][], xs: ArrayLike<number>, ys: ArrayLike<number>, out: number[]): number {
+  let ids = ring;
+  const holeIndex: number[] = [];
+  if (holes.length > 0) {
+    ids = ring.slice();
+    for (const h of holes) {
       holeIndex.push(ids.length);
-      ids.push(...h);
+      for (const v of h) ids.push(v);
     }
-    const x0 = o.bbox[0]!, y0 = o.bbox[1]!;
-    const flat = new Float64Array(ids.length * 2);
-    ids.forEach((v, i) => {
-      flat[2 * i] = xs[v]! - x0;
-      flat[2 * i + 1] = ys[v]! - y0;
-    });
-    const tri = earcut(flat, holeIndex, 2);
-    for (let t = 0; t < tri.length; t += 3) {
-      const a = ids[tri[t]!]!, b = ids[tri[t + 1]!]!, c = ids[tri[t + 2]!]!;
-      // robust-predicates: negative for counterclockwise.
-      const o2 = -orient2d(xs[a]!, ys[a]!, xs[b]!, ys[b]!, xs[c]!, ys[c]!);
-      if (o2 === 0) continue;
-      const ax = xs[a]! - x0, ay = ys[a]! - y0;
-      const area2 = Math.abs((xs[b]! - x0 - ax) * (ys[c]! - y0 - ay) - (xs[c]! - x0 - ax) * (ys[b]! - y0 - ay));
-      total2 += area2;
-      if (o2 > 0) out.push(a, b, c);
-      else out.push(a, c, b);
-    }
+  }
+  // Relative to the ring's lowest corner, so that earcut works on small numbers.
+  let x0 = Infinity, y0 = Infinity;
+  for (const v of ring) {
+    if (xs[v]! < x0) x0 = xs[v]!;
+    if (ys[v]! < y0) y0 = ys[v]!;
+  }
+  const flat = new Float64Array(ids.length * 2);
+  for (let i = 0; i < ids.length; i++) {
+    flat[2 * i] = xs[ids[i]!]! - x0;
+    flat[2 * i + 1] = ys[ids[i]!]! - y0;
+  }
+  const tri = earcut(flat, holeIndex, 2);
+  let total2 = 0;
+  for (let t = 0; t < tri.length; t += 3) {
+    const a = ids[tri[t]!]!, b = ids[tri[t + 1]!]!, c = ids[tri[t + 2]!]!;
+    // robust-predicates: negative for counterclockwise.
+    const o2 = -orient2d(xs[a]!, ys[a]!, xs[b]!, ys[b]!, xs[c]!, ys[c]!);
+    if (o2 === 0) continue;
+    const ax = xs[a]! - x0, ay = ys[a]! - y0;
+    total2 += Math.abs((xs[b]! - x0 - ax) * (ys[c]! - y0 - ay) - (xs[c]! - x0 - ax) * (ys[b]! - y0 - ay));
+    if (o2 > 0) out.push(a, b, c);
+    else out.push(a, c, b);
   }
   return total2;
 }

@@ -71,20 +71,32 @@ export const gridPointKey = (x: number, y: number): number => (x + 2 ** 24) * 2 
 function distinctPoints(points: Int32Array): { id: Uint32Array; xs: Float64Array; ys: Float64Array } {
   const n = points.length / 2;
   const id = new Uint32Array(n);
-  const seen = new Map<number, number>();
-  const xs: number[] = [], ys: number[] = [];
+  const xs = new Float64Array(n), ys = new Float64Array(n);
+  // Open addressing over a power-of-two table at most half full: a point's slot holds its id + 1.
+  let size = 2;
+  while (size < 2 * n) size *= 2;
+  const slots = new Uint32Array(size);
+  let m = 0;
   for (let k = 0; k < n; k++) {
     const x = points[2 * k]!, y = points[2 * k + 1]!;
-    const key = gridPointKey(x, y);
-    let v = seen.get(key);
-    if (v === undefined) {
-      seen.set(key, (v = xs.length));
-      xs.push(x);
-      ys.push(y);
+    let h = (Math.imul(x, 0x9e3779b1) ^ Math.imul(y, 0x85ebca77)) & (size - 1);
+    for (;;) {
+      const s = slots[h]!;
+      if (s === 0) {
+        slots[h] = ++m;
+        xs[m - 1] = x;
+        ys[m - 1] = y;
+        id[k] = m - 1;
+        break;
+      }
+      if (xs[s - 1] === x && ys[s - 1] === y) {
+        id[k] = s - 1;
+        break;
+      }
+      h = (h + 1) & (size - 1);
     }
-    id[k] = v;
   }
-  return { id, xs: Float64Array.from(xs), ys: Float64Array.from(ys) };
+  return { id, xs: xs.subarray(0, m), ys: ys.subarray(0, m) };
 }
 
 /**
@@ -192,10 +204,11 @@ export async function decodeFloorChunk(input: Uint8Array | ArrayBuffer, name = '
   // the last face (+ 1) that took point v, `slot[v]` its vertex there: two passes, one to count.
   const seen = new Uint32Array(xs.length), slot = new Uint32Array(xs.length);
   let V = 0, T = 0;
-  byFace.forEach((tris, f) => {
+  for (let f = 0; f < F; f++) {
+    const tris = byFace[f]!;
     for (const v of tris) if (seen[v] !== f + 1) { seen[v] = f + 1; V++; }
     T += tris.length / 3;
-  });
+  }
   const out = new ArrayBuffer(decodedByteLength(V, T));
   const { positions, upper, lower, upperClass, lowerClass } = columnViews(out, V);
   const indexOffset = pad4(V * VERTEX_BYTES);
@@ -203,7 +216,8 @@ export async function decodeFloorChunk(input: Uint8Array | ArrayBuffer, name = '
   const step = 2 ** e;
   seen.fill(0);
   let i = 0, k = 0;
-  byFace.forEach((tris, f) => {
+  for (let f = 0; f < F; f++) {
+    const tris = byFace[f]!;
     for (const v of tris) {
       if (seen[v] !== f + 1) {
         seen[v] = f + 1;
@@ -216,7 +230,7 @@ export async function decodeFloorChunk(input: Uint8Array | ArrayBuffer, name = '
       }
       indices[i++] = slot[v]!;
     }
-  });
+  }
   // z = 0, face 0 below: as the buffer starts.
   lowerClass.fill(NO_CLASS);
   return {
