@@ -1,11 +1,12 @@
-// The floor chunk file's encoder (docs/FORMAT.md, "Floor chunk file", version 1), beside the
+// The floor chunk file's encoder (docs/FORMAT.md, "Floor chunk file", version 2, or 1 where a
+// cycle of edges does not bound one face), beside the
 // decoder in floor-chunk.ts: a file of its own so that the map does not load the encoder's
 // WebAssembly. Used by the build (Node). Same input, same bytes.
 import { gridExponentFor, gridSteps, POINT_BYTES } from './chunk.js';
 import { encodeRecords } from './chunk-encode.js';
 import {
-  FLOOR_CONTINUES, FLOOR_MAGIC, FLOOR_TRIANGLE_BYTES, gridPointKey, FLOOR_VERSION, floorEdgeBytes, floorEdgeLaneSize, floorFaceTriangles, floorSections,
-  type FloorContent,
+  cycleFaces, distinctPoints, FLOOR_CONTINUES, FLOOR_CYCLE_BYTES, FLOOR_FACE_BYTES, FLOOR_MAGIC, FLOOR_TRIANGLE_BYTES, floorCycles, floorEdgeBytes,
+  floorEdgeLaneSize, floorFaceTriangles, floorSections, gridPointKey, type FloorContent,
 } from './floor-chunk.js';
 
 /** A piece of boundary: x, y pairs relative to the origin, the faces on its left and right (ids). */
@@ -49,7 +50,8 @@ export function encodeFloorChunk(c: FloorChunkInput): { bytes: Uint8Array; trian
   }
   // The face table in the order the edges first name the faces: the faces an edge names are
   // then mostly the last few, or the next, which the codec stores in few bits.
-  const local = new Map<number, number>(), table: number[] = [];
+  const local = new Map<number, number>();
+  let table: number[] = [];
   for (const ed of c.edges) {
     for (const f of [ed.left, ed.right]) {
       if (classOf.has(f) && !local.has(f)) {
@@ -98,9 +100,23 @@ export function encodeFloorChunk(c: FloorChunkInput): { bytes: Uint8Array; trian
     at += n - skip;
   });
 
+  // The face table in the order the cycles first name the faces (version 2): each cycle's face
+  // is then mostly the next, which the codec stores in few bits.
+  const pts = distinctPoints(content.points);
+  const faces = cycleFaces(content, floorCycles(content, pts));
+  if (faces) {
+    const place = new Uint32Array(F + 1), order: number[] = [];
+    for (const f of faces) if (f > 0 && place[f] === 0) place[f] = order.push(table[f - 1]!);
+    for (let k = 0; k < E; k++) {
+      content.left[k] = place[content.left[k]!]!;
+      content.right[k] = place[content.right[k]!]!;
+    }
+    table = order;
+  }
+
   // The faces the reader's earcut cannot cut (from these very grid points) get their triangles,
   // their corners as points, those on no edge after the edges' points.
-  const cut = floorFaceTriangles(content);
+  const cut = floorFaceTriangles(content, pts);
   const triangles: number[] = [], loose: number[] = [];
   if (cut.failed.length > 0) {
     const pointOf = new Map<number, number>();
@@ -156,29 +172,46 @@ export interface FloorFile {
   content: FloorContent;
 }
 
-/** The bytes of a floor chunk file (docs/FORMAT.md), as given: encodeFloorChunk makes what it is given. */
+/**
+ * The bytes of a floor chunk file (docs/FORMAT.md), as given: encodeFloorChunk makes what it is
+ * given. Version 2 where each cycle of the edges bounds one face (the reader finds the faces from
+ * the cycles), else version 1 (each edge names its faces).
+ */
 export function writeFloorChunk(f: FloorFile): Uint8Array {
   const c = f.content, F = c.faceCount, E = c.edgeStart.length, P = c.points.length / 2, Tg = c.triangles.length / 4;
-  const size = floorEdgeLaneSize(P, F);
-  const records = size === 2 ? new Uint16Array(4 * E) : new Uint32Array(4 * E);
+  const faces = cycleFaces(c, floorCycles(c, distinctPoints(c.points)));
+  const version = faces ? 2 : 1;
+  const size = floorEdgeLaneSize(P, F, version), lanes = version === 1 ? 4 : 2;
+  const records = size === 2 ? new Uint16Array(lanes * E) : new Uint32Array(lanes * E);
   let end = 0;
   for (let k = 0; k < E; k++) {
     const skip = k > 0 && c.edgeStart[k] === end - 1 ? 1 : 0;
     if (c.edgeStart[k] !== end - skip) throw new Error(`floor chunk writer: edge ${k} starts at point ${c.edgeStart[k]}, not after the edge before it (${end})`);
-    records[4 * k] = c.edgeCount[k]! - skip;
-    records[4 * k + 1] = c.left[k]!;
-    records[4 * k + 2] = c.right[k]!;
-    records[4 * k + 3] = skip ? FLOOR_CONTINUES : 0;
+    records[lanes * k] = c.edgeCount[k]! - skip;
+    if (version === 1) {
+      records[4 * k + 1] = c.left[k]!;
+      records[4 * k + 2] = c.right[k]!;
+    }
+    records[lanes * k + lanes - 1] = skip ? FLOOR_CONTINUES : 0;
     end = c.edgeStart[k]! + c.edgeCount[k]!;
   }
-  const edgeStream = encodeRecords(records.buffer, E, floorEdgeBytes(size));
+  const faceRecords = new Uint32Array(2 * F);
+  for (let i = 0; i < F; i++) {
+    faceRecords[2 * i] = f.faceIds[i]!;
+    faceRecords[2 * i + 1] = f.faceClasses[i]!;
+  }
+  const faceStream = faces ? encodeRecords(faceRecords.buffer, F, FLOOR_FACE_BYTES) : new Uint8Array(0);
+  const cycleStream = faces ? encodeRecords(faces.buffer, faces.length, FLOOR_CYCLE_BYTES) : new Uint8Array(0);
+  const edgeStream = encodeRecords(records.buffer, E, floorEdgeBytes(size, version));
   const pointStream = encodeRecords(c.points.buffer, P, POINT_BYTES);
   const triangleStream = Tg > 0 ? encodeRecords(c.triangles.buffer, Tg, FLOOR_TRIANGLE_BYTES) : new Uint8Array(0);
-  const sec = floorSections(F, edgeStream.byteLength, pointStream.byteLength, triangleStream.byteLength);
+  const sec = floorSections(version, F, {
+    faces: faceStream.byteLength, cycles: cycleStream.byteLength, edges: edgeStream.byteLength, points: pointStream.byteLength, triangles: triangleStream.byteLength,
+  });
   const out = new Uint8Array(sec.end);
   const dv = new DataView(out.buffer);
   dv.setUint32(0, FLOOR_MAGIC, true);
-  dv.setUint32(4, FLOOR_VERSION, true);
+  dv.setUint32(4, version, true);
   dv.setUint32(8, F, true);
   dv.setUint32(12, E, true);
   dv.setFloat64(16, f.originX, true);
@@ -187,12 +220,18 @@ export function writeFloorChunk(f: FloorFile): Uint8Array {
   dv.setInt32(48, f.gridExponent, true);
   dv.setUint32(52, P, true);
   dv.setUint32(56, Tg, true);
-  dv.setUint32(60, edgeStream.byteLength, true);
-  dv.setUint32(64, pointStream.byteLength, true);
-  dv.setUint32(68, triangleStream.byteLength, true);
-  for (let i = 0; i < F; i++) {
-    dv.setUint32(sec.faceIds + 4 * i, f.faceIds[i]!, true);
-    dv.setUint16(sec.faceClasses + 2 * i, f.faceClasses[i]!, true);
+  const lengths = faces
+    ? [faces.length, faceStream.byteLength, cycleStream.byteLength, edgeStream.byteLength, pointStream.byteLength, triangleStream.byteLength]
+    : [edgeStream.byteLength, pointStream.byteLength, triangleStream.byteLength];
+  lengths.forEach((v, i) => dv.setUint32(60 + 4 * i, v, true));
+  if (faces) {
+    out.set(faceStream, sec.faces);
+    out.set(cycleStream, sec.cycles);
+  } else {
+    for (let i = 0; i < F; i++) {
+      dv.setUint32(sec.faceIds + 4 * i, f.faceIds[i]!, true);
+      dv.setUint16(sec.faceClasses + 2 * i, f.faceClasses[i]!, true);
+    }
   }
   out.set(edgeStream, sec.edges);
   out.set(pointStream, sec.points);

@@ -6,7 +6,8 @@ import assert from 'node:assert/strict';
 import { encodeChunk } from './chunk-encode.js';
 import { NO_CLASS, type DecodedChunk } from './chunk.js';
 import { encodeFloorChunk, writeFloorChunk, type FloorChunkInput, type FloorFile } from './floor-chunk-encode.js';
-import { decodeFloorChunk, FLOOR_CONTINUES, FLOOR_HEADER_BYTES } from './floor-chunk.js';
+import { MeshoptDecoder } from 'meshoptimizer/decoder';
+import { decodeFloorChunk, FLOOR_CONTINUES, floorCycles, floorSections } from './floor-chunk.js';
 import { decodeSurfaceFile } from './surface-file.js';
 
 // A 4 x 4 square: face 7 on its left half, face 9 on its right half, and in 9 an island, face
@@ -72,14 +73,69 @@ describe('floor chunk file', () => {
     }
   });
 
-  test('a point two edges share is stored once; the face table is in the order the edges name the faces', () => {
+  test('a point two edges share is stored once; version 2 names a face per cycle, the face table in the order the cycles name them', async () => {
     const bytes = encodeFloorChunk(square()).bytes;
     const dv = new DataView(bytes.buffer);
+    assert.equal(dv.getUint32(4, true), 2);
     // 2 + 4 + 4 + 5 points; the second and third edges start where the one before ends.
     assert.equal(dv.getUint32(52, true), 15 - 2);
-    assert.deepEqual([0, 1, 2].map((i) => dv.getUint32(FLOOR_HEADER_BYTES + 4 * i, true)), [7, 9, 11]);
-    assert.deepEqual([0, 1, 2].map((i) => dv.getUint16(FLOOR_HEADER_BYTES + 12 + 2 * i, true)), [1, 2, 3]);
     assert.equal(FLOOR_CONTINUES, 1);
+    // The cycles, in the order of their lowest half-edge (2e: edge e forward, 2e + 1 back): face 7
+    // (edges 0 and 1 forward), face 9 (edge 0 back, edge 2), the outside (edges 1 and 2 back),
+    // the island 11, and the hole it makes in 9.
+    const F = dv.getUint32(8, true), C = dv.getUint32(60, true);
+    assert.deepEqual([F, C], [3, 5]);
+    const sec = floorSections(2, F, { faces: dv.getUint32(64, true), cycles: dv.getUint32(68, true), edges: dv.getUint32(72, true), points: dv.getUint32(76, true), triangles: dv.getUint32(80, true) });
+    await MeshoptDecoder.ready;
+    const faces = new Uint32Array(2 * F), cycles = new Uint32Array(C);
+    MeshoptDecoder.decodeVertexBuffer(new Uint8Array(faces.buffer), F, 8, bytes.subarray(sec.faces, sec.faces + dv.getUint32(64, true)));
+    MeshoptDecoder.decodeVertexBuffer(new Uint8Array(cycles.buffer), C, 4, bytes.subarray(sec.cycles, sec.cycles + dv.getUint32(68, true)));
+    assert.deepEqual([...faces], [7, 1, 9, 2, 11, 3]);
+    assert.deepEqual([...cycles], [1, 2, 0, 3, 2]);
+  });
+
+  test('the cycles round a point where four faces meet go round each face alone', () => {
+    // A 2 x 2 square of unit cells meeting at (1, 1): faces 1 (bottom left), 2 (bottom right),
+    // 3 (top right), 4 (top left); four inner edges leave the centre, four outer sides.
+    const xy = [1, 1, 1, 0, 2, 0, 2, 1, 2, 2, 1, 2, 0, 2, 0, 1, 0, 0];
+    const at = (x: number, y: number): number => xy.findIndex((_, i) => i % 2 === 0 && xy[i] === x && xy[i + 1] === y) / 2;
+    const edges = [[[1, 1], [1, 0]], [[1, 1], [2, 1]], [[1, 1], [1, 2]], [[1, 1], [0, 1]], [[1, 0], [2, 0], [2, 1]], [[2, 1], [2, 2], [1, 2]], [[1, 2], [0, 2], [0, 1]], [[0, 1], [0, 0], [1, 0]]];
+    const pointIds: number[] = [], edgeStart: number[] = [], edgeCount: number[] = [];
+    for (const e of edges) {
+      edgeStart.push(pointIds.length);
+      edgeCount.push(e.length);
+      for (const [x, y] of e) pointIds.push(at(x!, y!));
+    }
+    const pts = { id: Uint32Array.from(pointIds), xs: Float64Array.from(xy.filter((_, i) => i % 2 === 0)), ys: Float64Array.from(xy.filter((_, i) => i % 2 === 1)) };
+    const { cycleOf, count } = floorCycles({ edgeStart: Uint32Array.from(edgeStart), edgeCount: Uint32Array.from(edgeCount) }, pts);
+    // Each cell's cycle: two inner half-edges and an outer side; and the outside's.
+    const cell = (...hs: number[]): void => assert.equal(new Set(hs.map((h) => cycleOf[h])).size, 1, `half-edges ${hs.join(', ')} go round one cycle`);
+    cell(0 * 2 + 1, 7 * 2, 3 * 2); // bottom left: (1,0)->(1,1) back of edge 0... and its outer side, and edge 3 forward
+    cell(0 * 2, 4 * 2, 1 * 2 + 1);
+    cell(1 * 2, 5 * 2, 2 * 2 + 1);
+    cell(2 * 2, 6 * 2, 3 * 2 + 1);
+    cell(4 * 2 + 1, 5 * 2 + 1, 6 * 2 + 1, 7 * 2 + 1);
+    assert.equal(count, 5);
+  });
+
+  test('a cycle of edges that does not bound one face is written as version 1, each edge naming its faces', async () => {
+    // The unit square in two edges with different faces on their left (face 3, then 5): no face
+    // can be said for its cycle. Face 3 also has a closed unit square of its own at (5, 0).
+    const file: FloorFile = {
+      originX: 0, originY: 0, gridExponent: 0, ground: [0, 0, 6, 1], faceIds: [3, 5], faceClasses: [4, 6],
+      content: {
+        points: Int32Array.of(0, 0, 1, 0, 1, 1, 0, 1, 0, 0, 5, 0, 6, 0, 6, 1, 5, 1, 5, 0), faceCount: 2,
+        edgeStart: Uint32Array.of(0, 2, 5), edgeCount: Uint32Array.of(3, 3, 5), left: Uint32Array.of(1, 2, 1), right: Uint32Array.of(0, 0, 0),
+        triangles: new Uint32Array(0),
+      },
+    };
+    const bytes = writeFloorChunk(file);
+    assert.equal(new DataView(bytes.buffer).getUint32(4, true), 1);
+    // Read as each edge names its faces: face 3's closed square; the open walks bound nothing.
+    const c = await decodeFloorChunk(bytes);
+    assert.deepEqual([...areas(c)], [[3, 1]]);
+    assert.deepEqual(facesAt(c, 5.3, 0.6), [3]);
+    assert.deepEqual(facesAt(c, 0.3, 0.6), []);
   });
 
   test('the same input gives the same bytes', () => {
@@ -160,15 +216,17 @@ describe('floor chunk file', () => {
     test('truncated, another version, or a box that is not finite', async () => {
       await refuses(good.subarray(0, 40), /truncated \(40 bytes/);
       await refuses(good.subarray(0, good.length - 4), /bytes, its header .* needs/);
-      await refuses(damaged((dv) => dv.setUint32(4, 2, true)), /floor chunk version 2, this reader knows only version 1/);
+      await refuses(damaged((dv) => dv.setUint32(4, 3, true)), /floor chunk version 3, this reader knows versions 1 and 2/);
       await refuses(damaged((dv) => dv.setFloat32(36, NaN, true)), /its box is not finite/);
     });
     test('counts that cannot hold', async () => {
-      await refuses(damaged((dv) => dv.setUint32(12, 1000, true)), /counts out of bounds \(3 faces, 1000 edges, 13 points\)/);
+      await refuses(damaged((dv) => dv.setUint32(12, 1000, true)), /counts out of bounds \(3 faces, 1000 edges, 13 points, 5 cycles\)/);
       await refuses(damaged((dv) => dv.setUint32(8, 0, true)), /counts out of bounds|bytes, its header/);
       // Two billion points: refused before anything is allocated for them.
       await refuses(damaged((dv) => dv.setUint32(52, 2 ** 31, true)), /counts out of bounds for their streams \(4 edges in \d+ bytes, 2147483648 points in \d+/);
-      await refuses(damaged((dv) => dv.setUint32(56, 5, true)), /counts out of bounds for their streams .*, 5 triangles in 0\)/);
+      await refuses(damaged((dv) => dv.setUint32(56, 5, true)), /counts out of bounds for their streams .*, 5 triangles in 0,/);
+      await refuses(damaged((dv) => dv.setUint32(60, 0, true)), /counts out of bounds \(3 faces, 4 edges, 13 points, 0 cycles\)/);
+      await refuses(damaged((dv) => dv.setUint32(60, 4, true)), /its edges go round 5 cycles, its header gives faces for 4|do not decode/);
     });
     test('edges naming faces the table does not hold, or points beyond the stream', async () => {
       const content = (edit: (c: FloorFile['content']) => void): Uint8Array => {

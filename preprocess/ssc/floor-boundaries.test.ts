@@ -50,7 +50,7 @@ function faceLeftOf(side: string): number {
 
 test('every side between two faces, or at the edge of the data, is in one edge, with the faces on its left and right', () => {
   const { s, xs, ys } = floor();
-  const f = floorBoundaries(s, all(s));
+  const f = floorBoundaries(s, all(s), xs, ys);
   assert.deepEqual(f.faces, [1, 2, 3]);
   const got = sides(f.edges, xs, ys);
   // 16 sides around the grid, 4 along x = 2 (between face 1 and faces 2 and 3), 3 more around face 3.
@@ -65,8 +65,8 @@ test('every side between two faces, or at the edge of the data, is in one edge, 
 });
 
 test('the edges come in an order in which each starts where the one before it ended, where it can', () => {
-  const { s } = floor();
-  const { edges } = floorBoundaries(s, all(s));
+  const { s, xs, ys } = floor();
+  const { edges } = floorBoundaries(s, all(s), xs, ys);
   let joined = 0;
   for (let k = 1; k < edges.length; k++) if (edges[k]!.verts[0] === edges[k - 1]!.verts[edges[k - 1]!.verts.length - 1]) joined++;
   // Face 1's outline, the three runs along x = 2 (faces 2, 3, 2 on their right), face 2's
@@ -76,17 +76,17 @@ test('the edges come in an order in which each starts where the one before it en
 });
 
 test('a triangle off the floor, or over a face, is refused', () => {
-  const { s } = floor();
+  const { s, xs, ys } = floor();
   s.addTilted(0, 1, 6, 0, 0, 0.5, 1, 0, 'ramp');
-  assert.throws(() => floorBoundaries(s, Uint32Array.of(s.count - 1)), /triangle 32 \(face 1\) is not at z = 0 over face 0/);
+  assert.throws(() => floorBoundaries(s, Uint32Array.of(s.count - 1), xs, ys), /triangle 32 \(face 1\) is not at z = 0 over face 0/);
   s.add(0, 1, 6, 0, 1, 2);
-  assert.throws(() => floorBoundaries(s, Uint32Array.of(s.count - 1)), /triangle 33 \(face 1\) is not at z = 0 over face 0/);
+  assert.throws(() => floorBoundaries(s, Uint32Array.of(s.count - 1), xs, ys), /triangle 33 \(face 1\) is not at z = 0 over face 0/);
 });
 
 test('over part of the triangles, a face cut by the chunk\'s border has none on the other side of the cut', () => {
   const { s, xs, ys } = floor();
   // The bottom row of cells.
-  const f = floorBoundaries(s, Uint32Array.from({ length: 2 * N }, (_, i) => i));
+  const f = floorBoundaries(s, Uint32Array.from({ length: 2 * N }, (_, i) => i), xs, ys);
   const got = sides(f.edges, xs, ys);
   assert.ok(got.includes('1,1>0,1 1|0'), 'the cut through face 1');
   assert.ok(got.includes('2,0>2,1 1|2'));
@@ -120,4 +120,31 @@ test('floor chunks cut from the boundaries cover each face as its floor triangle
   // Earcut needs no triangle between points in a line: fewer than the floor's 32.
   assert.deepEqual([...area].sort((a, b) => a[0] - b[0]), [[1, 8], [2, 7], [3, 1]]);
   assert.ok(triangles > 0 && triangles <= 2 * N * N, `${triangles} triangles`);
+});
+
+test('a corner of one face\'s triangles on another face\'s side (a T-junction) splits that side: one edge between the two faces', async () => {
+  // Face 1: the unit square [0, 1]^2 in two triangles; face 2: [1, 2] x [0, 1], its triangles
+  // with a corner M at (1, 0.5) on the side they share, which face 1's triangles do not have.
+  const xs = Float64Array.of(100, 101, 102, 102, 101, 100, 101), ys = Float64Array.of(200, 200, 200, 201, 201, 201, 200.5);
+  const [P, A, B, C, D, Q, M] = [0, 1, 2, 3, 4, 5, 6];
+  const s = new Surfaces();
+  for (const [a, b, c, face] of [[P, A, D, 1], [P, D, Q, 1], [A, B, M, 2], [M, B, C, 2], [M, C, D, 2]] as const) {
+    s.add(a, b, c, 0, face, 0);
+    s.zEnd[s.count - 1] = 10;
+  }
+  const f = floorBoundaries(s, all(s), xs, ys);
+  const got = sides(f.edges, xs, ys);
+  assert.ok(got.includes('1,0>1,0.5 1|2') && got.includes('1,0.5>1,1 1|2'), got.join('; '));
+  assert.ok(!got.some((side) => side.startsWith('1,') && side.split('>')[1]!.startsWith('1,') && / (1\|0|0\|2|2\|0|0\|1)$/.test(side)), 'no side along x = 1 has nothing on one side');
+  // Written as version 2 (a face per cycle), each face cut whole.
+  const [chunk] = floorChunks({ surfaces: s, xs, ys, extent: [100, 200, 102, 201], scaleAt: (z) => 1000 * (1 + z), viewPerScale: [0.3584, 0.2016], targetBytes: 1e6 }, 0.5, (face) => face, -8);
+  assert.equal(new DataView(chunk!.bytes.buffer, chunk!.bytes.byteOffset).getUint32(4, true), 2);
+  const c = await decodeFloorChunk(chunk!.bytes);
+  const area = new Map<number, number>();
+  const p = c.positions;
+  for (let t = 0; t < c.triangleCount; t++) {
+    const [a, b, d] = [0, 1, 2].map((k) => c.indices[3 * t + k]!) as [number, number, number];
+    area.set(c.upper[a]!, (area.get(c.upper[a]!) ?? 0) + ((p[3 * b]! - p[3 * a]!) * (p[3 * d + 1]! - p[3 * a + 1]!) - (p[3 * d]! - p[3 * a]!) * (p[3 * b + 1]! - p[3 * a + 1]!)) / 2);
+  }
+  assert.deepEqual([...area].sort((x, y) => x[0] - y[0]), [[1, 1], [2, 1]]);
 });

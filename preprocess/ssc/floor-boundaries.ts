@@ -24,7 +24,8 @@ export interface FloorFaces {
 /** Vertex ids below this make one exact key for a directed side. */
 const VERTEX_KEY = 2 ** 26;
 
-export function floorBoundaries(s: Surfaces, floor: ArrayLike<number>): FloorFaces {
+/** `xs`, `ys`: the ground position of each vertex id. */
+export function floorBoundaries(s: Surfaces, floor: ArrayLike<number>, xs: ArrayLike<number>, ys: ArrayLike<number>): FloorFaces {
   const trianglesOf = new Map<number, number[]>();
   // Each directed side of a floor triangle, and the face of the triangle.
   const sideFace = new Map<number, number>();
@@ -40,6 +41,8 @@ export function floorBoundaries(s: Surfaces, floor: ArrayLike<number>): FloorFac
       sideFace.set(s.v[3 * i + j]! * VERTEX_KEY + s.v[3 * i + ((j + 1) % 3)]!, f);
     }
   }
+
+  splitAtTJunctions(xs, ys, sideFace);
 
   // The boundary sides, each once: a side whose reverse is another face's is kept by the lower face id.
   const groups = new Map<string, { left: number; right: number; from: number[]; to: number[] }>();
@@ -85,6 +88,70 @@ export function floorBoundaries(s: Surfaces, floor: ArrayLike<number>): FloorFac
   }
 
   return { faces: [...trianglesOf.keys()], trianglesOf, edges: chained(runs) };
+}
+
+/**
+ * A side of one face that passes through a corner of another face's triangles (a T-junction: the
+ * build's triangles need not meet corner to corner, e.g. at a point only one face's triangles
+ * use, or where two faces split between chunks have sides on one line) is split there. Both
+ * faces' boundaries then have the same points and make one edge. Otherwise the two would be two
+ * edges over one line, and the floor chunk file's version 2, which finds the faces from the
+ * cycles the edges go round, could not be written. Only sides with no reverse side (another
+ * face's, or none) and their ends are concerned; a point splits a side when it lies exactly on it
+ * (the cube's grid makes that test exact) strictly between its ends.
+ */
+function splitAtTJunctions(xs: ArrayLike<number>, ys: ArrayLike<number>, sideFace: Map<number, number>): void {
+  const key = (a: number, b: number): number => a * VERTEX_KEY + b;
+  const lone: number[] = [];
+  const ends = new Set<number>();
+  let sum = 0;
+  for (const k of sideFace.keys()) {
+    const a = Math.floor(k / VERTEX_KEY), b = k % VERTEX_KEY;
+    if (sideFace.has(key(b, a))) continue;
+    lone.push(k);
+    ends.add(a);
+    ends.add(b);
+    sum += Math.hypot(xs[b]! - xs[a]!, ys[b]! - ys[a]!);
+  }
+  if (lone.length === 0) return;
+  // The ends in cells about a side long.
+  const cell = Math.max(sum / lone.length, 1e-9);
+  const cellKey = (cx: number, cy: number): string => `${cx} ${cy}`;
+  const cells = new Map<string, number[]>();
+  for (const v of ends) {
+    const c = cellKey(Math.floor(xs[v]! / cell), Math.floor(ys[v]! / cell));
+    const l = cells.get(c);
+    if (l) l.push(v);
+    else cells.set(c, [v]);
+  }
+  for (const k of lone) {
+    const a = Math.floor(k / VERTEX_KEY), b = k % VERTEX_KEY;
+    const ax = xs[a]!, ay = ys[a]!, dx = xs[b]! - ax, dy = ys[b]! - ay, len2 = dx * dx + dy * dy;
+    const inside: { v: number; t: number }[] = [];
+    const cx0 = Math.floor(Math.min(ax, xs[b]!) / cell), cx1 = Math.floor(Math.max(ax, xs[b]!) / cell);
+    const cy0 = Math.floor(Math.min(ay, ys[b]!) / cell), cy1 = Math.floor(Math.max(ay, ys[b]!) / cell);
+    for (let cx = cx0; cx <= cx1; cx++) {
+      for (let cy = cy0; cy <= cy1; cy++) {
+        for (const v of cells.get(cellKey(cx, cy)) ?? []) {
+          const px = xs[v]! - ax, py = ys[v]! - ay;
+          if (v === a || v === b || px * dy - py * dx !== 0) continue;
+          const t = (px * dx + py * dy) / len2;
+          if (t > 0 && t < 1) inside.push({ v, t });
+        }
+      }
+    }
+    if (inside.length === 0) continue;
+    inside.sort((p, q) => p.t - q.t || p.v - q.v);
+    const f = sideFace.get(k)!;
+    sideFace.delete(k);
+    let from = a;
+    for (const { v } of inside) {
+      if (v === from) continue;
+      sideFace.set(key(from, v), f);
+      from = v;
+    }
+    sideFace.set(key(from, b), f);
+  }
 }
 
 /**

@@ -22,7 +22,7 @@ export function floorChunks(inp: ChunkingInput, top: number, classOf: (face: num
     const tris = plan.order.subarray(plan.start[c], plan.start[c + 1]);
     if (tris.length === 0) continue;
     // The faces' parts in this chunk: their sides that no other of the chunk's triangles of the face share.
-    const ff = floorBoundaries(s, tris);
+    const ff = floorBoundaries(s, tris, inp.xs, inp.ys);
     // A whole-unit origin, as the triangle chunks have (assemble-chunk.ts).
     let ox = Infinity, oy = Infinity;
     for (const ed of ff.edges) for (const v of ed.verts) { ox = Math.min(ox, inp.xs[v]!); oy = Math.min(oy, inp.ys[v]!); }
