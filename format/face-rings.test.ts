@@ -1,6 +1,6 @@
 // A face's rings and triangles from its edges (face-rings.ts), on hand-made faces whose areas are
 // known: few edges (found by a scan) and many (found by a map), in either direction, with a hole,
-// and touching itself at a corner (one walk split into two rings).
+// and touching itself at a corner (two rings).
 import test from 'node:test';
 import assert from 'node:assert/strict';
 import { assembleRings, earcutFace, faceArea2, type FaceEdge } from './face-rings.js';
@@ -61,7 +61,7 @@ for (const pieces of [3, 40]) {
   }
 }
 
-test('a face touching itself at a corner, in 20 edges: one walk, two rings, both squares cut', () => {
+for (const pieces of [4, 20]) test(`a face touching itself at a corner, in ${pieces} edges: two rings, both squares cut`, () => {
   // Two 10 x 10 squares meeting at (10, 10), a point every unit: one walk around both passes it twice.
   const ring: [number, number][] = [];
   for (let i = 0; i < 10; i++) ring.push([i, 0]);
@@ -76,7 +76,7 @@ test('a face touching itself at a corner, in 20 edges: one walk, two rings, both
   // The corner is one vertex: its second visit names the first's id.
   const ids = ring.map(([x, y]) => ring.findIndex(([u, w]) => u === x && w === y));
   assert.equal(new Set(ids).size, ring.length - 1);
-  const edges = edgesOfRing(ids, 20, false);
+  const edges = edgesOfRing(ids, pieces, false);
   const rings = assembleRings(edges, pts.xs, pts.ys);
   assert.equal(rings.length, 2);
   for (const r of rings) assert.equal(r.length, 40);

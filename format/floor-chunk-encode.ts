@@ -2,7 +2,7 @@
 // cycle of edges does not bound one face), beside the
 // decoder in floor-chunk.ts: a file of its own so that the map does not load the encoder's
 // WebAssembly. Used by the build (Node). Same input, same bytes.
-import { gridExponentFor, gridSteps, POINT_BYTES } from './chunk.js';
+import { gridExponentFor, gridSteps, NO_CLASS, POINT_BYTES } from './chunk.js';
 import { encodeRecords } from './chunk-encode.js';
 import {
   cycleFaces, distinctPoints, FLOOR_CONTINUES, FLOOR_CYCLE_BYTES, FLOOR_FACE_BYTES, FLOOR_MAGIC, FLOOR_TRIANGLE_BYTES, floorCycles, floorEdgeBytes,
@@ -197,6 +197,7 @@ export function writeFloorChunk(f: FloorFile): Uint8Array {
   }
   const faceRecords = new Uint32Array(2 * F);
   for (let i = 0; i < F; i++) {
+    if (!(f.faceClasses[i]! >= 0 && f.faceClasses[i]! < NO_CLASS)) throw new Error(`floor chunk writer: face ${f.faceIds[i]} has class ${f.faceClasses[i]}, a class index is below ${NO_CLASS}`);
     faceRecords[2 * i] = f.faceIds[i]!;
     faceRecords[2 * i + 1] = f.faceClasses[i]!;
   }

@@ -225,6 +225,8 @@ describe('floor chunk file', () => {
       // Two billion points: refused before anything is allocated for them.
       await refuses(damaged((dv) => dv.setUint32(52, 2 ** 31, true)), /counts out of bounds for their streams \(4 edges in \d+ bytes, 2147483648 points in \d+/);
       await refuses(damaged((dv) => dv.setUint32(56, 5, true)), /counts out of bounds for their streams .*, 5 triangles in 0,/);
+      // A stream length near 2^32 would wrap the sum of the lengths round to the file's length.
+      await refuses(damaged((dv) => dv.setUint32(72, 2 ** 32 - 64, true)), /bytes, its header .* needs more/);
       await refuses(damaged((dv) => dv.setUint32(60, 0, true)), /counts out of bounds \(3 faces, 4 edges, 13 points, 0 cycles\)/);
       await refuses(damaged((dv) => dv.setUint32(60, 4, true)), /its edges go round 5 cycles, its header gives faces for 4|do not decode/);
     });
@@ -243,6 +245,14 @@ describe('floor chunk file', () => {
       await refuses(content((c) => { c.triangles = Uint32Array.of(0, 1, 9, 1); }), /triangle 0 names points 0, 1, 9 of 5 and face 1 of 1/);
     });
     test('the encoder refuses what it cannot write', () => {
+      const file: FloorFile = {
+        originX: 0, originY: 0, gridExponent: 0, ground: [0, 0, 1, 1], faceIds: [3], faceClasses: [NO_CLASS],
+        content: {
+          points: Int32Array.of(0, 0, 1, 0, 1, 1, 0, 1, 0, 0), faceCount: 1, edgeStart: Uint32Array.of(0), edgeCount: Uint32Array.of(5),
+          left: Uint32Array.of(1), right: Uint32Array.of(0), triangles: new Uint32Array(0),
+        },
+      };
+      assert.throws(() => writeFloorChunk(file), /face 3 has class 65535, a class index is below 65535/);
       assert.throws(() => encodeFloorChunk({ ...square(), faces: [7, 9, 11, 13], classes: [1, 2, 3, 4] }), /face 13 has no edge/);
       assert.throws(() => encodeFloorChunk({ ...square(), edges: [...square().edges, { xy: [0, 0, 1, 1], left: 1, right: 2 }] }), /edge 4 between faces 1 and 2 bounds none of the chunk's faces/);
     });

@@ -166,7 +166,8 @@ export function floorCycles(c: Pick<FloorContent, 'edgeStart' | 'edgeCount'>, pt
   for (let v = 0; v < V; v++) first[v + 1]! += first[v]!;
   const around = new Uint32Array(H), fill = first.slice(0, V);
   for (let h = 0; h < H; h++) around[fill[org[h]!]!++] = h;
-  const half = (h: number): number => (dy[h]! > 0 || (dy[h]! === 0 && dx[h]! > 0) ? 0 : 1);
+  // A first step of no length (two equal points) comes after every direction, so that the order is total.
+  const half = (h: number): number => (dy[h]! > 0 || (dy[h]! === 0 && dx[h]! > 0) ? 0 : dy[h]! === 0 && dx[h]! === 0 ? 2 : 1);
   const ccw = (g: number, h: number): number => half(g) - half(h) || dy[g]! * dx[h]! - dx[g]! * dy[h]! || g - h;
   const place = new Uint32Array(H);
   for (let v = 0; v < V; v++) {
@@ -261,9 +262,11 @@ export async function decodeFloorChunk(input: Uint8Array | ArrayBuffer, name = '
   if (gridProblem) throw fail(gridProblem);
   // Every edge stores a point at least, every face has an edge, every cycle a half-edge.
   if (E > P || F > 2 * E || F === 0 || C > 2 * E || (version === 2 && C === 0)) throw fail(`counts out of bounds (${F} faces, ${E} edges, ${P} points${version === 2 ? `, ${C} cycles` : ''})`);
-  const sec = floorSections(version, F, len);
-  if (b.byteLength !== sec.end) {
-    throw fail(`${b.byteLength} bytes, its header (${F} faces, ${Object.values(len).join(' + ')} bytes of streams) needs ${sec.end}`);
+  const lengths = version === 2 ? Object.values(len) : [len.edges, len.points, len.triangles];
+  // Each stream lies in the file (so that the sum below cannot wrap round 32 bits).
+  const sec = lengths.every((l) => l <= b.byteLength) ? floorSections(version, F, len) : null;
+  if (!sec || b.byteLength !== sec.end) {
+    throw fail(`${b.byteLength} bytes, its header (${F} faces, ${lengths.join(' + ')} bytes of streams) needs ${sec ? sec.end : 'more'}`);
   }
   const size = floorEdgeLaneSize(P, F, version), edgeBytes = floorEdgeBytes(size, version);
   // meshoptimizer's vertex codec packs at most about 1,000 bytes into one (all zeros): a count

@@ -122,22 +122,27 @@ test('floor chunks cut from the boundaries cover each face as its floor triangle
   assert.ok(triangles > 0 && triangles <= 2 * N * N, `${triangles} triangles`);
 });
 
-test('a corner of one face\'s triangles on another face\'s side (a T-junction) splits that side: one edge between the two faces', async () => {
-  // Face 1: the unit square [0, 1]^2 in two triangles; face 2: [1, 2] x [0, 1], its triangles
-  // with a corner M at (1, 0.5) on the side they share, which face 1's triangles do not have.
-  const xs = Float64Array.of(100, 101, 102, 102, 101, 100, 101), ys = Float64Array.of(200, 200, 200, 201, 201, 201, 200.5);
-  const [P, A, B, C, D, Q, M] = [0, 1, 2, 3, 4, 5, 6];
+/** Faces 1 ([0, 1]^2), 2 ([1, 2] x [0, 1], a corner M at (mx, 0.5) on or beside the side it shares with 1) and 3 ([1, 2]^2, beyond M's side). */
+function tJunction(mx: number): { s: Surfaces; xs: Float64Array; ys: Float64Array } {
+  const xs = Float64Array.of(100, 101, 102, 102, 101, 100, 100 + mx, 102, 101), ys = Float64Array.of(200, 200, 200, 201, 201, 201, 200.5, 202, 202);
+  const [P, A, B, C, D, Q, M, E, G] = [0, 1, 2, 3, 4, 5, 6, 7, 8];
   const s = new Surfaces();
-  for (const [a, b, c, face] of [[P, A, D, 1], [P, D, Q, 1], [A, B, M, 2], [M, B, C, 2], [M, C, D, 2]] as const) {
+  for (const [a, b, c, face] of [[P, A, D, 1], [P, D, Q, 1], [A, B, M, 2], [M, B, C, 2], [M, C, D, 2], [D, C, E, 3], [D, E, G, 3]] as const) {
     s.add(a, b, c, 0, face, 0);
     s.zEnd[s.count - 1] = 10;
   }
-  const f = floorBoundaries(s, all(s), xs, ys);
-  const got = sides(f.edges, xs, ys);
+  return { s, xs, ys };
+}
+
+test('a corner of one face\'s triangles on another face\'s side (a T-junction) splits that side: one edge between the two faces', async () => {
+  const { s, xs, ys } = tJunction(1);
+  const got = sides(floorBoundaries(s, all(s), xs, ys).edges, xs, ys);
   assert.ok(got.includes('1,0>1,0.5 1|2') && got.includes('1,0.5>1,1 1|2'), got.join('; '));
-  assert.ok(!got.some((side) => side.startsWith('1,') && side.split('>')[1]!.startsWith('1,') && / (1\|0|0\|2|2\|0|0\|1)$/.test(side)), 'no side along x = 1 has nothing on one side');
+  // Face 3's side on the same line, beyond the side's end, splits nothing.
+  assert.ok(got.includes('1,2>1,1 3|0'), got.join('; '));
+  assert.equal(got.filter((side) => side.startsWith('1,') && side.split('>')[1]!.startsWith('1,')).length, 3, got.join('; '));
   // Written as version 2 (a face per cycle), each face cut whole.
-  const [chunk] = floorChunks({ surfaces: s, xs, ys, extent: [100, 200, 102, 201], scaleAt: (z) => 1000 * (1 + z), viewPerScale: [0.3584, 0.2016], targetBytes: 1e6 }, 0.5, (face) => face, -8);
+  const [chunk] = floorChunks({ surfaces: s, xs, ys, extent: [100, 200, 102, 202], scaleAt: (z) => 1000 * (1 + z), viewPerScale: [0.3584, 0.2016], targetBytes: 1e6 }, 0.5, (face) => face, -8);
   assert.equal(new DataView(chunk!.bytes.buffer, chunk!.bytes.byteOffset).getUint32(4, true), 2);
   const c = await decodeFloorChunk(chunk!.bytes);
   const area = new Map<number, number>();
@@ -146,5 +151,11 @@ test('a corner of one face\'s triangles on another face\'s side (a T-junction) s
     const [a, b, d] = [0, 1, 2].map((k) => c.indices[3 * t + k]!) as [number, number, number];
     area.set(c.upper[a]!, (area.get(c.upper[a]!) ?? 0) + ((p[3 * b]! - p[3 * a]!) * (p[3 * d + 1]! - p[3 * a + 1]!) - (p[3 * d]! - p[3 * a]!) * (p[3 * b + 1]! - p[3 * a + 1]!)) / 2);
   }
-  assert.deepEqual([...area].sort((x, y) => x[0] - y[0]), [[1, 1], [2, 1]]);
+  assert.deepEqual([...area].sort((x, y) => x[0] - y[0]), [[1, 1], [2, 1], [3, 1]]);
+});
+
+test('a corner a billionth of a unit beside the side splits nothing', () => {
+  const { s, xs, ys } = tJunction(1 + 1e-9);
+  const got = sides(floorBoundaries(s, all(s), xs, ys).edges, xs, ys);
+  assert.ok(got.includes('1,0>1,1 1|0'), got.join('; '));
 });

@@ -3,6 +3,7 @@
 // faces once (with the face on its left and the one on its right), joined into runs of points.
 // Taken from the triangles rather than the tGAP's edges, so that the floor chunks bound exactly
 // the area the floor triangles cover, with the same points.
+import { orient2d } from 'robust-predicates';
 import type { Surfaces } from './surfaces.js';
 
 export interface FloorBoundary {
@@ -98,7 +99,7 @@ export function floorBoundaries(s: Surfaces, floor: ArrayLike<number>, xs: Array
  * edges over one line, and the floor chunk file's version 2, which finds the faces from the
  * cycles the edges go round, could not be written. Only sides with no reverse side (another
  * face's, or none) and their ends are concerned; a point splits a side when it lies exactly on it
- * (the cube's grid makes that test exact) strictly between its ends.
+ * (robust-predicates' orient2d) strictly between its ends.
  */
 function splitAtTJunctions(xs: ArrayLike<number>, ys: ArrayLike<number>, sideFace: Map<number, number>): void {
   const key = (a: number, b: number): number => a * VERTEX_KEY + b;
@@ -133,8 +134,8 @@ function splitAtTJunctions(xs: ArrayLike<number>, ys: ArrayLike<number>, sideFac
     for (let cx = cx0; cx <= cx1; cx++) {
       for (let cy = cy0; cy <= cy1; cy++) {
         for (const v of cells.get(cellKey(cx, cy)) ?? []) {
+          if (v === a || v === b || orient2d(ax, ay, xs[b]!, ys[b]!, xs[v]!, ys[v]!) !== 0) continue;
           const px = xs[v]! - ax, py = ys[v]! - ay;
-          if (v === a || v === b || px * dy - py * dx !== 0) continue;
           const t = (px * dx + py * dy) / len2;
           if (t > 0 && t < 1) inside.push({ v, t });
         }
@@ -146,7 +147,8 @@ function splitAtTJunctions(xs: ArrayLike<number>, ys: ArrayLike<number>, sideFac
     sideFace.delete(k);
     let from = a;
     for (const { v } of inside) {
-      if (v === from) continue;
+      // Two vertices at one point make one split.
+      if (xs[v] === xs[from] && ys[v] === ys[from]) continue;
       sideFace.set(key(from, v), f);
       from = v;
     }
