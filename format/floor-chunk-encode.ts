@@ -48,8 +48,8 @@ export function encodeFloorChunk(c: FloorChunkInput): { bytes: Uint8Array; trian
     if (c.faces[f] === 0 || classOf.has(c.faces[f]!)) throw new Error(`floor chunk encoder: face ${c.faces[f]} is 0 or listed twice`);
     classOf.set(c.faces[f]!, c.classes[f]!);
   }
-  // The face table in the order the edges first name the faces: the faces an edge names are
-  // then mostly the last few, or the next, which the codec stores in few bits.
+  // The face table in the order the edges first name the faces (version 1 keeps it: the faces an
+  // edge names are then mostly the last few, or the next, which the codec stores in few bits).
   const local = new Map<number, number>();
   let table: number[] = [];
   for (const ed of c.edges) {

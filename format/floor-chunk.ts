@@ -4,8 +4,9 @@
 // grid. Version 2 names no face per edge: the edges go round cycles (floorCycles, the plane's
 // own order of the edges at each point), and each cycle names the face it bounds; version 1
 // (still written where a cycle does not bound one face) names the faces on each edge's left and
-// right. A face the build's earcut could not cut comes with its triangles. The reader joins each face's boundary into rings and cuts them with earcut
-// (face-rings.ts, the build's own code), giving what decodeChunk gives for a triangle chunk.
+// right. A face the build's earcut could not cut comes with its triangles. The reader joins each
+// face's boundary into rings and cuts them with earcut (face-rings.ts, the build's own code),
+// giving what decodeChunk gives for a triangle chunk.
 // Pure; the encoder is in floor-chunk-encode.ts so that the map does not load its WebAssembly.
 import { MeshoptDecoder } from 'meshoptimizer/decoder';
 import { VERTEX_BYTES } from './chunk-layout.js';
@@ -98,7 +99,7 @@ export interface FloorContent {
 /** One number for a point in grid steps (|x|, |y| at most 2^24, POSITION_BITS): exact, and equal only for equal points. */
 export const gridPointKey = (x: number, y: number): number => (x + 2 ** 24) * 2 ** 26 + (y + 2 ** 24);
 
-/** One vertex id per distinct grid point, and each id's x, y in grid steps. */
+/** Each stored point's vertex id (points equal on the grid share one), and each vertex's x, y in grid steps. */
 export interface DistinctPoints {
   id: Uint32Array;
   xs: Float64Array;
@@ -141,10 +142,11 @@ export function distinctPoints(points: Int32Array): DistinctPoints {
  * The cycles the edges go round: half-edge 2e is edge e from its first point to its last, 2e + 1
  * back, each bounding what lies on its left. From a half-edge's last point the cycle goes on
  * along the half-edge leaving that point first clockwise from the way back, as a face's boundary
- * does: at a point of two edges the other one; at more, by the exact order of their first steps
- * round the point (integer grid steps, so the cross products are exact, and ties go to the lower
- * half-edge). The same on every machine, so the writer's cycles are the reader's. Cycles are
- * numbered in the order of their lowest half-edge.
+ * does: at a point two half-edges leave, the other one; at more, by the exact order of their
+ * first steps round the point (integer grid steps, so the cross products are exact; equal
+ * directions with the lower half-edge first, a step of no length last). The same on every
+ * machine, so the writer's cycles are the reader's. Cycles are numbered in the order of their
+ * lowest half-edge.
  */
 export function floorCycles(c: Pick<FloorContent, 'edgeStart' | 'edgeCount'>, pts: DistinctPoints): { cycleOf: Uint32Array; count: number } {
   const { id, xs, ys } = pts;
