@@ -284,6 +284,8 @@ describe('chunk file', () => {
     await refuses(damaged((dv) => dv.setUint32(4, 1, true)), /chunk version 1, this reader knows only versions 2 to 4 \(rebuild the cube with ssc build\)/);
     await refuses(damaged((dv) => dv.setUint32(4, 5, true)), /chunk version 5/);
     await refuses(good.subarray(0, good.length - 4), new RegExp(`${good.length - 4} bytes, its header .* needs ${good.length}`));
+    // An index stream length near 2^32 would wrap the sum of the lengths round to the file's length.
+    await refuses(damaged((dv) => dv.setUint32(84, 2 ** 32 - 64, true)), /bytes, its header .* needs 4\d{9}$/);
     await refuses(damaged((dv) => dv.setInt32(56, -24, true)), /position step 2\^-24 does not fit its box \(2\^-23 to 2\^64\)/);
     await refuses(damaged((dv) => dv.setInt32(56, 65, true)), /position step 2\^65 does not fit its box \(2\^-23 to 2\^64\)/);
     // Version 2 knew only the box's own grid: the version-3 fixture, on a coarser one, called version 2.

@@ -56,7 +56,8 @@ export interface DecodedChunk extends ChunkData {
   vertexByteLength: number;
 }
 
-export const pad4 = (n: number): number => (n + 3) & ~3;
+/** `n` rounded up to a multiple of 4; plain arithmetic, so that a length from a damaged header cannot wrap round 32 bits. */
+export const pad4 = (n: number): number => Math.ceil(n / 4) * 4;
 
 /** Bytes per index: 2 while every vertex fits a u16. */
 export const indexSizeFor = (vertices: number): 2 | 4 => (vertices <= 0xffff ? 2 : 4);

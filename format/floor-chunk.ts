@@ -265,11 +265,8 @@ export async function decodeFloorChunk(input: Uint8Array | ArrayBuffer, name = '
   // Every edge stores a point at least, every face has an edge, every cycle a half-edge.
   if (E > P || F > 2 * E || F === 0 || C > 2 * E || (version === 2 && C === 0)) throw fail(`counts out of bounds (${F} faces, ${E} edges, ${P} points${version === 2 ? `, ${C} cycles` : ''})`);
   const lengths = version === 2 ? Object.values(len) : [len.edges, len.points, len.triangles];
-  // Each stream lies in the file (so that the sum below cannot wrap round 32 bits).
-  const sec = lengths.every((l) => l <= b.byteLength) ? floorSections(version, F, len) : null;
-  if (!sec || b.byteLength !== sec.end) {
-    throw fail(`${b.byteLength} bytes, its header (${F} faces, ${lengths.join(' + ')} bytes of streams) needs ${sec ? sec.end : 'more'}`);
-  }
+  const sec = floorSections(version, F, len);
+  if (b.byteLength !== sec.end) throw fail(`${b.byteLength} bytes, its header (${F} faces, ${lengths.join(' + ')} bytes of streams) needs ${sec.end}`);
   const size = floorEdgeLaneSize(P, F, version), edgeBytes = floorEdgeBytes(size, version);
   // meshoptimizer's vertex codec packs at most about 1,000 bytes into one (all zeros): a count
   // beyond what its stream could hold is refused before anything is allocated for it.
