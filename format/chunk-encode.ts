@@ -10,8 +10,8 @@
 // the runs the index codec codes cheaply. Triangles grouped by face: 191 kB in the floor.
 import { MeshoptEncoder } from 'meshoptimizer/encoder';
 import {
-  CHUNK_MAGIC, CHUNK_VERSION, chunkSections, encodedVertexBytes, gridExponentFor, gridSteps, indexSizeFor,
-  POINT_BYTES, POSITION_BITS, tableIndexSizeFor, Z_BYTES,
+  CHUNK_MAGIC, CHUNK_VERSION, chunkSections, encodedVertexBytes, gridExponentFor, gridPointKey, gridSteps, indexSizeFor,
+  POINT_BYTES, tableIndexSizeFor, Z_BYTES,
 } from './chunk.js';
 
 await MeshoptEncoder.ready;
@@ -98,7 +98,7 @@ export function encodeChunk(c: ChunkInput): Uint8Array {
   const faces = faceTable(c);
   const F = faces.ids.length;
   const indexSize = indexSizeFor(V);
-  const e = gridExponentFor(c.box, c.gridExponent), limit = 2 ** POSITION_BITS;
+  const e = gridExponentFor(c.box, c.gridExponent);
 
   // The points (x, y on the grid) and z values (float32), each once, in order of first use by
   // the vertices, as docs/FORMAT.md lays them out; a vertex names them by index.
@@ -110,8 +110,7 @@ export function encodeChunk(c: ChunkInput): Uint8Array {
     if (Number.isNaN(qx) || Number.isNaN(qy)) throw new Error(`chunk encoder: vertex ${k} lies outside the chunk's box`);
     const z = Math.fround(c.positions[3 * k + 2]!);
     if (!Number.isFinite(z)) throw new Error(`chunk encoder: vertex ${k} has z ${c.positions[3 * k + 2]}`);
-    // |q| <= 2^24: one exact key.
-    const key = (qx + limit) * (2 * limit + 1) + (qy + limit);
+    const key = gridPointKey(qx, qy);
     let p = pointIds.get(key);
     if (p === undefined) {
       pointIds.set(key, (p = points.length / 2));

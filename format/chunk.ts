@@ -114,6 +114,9 @@ export function gridSteps(v: number, e: number): number {
   return Math.abs(q) <= 2 ** POSITION_BITS ? q : NaN;
 }
 
+/** One number for a point in grid steps (|x|, |y| at most 2^POSITION_BITS, as gridSteps gives them): exact, and equal only for equal points. */
+export const gridPointKey = (x: number, y: number): number => (x + 2 ** POSITION_BITS) * 2 ** (POSITION_BITS + 2) + (y + 2 ** POSITION_BITS);
+
 /** Where the sections after the header start (docs/FORMAT.md), from the header's counts. */
 export interface ChunkSections {
   faceIds: number;

@@ -2,11 +2,11 @@
 // cycle of edges does not bound one face), beside the
 // decoder in floor-chunk.ts: a file of its own so that the map does not load the encoder's
 // WebAssembly. Used by the build (Node). Same input, same bytes.
-import { gridExponentFor, gridSteps, NO_CLASS, POINT_BYTES } from './chunk.js';
+import { gridExponentFor, gridPointKey, gridSteps, NO_CLASS, POINT_BYTES } from './chunk.js';
 import { encodeRecords } from './chunk-encode.js';
 import {
   cycleFaces, distinctPoints, FLOOR_CONTINUES, FLOOR_CYCLE_BYTES, FLOOR_FACE_BYTES, FLOOR_MAGIC, FLOOR_TRIANGLE_BYTES, floorCycles, floorEdgeBytes,
-  floorEdgeLaneSize, floorFaceTriangles, floorSections, gridPointKey, type FloorContent,
+  floorEdgeLaneSize, floorFaceTriangles, floorSections, type FloorContent,
 } from './floor-chunk.js';
 
 /** A piece of boundary: x, y pairs relative to the origin, the faces on its left and right (ids). */

@@ -96,9 +96,6 @@ export interface FloorContent {
   triangles: Uint32Array;
 }
 
-/** One number for a point in grid steps (|x|, |y| at most 2^24, POSITION_BITS): exact, and equal only for equal points. */
-export const gridPointKey = (x: number, y: number): number => (x + 2 ** 24) * 2 ** 26 + (y + 2 ** 24);
-
 /** Each stored point's vertex id (points equal on the grid share one), and each vertex's x, y in grid steps. */
 export interface DistinctPoints {
   id: Uint32Array;
