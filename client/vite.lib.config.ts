@@ -37,8 +37,8 @@ export default defineConfig(({ mode }) => {
         cssFileName: 'vario-map',
       },
     },
-    // The worker is one file, its lazy import (pako) inlined: a page's bundler takes the
-    // prebuilt worker over as a single asset and does not follow that import, which would fail.
+    // The worker is one file, any lazy import inlined: a page's bundler takes the prebuilt
+    // worker over as a single asset and does not follow such an import, which would fail.
     worker: { format: umd ? 'iife' : 'es', rolldownOptions: { output: { codeSplitting: false } } },
     plugins: [
       {
