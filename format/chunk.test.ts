@@ -1,4 +1,4 @@
-// The chunk file, version 4: the encoder writes the header and face table of docs/FORMAT.md
+// The chunk file, version 5: the encoder writes the header and face table of docs/FORMAT.md
 // (checked at offsets worked out by hand), the decoder gives back what went in (positions
 // within half a grid step, everything else exactly), and a damaged, truncated or old file is
 // refused with a message that says what is wrong.
@@ -117,7 +117,7 @@ describe('chunk file', () => {
     const bytes = encodeChunk(square());
     const dv = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
     assert.equal(dv.getUint32(0, true), 0x43435353);
-    assert.equal(dv.getUint32(4, true), 4, 'version');
+    assert.equal(dv.getUint32(4, true), 5, 'version');
     assert.equal(dv.getUint32(8, true), 4, 'vertices');
     assert.equal(dv.getUint32(12, true), 2, 'triangles');
     assert.equal(dv.getFloat64(16, true), 181000.5);
@@ -128,19 +128,24 @@ describe('chunk file', () => {
     assert.equal(dv.getUint32(60, true), 3, 'faces 7, 0 and 8');
     assert.equal(dv.getUint32(64, true), 4, 'points: the four corners');
     assert.equal(dv.getUint32(68, true), 2, 'z values 3 and 5');
-    const pointStream = dv.getUint32(72, true), zStream = dv.getUint32(76, true);
-    const vertexStream = dv.getUint32(80, true), indexStream = dv.getUint32(84, true);
-    // Face ids at 88 (3 x u32), classes at 100 (3 x u16, padded to 108), then the streams.
-    assert.deepEqual([0, 1, 2].map((i) => dv.getUint32(88 + 4 * i, true)), [7, 0, 8], 'in order of first mention, upper before lower');
-    assert.deepEqual([0, 1, 2].map((i) => dv.getUint16(100 + 2 * i, true)), [2, 0xffff, 4]);
-    assert.equal(bytes[108], 0xa1, 'the point stream starts at 108 with the vertex codec\'s version-1 header byte');
-    const zAt = (108 + pointStream + 3) & ~3;
+    const [pointStream, zStream, vertexPoints, vertexZs, vertexStream, indexStream] = [72, 76, 80, 84, 88, 92].map((o) => dv.getUint32(o, true));
+    // Face ids at 96 (3 x u32), classes at 108 (3 x u16, padded to 116), then the streams.
+    assert.deepEqual([0, 1, 2].map((i) => dv.getUint32(96 + 4 * i, true)), [7, 0, 8], 'in order of first mention, upper before lower');
+    assert.deepEqual([0, 1, 2].map((i) => dv.getUint16(108 + 2 * i, true)), [2, 0xffff, 4]);
+    assert.equal(bytes[116], 0xa1, 'the point stream starts at 116 with the vertex codec\'s version-1 header byte');
+    const zAt = (116 + pointStream! + 3) & ~3;
     assert.equal(bytes[zAt], 0xa1, 'the z stream at the next multiple of 4');
-    const vertexAt = (zAt + zStream + 3) & ~3;
-    assert.equal(bytes[vertexAt], 0xa1, 'the vertex stream at the next multiple of 4');
-    const indexAt = (vertexAt + vertexStream + 3) & ~3;
+    const vertexPointsAt = (zAt + zStream! + 3) & ~3;
+    assert.equal(bytes[vertexPointsAt], 0xd1, 'the vertices\' point indices at the next multiple of 4, with the index sequence codec\'s header byte');
+    // 4 indices, a byte each, between the codec's header byte and its 4 bytes of tail.
+    assert.equal(vertexPoints, 9);
+    const vertexZsAt = (vertexPointsAt + vertexPoints + 3) & ~3;
+    assert.equal(bytes[vertexZsAt], 0xd1, 'then their z indices');
+    const vertexAt = (vertexZsAt + vertexZs! + 3) & ~3;
+    assert.equal(bytes[vertexAt], 0xa1, 'the vertex stream (faces) at the next multiple of 4');
+    const indexAt = (vertexAt + vertexStream! + 3) & ~3;
     assert.equal(bytes[indexAt], 0xe1, 'the index stream at the next multiple of 4, with the index codec\'s header byte');
-    assert.equal(bytes.byteLength, (indexAt + indexStream + 3) & ~3);
+    assert.equal(bytes.byteLength, (indexAt + indexStream! + 3) & ~3);
   });
 
   test('the decoded vertex columns are the ones the renderer binds', async () => {
@@ -278,14 +283,14 @@ describe('chunk file', () => {
     const refuses = async (b: Uint8Array, pattern: RegExp): Promise<void> => {
       await assert.rejects(decodeChunk(b, 'c-x.bin'), (e: unknown) => e instanceof ChunkFormatError && e.message.startsWith('c-x.bin: ') && pattern.test(e.message));
     };
-    await refuses(good.subarray(0, 40), /truncated \(40 bytes, the header alone is 88\)/);
+    await refuses(good.subarray(0, 40), /truncated \(40 bytes, the header alone is 96\)/);
     await refuses(good.subarray(0, 3), /truncated/);
     await refuses(damaged((dv) => dv.setUint32(0, CHUNK_MAGIC + 1, true)), /bad magic/);
-    await refuses(damaged((dv) => dv.setUint32(4, 1, true)), /chunk version 1, this reader knows only versions 2 to 4 \(rebuild the cube with ssc build\)/);
-    await refuses(damaged((dv) => dv.setUint32(4, 5, true)), /chunk version 5/);
+    await refuses(damaged((dv) => dv.setUint32(4, 1, true)), /chunk version 1, this reader knows only versions 2 to 5 \(rebuild the cube with ssc build\)/);
+    await refuses(damaged((dv) => dv.setUint32(4, 6, true)), /chunk version 6/);
     await refuses(good.subarray(0, good.length - 4), new RegExp(`${good.length - 4} bytes, its header .* needs ${good.length}`));
     // An index stream length near 2^32 would wrap the sum of the lengths round to the file's length.
-    await refuses(damaged((dv) => dv.setUint32(84, 2 ** 32 - 64, true)), /bytes, its header .* needs 4\d{9}$/);
+    await refuses(damaged((dv) => dv.setUint32(92, 2 ** 32 - 64, true)), /bytes, its header .* needs 4\d{9}$/);
     await refuses(damaged((dv) => dv.setInt32(56, -24, true)), /position step 2\^-24 does not fit its box \(2\^-23 to 2\^64\)/);
     await refuses(damaged((dv) => dv.setInt32(56, 65, true)), /position step 2\^65 does not fit its box \(2\^-23 to 2\^64\)/);
     // Version 2 knew only the box's own grid: the version-3 fixture, on a coarser one, called version 2.
@@ -299,7 +304,13 @@ describe('chunk file', () => {
     await refuses(damaged((dv) => dv.setUint32(12, 2 ** 30, true)), /1073741824 triangles cannot fit an index stream of \d+ bytes/);
     await refuses(damaged((dv) => dv.setUint32(64, 5, true)), /counts out of bounds \(2 triangles, 4 vertices, 5 points, 2 z values, 3 faces\)/);
     await refuses(damaged((dv) => dv.setUint32(68, 5, true)), /counts out of bounds \(2 triangles, 4 vertices, 4 points, 5 z values, 3 faces\)/);
-    await refuses(damaged((_, b) => { b[108] = 0; }), /compressed points, z values, vertices or triangles do not decode/);
+    await refuses(damaged((dv) => dv.setUint32(80, 3, true)), /4 vertices cannot fit point and z index streams of 3 and 9 bytes/);
+    await refuses(damaged((_, b) => { b[116] = 0; }), /compressed points, z values, vertices or triangles do not decode/);
+    // A vertex's point index beyond the 4 points (the first index's delta made 2 larger).
+    const head = new DataView(good.buffer, good.byteOffset);
+    const vp = 116 + ((head.getUint32(72, true) + 3) & ~3) + ((head.getUint32(76, true) + 3) & ~3);
+    assert.equal(good[vp], 0xd1, 'the point index stream where the header says');
+    await refuses(damaged((_, b) => { b[vp + 1] = 8; }), /vertex \d names point [4-9] of 4/);
   });
 
   test('a file of version 1 (24 bytes a vertex) is refused, not misread', async () => {
@@ -310,7 +321,18 @@ describe('chunk file', () => {
     dv.setUint32(4, 1, true);
     dv.setUint32(8, 4, true);
     dv.setUint32(12, 2, true);
-    await assert.rejects(decodeChunk(v1, 'c-old.bin'), /c-old\.bin: chunk version 1, this reader knows only versions 2 to 4/);
+    await assert.rejects(decodeChunk(v1, 'c-old.bin'), /c-old\.bin: chunk version 1, this reader knows only versions 2 to 5/);
+  });
+
+  test('a file of version 4 (one vertex stream of four lanes, 88-byte header) is still read', async () => {
+    // Written by the version-4 encoder from this chunk on a grid of 2^-12 (testdata/README.md).
+    const v4 = readFileSync(fixture('chunk-v4.bin'));
+    assert.equal(new DataView(v4.buffer, v4.byteOffset).getUint32(4, true), 4);
+    const d = await decodeChunk(v4);
+    assert.equal(d.gridExponent, -12);
+    assertSame(d, gridChunk(12, 700, 6), 2 ** -13);
+    await assert.rejects(decodeChunk(v4.subarray(0, 86)), /truncated \(86 bytes, the header alone is 88\)/);
+    await assert.rejects(decodeChunk(v4.subarray(0, v4.length - 4)), new RegExp(`${v4.length - 4} bytes, its header \\(\\d+ faces, \\d+ \\+ \\d+ \\+ \\d+ \\+ \\d+ bytes of streams\\) needs ${v4.length}`));
   });
 
   test('files of versions 3 and 2 (a z in each vertex, 80-byte header) are still read', async () => {

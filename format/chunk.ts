@@ -1,9 +1,10 @@
-// The chunk file (docs/FORMAT.md, "Chunk file", version 4): surface triangles of one chunk,
+// The chunk file (docs/FORMAT.md, "Chunk file", version 5): surface triangles of one chunk,
 // compact. Ground points relative to the chunk's origin on a power-of-two grid, each once (the
 // corners of several surfaces share it), and each z (float32) once; a vertex is a point, a z
 // and the faces above and below, all as indices into chunk-local tables (the face table gives
-// each face's class). Points, z values, vertices and triangles are compressed with
-// meshoptimizer's vertex and index codecs (the glTF EXT_meshopt_compression codecs). The
+// each face's class). Points, z values and the vertices' faces are compressed with
+// meshoptimizer's vertex codec, the vertices' point and z indices with its index sequence codec
+// and the triangles with its index codec (the glTF EXT_meshopt_compression codecs). The
 // decoder expands a file to the vertex columns the GPU binds as they are (chunk-layout.ts).
 // Pure: used by the CPU slicer and the map's worker; the encoder is in chunk-encode.ts so that
 // the map does not load its WebAssembly.
@@ -12,16 +13,19 @@ import { VERTEX_BYTES, vertexColumnOffset, type VertexColumn } from './chunk-lay
 import { FormatError } from './format-error.js';
 
 export const CHUNK_MAGIC = 0x43435353; // "SSCC"
-export const CHUNK_VERSION = 4;
-/** The older version this reader still reads: no z table, a vertex holds its z (80-byte header). */
+export const CHUNK_VERSION = 5;
+/** An older version this reader still reads: one vertex stream of four lanes (88-byte header). */
+export const CHUNK_VERSION_4 = 4;
+/** An older version this reader still reads: no z table, a vertex holds its z (80-byte header). */
 export const CHUNK_VERSION_3 = 3;
 /** Version 3's layout with the grid always the box's own. */
 export const CHUNK_VERSION_2 = 2;
 /** The coarsest position grid a reader accepts, 2^MAX_POSITION_EXPONENT (every grid value stays finite in float32). */
 export const MAX_POSITION_EXPONENT = 64;
 export const NO_CLASS = 0xffff;
-/** Header bytes (docs/FORMAT.md), and those of versions 2 and 3. */
-export const CHUNK_HEADER_BYTES = 88;
+/** Header bytes (docs/FORMAT.md), and those of version 4 and of versions 2 and 3. */
+export const CHUNK_HEADER_BYTES = 96;
+const V4_HEADER_BYTES = 88;
 const OLD_HEADER_BYTES = 80;
 /**
  * Bits of the position grid: x and y are whole steps of `2^e`, with `e` at least the box's own
@@ -63,8 +67,9 @@ export const pad4 = (n: number): number => Math.ceil(n / 4) * 4;
 export const indexSizeFor = (vertices: number): 2 | 4 => (vertices <= 0xffff ? 2 : 4);
 
 /**
- * Bytes per table index in an encoded vertex: 2 while the point, z and face tables all fit a
- * u16 (in versions 2 and 3, the face table alone decided, and the point index was a u32).
+ * Bytes per table index in an encoded vertex: 2 while the tables its lanes name fit a u16 (the
+ * face table; in version 4 the point, z and face tables; in versions 2 and 3 the face table,
+ * and the point index was a u32).
  */
 export const tableIndexSizeFor = (largestTable: number): 2 | 4 => (largestTable <= 0xffff ? 2 : 4);
 
@@ -74,8 +79,11 @@ export const POINT_BYTES = 8;
 /** Bytes of one encoded z: f32. */
 export const Z_BYTES = 4;
 
-/** Bytes of one encoded vertex: its point, z, upper and lower face as table indices of `size` bytes each. */
-export const encodedVertexBytes = (size: 2 | 4): number => 4 * size;
+/** Bytes of one record of the vertex stream: its upper and lower face as face table indices of `size` bytes each. */
+export const encodedVertexBytes = (size: 2 | 4): number => 2 * size;
+
+/** Bytes of one decoded index of the index sequence streams (the vertices' points and z values). */
+const SEQUENCE_INDEX_BYTES = 4;
 
 /** The grid exponent `e` of a box (x0, y0, _, x1, y1, _): the smallest with every |x|, |y| of it below 2^(e + POSITION_BITS). */
 function positionExponent(box: ArrayLike<number>): number {
@@ -117,13 +125,20 @@ export function gridSteps(v: number, e: number): number {
 /** One number for a point in grid steps (|x|, |y| at most 2^POSITION_BITS, as gridSteps gives them): exact, and equal only for equal points. */
 export const gridPointKey = (x: number, y: number): number => (x + 2 ** POSITION_BITS) * 2 ** (POSITION_BITS + 2) + (y + 2 ** POSITION_BITS);
 
-/** Where the sections after the header start (docs/FORMAT.md), from the header's counts. */
+/**
+ * Where the sections after the header start (docs/FORMAT.md), from the header's counts. A
+ * stream an older version lacks has no length: it starts and ends where the next one starts.
+ */
 export interface ChunkSections {
   faceIds: number;
   faceClasses: number;
   points: number;
-  /** The z stream (none in versions 2 and 3: there it starts and ends where the vertices start). */
+  /** The z stream (none in versions 2 and 3). */
   zs: number;
+  /** The vertices' point indices and z indices (version 5). */
+  vertexPoints: number;
+  vertexZs: number;
+  /** The vertex stream: the vertices' faces (version 5), or all of each vertex (versions 2 to 4). */
   vertices: number;
   indices: number;
   /** The file's length. */
@@ -135,6 +150,8 @@ export interface ChunkStreams {
   faces: number;
   points: number;
   zs: number;
+  vertexPoints: number;
+  vertexZs: number;
   vertices: number;
   indices: number;
 }
@@ -144,9 +161,11 @@ export function chunkSections(s: ChunkStreams, headerBytes = CHUNK_HEADER_BYTES)
   const faceClasses = faceIds + 4 * s.faces;
   const points = pad4(faceClasses + 2 * s.faces);
   const zs = pad4(points + s.points);
-  const vertices = pad4(zs + s.zs);
+  const vertexPoints = pad4(zs + s.zs);
+  const vertexZs = pad4(vertexPoints + s.vertexPoints);
+  const vertices = pad4(vertexZs + s.vertexZs);
   const indices = pad4(vertices + s.vertices);
-  return { faceIds, faceClasses, points, zs, vertices, indices, end: pad4(indices + s.indices) };
+  return { faceIds, faceClasses, points, zs, vertexPoints, vertexZs, vertices, indices, end: pad4(indices + s.indices) };
 }
 
 /** Bytes of a decoded chunk: the vertex columns, then the indices. */
@@ -189,12 +208,13 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   const dv = new DataView(b.buffer, b.byteOffset, b.byteLength);
   if (dv.getUint32(0, true) !== CHUNK_MAGIC) throw fail('not a chunk file (bad magic)');
   const version = dv.getUint32(4, true);
-  if (version !== CHUNK_VERSION && version !== CHUNK_VERSION_3 && version !== CHUNK_VERSION_2) {
+  if (version !== CHUNK_VERSION && version !== CHUNK_VERSION_4 && version !== CHUNK_VERSION_3 && version !== CHUNK_VERSION_2) {
     throw fail(`chunk version ${version}, this reader knows only versions ${CHUNK_VERSION_2} to ${CHUNK_VERSION} (rebuild the cube with ssc build)`);
   }
-  // Versions 2 and 3: no z table, the z in each vertex.
-  const zTable = version === CHUNK_VERSION;
-  const headerBytes = zTable ? CHUNK_HEADER_BYTES : OLD_HEADER_BYTES;
+  // Versions 2 and 3: no z table, the z in each vertex. Version 4: the vertices' point and z
+  // indices in the vertex stream beside their faces.
+  const zTable = version >= CHUNK_VERSION_4, sequences = version === CHUNK_VERSION;
+  const headerBytes = sequences ? CHUNK_HEADER_BYTES : zTable ? V4_HEADER_BYTES : OLD_HEADER_BYTES;
   if (b.byteLength < headerBytes) throw fail(`truncated (${b.byteLength} bytes, the header alone is ${headerBytes})`);
   const V = dv.getUint32(8, true), T = dv.getUint32(12, true);
   const box = new Float32Array(6);
@@ -207,28 +227,35 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   const F = dv.getUint32(60, true), P = dv.getUint32(64, true);
   const u32 = (o: number): number => dv.getUint32(o, true);
   const Z = zTable ? u32(68) : 0;
-  const streams: ChunkStreams = zTable
-    ? { faces: F, points: u32(72), zs: u32(76), vertices: u32(80), indices: u32(84) }
-    : { faces: F, points: u32(68), zs: 0, vertices: u32(72), indices: u32(76) };
+  const streams: ChunkStreams = sequences
+    ? { faces: F, points: u32(72), zs: u32(76), vertexPoints: u32(80), vertexZs: u32(84), vertices: u32(88), indices: u32(92) }
+    : zTable
+      ? { faces: F, points: u32(72), zs: u32(76), vertexPoints: 0, vertexZs: 0, vertices: u32(80), indices: u32(84) }
+      : { faces: F, points: u32(68), zs: 0, vertexPoints: 0, vertexZs: 0, vertices: u32(72), indices: u32(76) };
   // Bounds that hold in every chunk (each point and z used by a vertex, each vertex by a
-  // triangle, the index codec's byte per triangle): a damaged count is refused before anything
-  // is allocated.
+  // triangle, the index codecs' byte per triangle and per index): a damaged count is refused
+  // before anything is allocated.
   if (T > streams.indices) throw fail(`${T} triangles cannot fit an index stream of ${streams.indices} bytes`);
   if (V > 3 * T || P > V || Z > V || F > 2 * V) {
     throw fail(`counts out of bounds (${T} triangles, ${V} vertices, ${P} points,${zTable ? ` ${Z} z values,` : ''} ${F} faces)`);
   }
+  if (sequences && (V > streams.vertexPoints || V > streams.vertexZs)) {
+    throw fail(`${V} vertices cannot fit point and z index streams of ${streams.vertexPoints} and ${streams.vertexZs} bytes`);
+  }
   const sec = chunkSections(streams, headerBytes);
   if (b.byteLength !== sec.end) {
-    const lengths = [streams.points, ...(zTable ? [streams.zs] : []), streams.vertices, streams.indices].join(' + ');
+    const lengths = [streams.points, ...(zTable ? [streams.zs] : []), ...(sequences ? [streams.vertexPoints, streams.vertexZs] : []), streams.vertices, streams.indices].join(' + ');
     throw fail(`${b.byteLength} bytes, its header (${F} faces, ${lengths} bytes of streams) needs ${sec.end}`);
   }
-  const localSize = zTable ? tableIndexSizeFor(Math.max(P, Z, F)) : tableIndexSizeFor(F), indexSize = indexSizeFor(V);
+  const localSize = sequences || !zTable ? tableIndexSizeFor(F) : tableIndexSizeFor(Math.max(P, Z, F)), indexSize = indexSizeFor(V);
   await MeshoptDecoder.ready;
 
-  // Versions 2 and 3: u32 point, f32 z, then the two face indices.
-  const stride = zTable ? encodedVertexBytes(localSize) : 8 + 2 * localSize;
+  // Version 5: the two face indices; version 4: point, z and the face indices; versions 2 and
+  // 3: u32 point, f32 z, then the face indices.
+  const stride = sequences ? encodedVertexBytes(localSize) : zTable ? 4 * localSize : 8 + 2 * localSize;
   const rawPoints = new Uint8Array(P * POINT_BYTES);
   const rawZs = new Uint8Array(Z * Z_BYTES);
+  const pointOf = new Uint32Array(sequences ? V : 0), zOf = new Uint32Array(sequences ? V : 0);
   const raw = new Uint8Array(V * stride);
   const out = new ArrayBuffer(decodedByteLength(V, T));
   const indexOffset = pad4(V * VERTEX_BYTES);
@@ -237,6 +264,10 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   try {
     if (P > 0) MeshoptDecoder.decodeVertexBuffer(rawPoints, P, POINT_BYTES, stream(sec.points, streams.points));
     if (Z > 0) MeshoptDecoder.decodeVertexBuffer(rawZs, Z, Z_BYTES, stream(sec.zs, streams.zs));
+    if (sequences && V > 0) {
+      MeshoptDecoder.decodeIndexSequence(new Uint8Array(pointOf.buffer), V, SEQUENCE_INDEX_BYTES, stream(sec.vertexPoints, streams.vertexPoints));
+      MeshoptDecoder.decodeIndexSequence(new Uint8Array(zOf.buffer), V, SEQUENCE_INDEX_BYTES, stream(sec.vertexZs, streams.vertexZs));
+    }
     if (V > 0) MeshoptDecoder.decodeVertexBuffer(raw, V, stride, stream(sec.vertices, streams.vertices));
     if (T > 0) MeshoptDecoder.decodeIndexBuffer(indexBytes, 3 * T, indexSize, stream(sec.indices, streams.indices));
   } catch (err) {
@@ -250,14 +281,14 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   const zs = new Float32Array(rawZs.buffer);
   const lanes = localSize === 2 ? new Uint16Array(raw.buffer) : new Uint32Array(raw.buffer);
   const words = new Uint32Array(raw.buffer), floats = new Float32Array(raw.buffer);
-  const w = stride / 4, h = stride / localSize, faceLane = zTable ? 2 : 8 / localSize;
+  const w = stride / 4, h = stride / localSize, faceLane = sequences ? 0 : zTable ? 2 : 8 / localSize;
   const step = 2 ** e;
   for (let k = 0; k < V; k++) {
-    const p = zTable ? lanes[k * h]! : words[k * w]!;
+    const p = sequences ? pointOf[k]! : zTable ? lanes[k * h]! : words[k * w]!;
     if (p >= P) throw fail(`vertex ${k} names point ${p} of ${P}`);
     let z: number;
     if (zTable) {
-      const zi = lanes[k * h + 1]!;
+      const zi = sequences ? zOf[k]! : lanes[k * h + 1]!;
       if (zi >= Z) throw fail(`vertex ${k} names z value ${zi} of ${Z}`);
       z = zs[zi]!;
     } else {
