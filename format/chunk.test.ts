@@ -7,8 +7,9 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { describe, test } from 'node:test';
 import { fileURLToPath } from 'node:url';
-import { encodeChunk, orderForCodecs, type ChunkInput } from './chunk-encode.js';
+import { encodeChunk, encodeFaceStream, orderForCodecs, type ChunkInput } from './chunk-encode.js';
 import { VERTEX_BYTES, VERTEX_COLUMNS, vertexColumnOffset } from './chunk-layout.js';
+import { MeshoptDecoder } from 'meshoptimizer/decoder';
 import { CHUNK_MAGIC, ChunkFormatError, decodeChunk, type DecodedChunk } from './chunk.js';
 
 const fixture = (name: string): string => path.join(path.dirname(fileURLToPath(import.meta.url)), 'testdata', name);
@@ -113,7 +114,7 @@ function assertSame(d: DecodedChunk, c: ChunkInput, tol: number): void {
 }
 
 describe('chunk file', () => {
-  test('the encoder writes the documented header and face table', () => {
+  test('the encoder writes the documented header and face table', async () => {
     const bytes = encodeChunk(square());
     const dv = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
     assert.equal(dv.getUint32(0, true), 0x43435353);
@@ -128,12 +129,16 @@ describe('chunk file', () => {
     assert.equal(dv.getUint32(60, true), 3, 'faces 7, 0 and 8');
     assert.equal(dv.getUint32(64, true), 4, 'points: the four corners');
     assert.equal(dv.getUint32(68, true), 2, 'z values 3 and 5');
-    const [pointStream, zStream, vertexPoints, vertexZs, vertexStream, indexStream] = [72, 76, 80, 84, 88, 92].map((o) => dv.getUint32(o, true));
-    // Face ids at 96 (3 x u32), classes at 108 (3 x u16, padded to 116), then the streams.
-    assert.deepEqual([0, 1, 2].map((i) => dv.getUint32(96 + 4 * i, true)), [7, 0, 8], 'in order of first mention, upper before lower');
-    assert.deepEqual([0, 1, 2].map((i) => dv.getUint16(108 + 2 * i, true)), [2, 0xffff, 4]);
-    assert.equal(bytes[116], 0xa1, 'the point stream starts at 116 with the vertex codec\'s version-1 header byte');
-    const zAt = (116 + pointStream! + 3) & ~3;
+    const [faceStream, pointStream, zStream, vertexPoints, vertexZs, vertexStream, indexStream] = [72, 76, 80, 84, 88, 92, 96].map((o) => dv.getUint32(o, true));
+    // The face stream at 100: records of u32 id, u32 class through the vertex codec.
+    assert.equal(bytes[100], 0xa1, 'the face stream starts at 100 with the vertex codec\'s version-1 header byte');
+    await MeshoptDecoder.ready;
+    const faces = new Uint32Array(6);
+    MeshoptDecoder.decodeVertexBuffer(new Uint8Array(faces.buffer), 3, 8, bytes.subarray(100, 100 + faceStream!));
+    assert.deepEqual([...faces], [7, 2, 0, 0xffff, 8, 4], 'ids in order of first mention (upper before lower), each with its class');
+    const pointAt = (100 + faceStream! + 3) & ~3;
+    assert.equal(bytes[pointAt], 0xa1, 'the point stream at the next multiple of 4');
+    const zAt = (pointAt + pointStream! + 3) & ~3;
     assert.equal(bytes[zAt], 0xa1, 'the z stream at the next multiple of 4');
     const vertexPointsAt = (zAt + zStream! + 3) & ~3;
     assert.equal(bytes[vertexPointsAt], 0xd1, 'the vertices\' point indices at the next multiple of 4, with the index sequence codec\'s header byte');
@@ -283,14 +288,14 @@ describe('chunk file', () => {
     const refuses = async (b: Uint8Array, pattern: RegExp): Promise<void> => {
       await assert.rejects(decodeChunk(b, 'c-x.bin'), (e: unknown) => e instanceof ChunkFormatError && e.message.startsWith('c-x.bin: ') && pattern.test(e.message));
     };
-    await refuses(good.subarray(0, 40), /truncated \(40 bytes, the header alone is 96\)/);
+    await refuses(good.subarray(0, 40), /truncated \(40 bytes, the header alone is 100\)/);
     await refuses(good.subarray(0, 3), /truncated/);
     await refuses(damaged((dv) => dv.setUint32(0, CHUNK_MAGIC + 1, true)), /bad magic/);
     await refuses(damaged((dv) => dv.setUint32(4, 1, true)), /chunk version 1, this reader knows only versions 2 to 5 \(rebuild the cube with ssc build\)/);
     await refuses(damaged((dv) => dv.setUint32(4, 6, true)), /chunk version 6/);
     await refuses(good.subarray(0, good.length - 4), new RegExp(`${good.length - 4} bytes, its header .* needs ${good.length}`));
     // An index stream length near 2^32 would wrap the sum of the lengths round to the file's length.
-    await refuses(damaged((dv) => dv.setUint32(92, 2 ** 32 - 64, true)), /bytes, its header .* needs 4\d{9}$/);
+    await refuses(damaged((dv) => dv.setUint32(96, 2 ** 32 - 64, true)), /bytes, its header .* needs 4\d{9}$/);
     await refuses(damaged((dv) => dv.setInt32(56, -24, true)), /position step 2\^-24 does not fit its box \(2\^-23 to 2\^64\)/);
     await refuses(damaged((dv) => dv.setInt32(56, 65, true)), /position step 2\^65 does not fit its box \(2\^-23 to 2\^64\)/);
     // Version 2 knew only the box's own grid: the version-3 fixture, on a coarser one, called version 2.
@@ -304,11 +309,21 @@ describe('chunk file', () => {
     await refuses(damaged((dv) => dv.setUint32(12, 2 ** 30, true)), /1073741824 triangles cannot fit an index stream of \d+ bytes/);
     await refuses(damaged((dv) => dv.setUint32(64, 5, true)), /counts out of bounds \(2 triangles, 4 vertices, 5 points, 2 z values, 3 faces\)/);
     await refuses(damaged((dv) => dv.setUint32(68, 5, true)), /counts out of bounds \(2 triangles, 4 vertices, 4 points, 5 z values, 3 faces\)/);
-    await refuses(damaged((dv) => dv.setUint32(80, 3, true)), /4 vertices cannot fit point and z index streams of 3 and 9 bytes/);
-    await refuses(damaged((_, b) => { b[116] = 0; }), /compressed points, z values, vertices or triangles do not decode/);
+    await refuses(damaged((dv) => dv.setUint32(84, 3, true)), /4 vertices cannot fit point and z index streams of 3 and 9 bytes/);
+    await refuses(damaged((_, b) => { b[100] = 0; }), /compressed faces, points, z values, vertices or triangles do not decode/);
+    // A face stream whose second face has a class beyond the u16 column (0xffff is face 0's).
+    const oldFaces = new DataView(good.buffer, good.byteOffset).getUint32(72, true);
+    const badFaces = encodeFaceStream([7, 0, 8], [2, 0x10000, 4]);
+    const rest = good.subarray((100 + oldFaces + 3) & ~3);
+    const withBad = new Uint8Array(((100 + badFaces.length + 3) & ~3) + rest.length);
+    withBad.set(good.subarray(0, 100));
+    new DataView(withBad.buffer).setUint32(72, badFaces.length, true);
+    withBad.set(badFaces, 100);
+    withBad.set(rest, (100 + badFaces.length + 3) & ~3);
+    await refuses(withBad, /face 0 has class 65536/);
     // A vertex's point index beyond the 4 points (the first index's delta made 2 larger).
     const head = new DataView(good.buffer, good.byteOffset);
-    const vp = 116 + ((head.getUint32(72, true) + 3) & ~3) + ((head.getUint32(76, true) + 3) & ~3);
+    const vp = [72, 76, 80].reduce((at, o) => at + ((head.getUint32(o, true) + 3) & ~3), 100);
     assert.equal(good[vp], 0xd1, 'the point index stream where the header says');
     await refuses(damaged((_, b) => { b[vp + 1] = 8; }), /vertex \d names point [4-9] of 4/);
   });

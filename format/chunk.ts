@@ -2,8 +2,8 @@
 // compact. Ground points relative to the chunk's origin on a power-of-two grid, each once (the
 // corners of several surfaces share it), and each z (float32) once; a vertex is a point, a z
 // and the faces above and below, all as indices into chunk-local tables (the face table gives
-// each face's class). Points, z values and the vertices' faces are compressed with
-// meshoptimizer's vertex codec, the vertices' point and z indices with its index sequence codec
+// each face's class). The face table, points, z values and the vertices' faces are compressed
+// with meshoptimizer's vertex codec, the vertices' point and z indices with its index sequence codec
 // and the triangles with its index codec (the glTF EXT_meshopt_compression codecs). The
 // decoder expands a file to the vertex columns the GPU binds as they are (chunk-layout.ts).
 // Pure: used by the CPU slicer and the map's worker; the encoder is in chunk-encode.ts so that
@@ -24,7 +24,7 @@ export const CHUNK_VERSION_2 = 2;
 export const MAX_POSITION_EXPONENT = 64;
 export const NO_CLASS = 0xffff;
 /** Header bytes (docs/FORMAT.md), and those of version 4 and of versions 2 and 3. */
-export const CHUNK_HEADER_BYTES = 96;
+export const CHUNK_HEADER_BYTES = 100;
 const V4_HEADER_BYTES = 88;
 const OLD_HEADER_BYTES = 80;
 /**
@@ -79,6 +79,9 @@ export const POINT_BYTES = 8;
 /** Bytes of one encoded z: f32. */
 export const Z_BYTES = 4;
 
+/** Bytes of one record of the face stream: u32 face id, u32 class index (the floor chunk file's face record too). */
+export const FACE_RECORD_BYTES = 8;
+
 /** Bytes of one record of the vertex stream: its upper and lower face as face table indices of `size` bytes each. */
 export const encodedVertexBytes = (size: 2 | 4): number => 2 * size;
 
@@ -130,8 +133,11 @@ export const gridPointKey = (x: number, y: number): number => (x + 2 ** POSITION
  * stream an older version lacks has no length: it starts and ends where the next one starts.
  */
 export interface ChunkSections {
+  /** The face table, raw (versions 2 to 4). */
   faceIds: number;
   faceClasses: number;
+  /** The face table through the codec (version 5). */
+  faces: number;
   points: number;
   /** The z stream (none in versions 2 and 3). */
   zs: number;
@@ -147,6 +153,9 @@ export interface ChunkSections {
 
 /** The lengths a header gives: of the face table (entries) and of each compressed stream (bytes). */
 export interface ChunkStreams {
+  /** Entries of the raw face table (versions 2 to 4; 0 in version 5). */
+  faceTable: number;
+  /** Bytes of the face stream (version 5). */
   faces: number;
   points: number;
   zs: number;
@@ -158,14 +167,15 @@ export interface ChunkStreams {
 
 export function chunkSections(s: ChunkStreams, headerBytes = CHUNK_HEADER_BYTES): ChunkSections {
   const faceIds = headerBytes;
-  const faceClasses = faceIds + 4 * s.faces;
-  const points = pad4(faceClasses + 2 * s.faces);
+  const faceClasses = faceIds + 4 * s.faceTable;
+  const faces = pad4(faceClasses + 2 * s.faceTable);
+  const points = pad4(faces + s.faces);
   const zs = pad4(points + s.points);
   const vertexPoints = pad4(zs + s.zs);
   const vertexZs = pad4(vertexPoints + s.vertexPoints);
   const vertices = pad4(vertexZs + s.vertexZs);
   const indices = pad4(vertices + s.vertices);
-  return { faceIds, faceClasses, points, zs, vertexPoints, vertexZs, vertices, indices, end: pad4(indices + s.indices) };
+  return { faceIds, faceClasses, faces, points, zs, vertexPoints, vertexZs, vertices, indices, end: pad4(indices + s.indices) };
 }
 
 /** Bytes of a decoded chunk: the vertex columns, then the indices. */
@@ -228,10 +238,10 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   const u32 = (o: number): number => dv.getUint32(o, true);
   const Z = zTable ? u32(68) : 0;
   const streams: ChunkStreams = sequences
-    ? { faces: F, points: u32(72), zs: u32(76), vertexPoints: u32(80), vertexZs: u32(84), vertices: u32(88), indices: u32(92) }
+    ? { faceTable: 0, faces: u32(72), points: u32(76), zs: u32(80), vertexPoints: u32(84), vertexZs: u32(88), vertices: u32(92), indices: u32(96) }
     : zTable
-      ? { faces: F, points: u32(72), zs: u32(76), vertexPoints: 0, vertexZs: 0, vertices: u32(80), indices: u32(84) }
-      : { faces: F, points: u32(68), zs: 0, vertexPoints: 0, vertexZs: 0, vertices: u32(72), indices: u32(76) };
+      ? { faceTable: F, faces: 0, points: u32(72), zs: u32(76), vertexPoints: 0, vertexZs: 0, vertices: u32(80), indices: u32(84) }
+      : { faceTable: F, faces: 0, points: u32(68), zs: 0, vertexPoints: 0, vertexZs: 0, vertices: u32(72), indices: u32(76) };
   // Bounds that hold in every chunk (each point and z used by a vertex, each vertex by a
   // triangle, the index codecs' byte per triangle and per index): a damaged count is refused
   // before anything is allocated.
@@ -244,7 +254,7 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   }
   const sec = chunkSections(streams, headerBytes);
   if (b.byteLength !== sec.end) {
-    const lengths = [streams.points, ...(zTable ? [streams.zs] : []), ...(sequences ? [streams.vertexPoints, streams.vertexZs] : []), streams.vertices, streams.indices].join(' + ');
+    const lengths = [...(sequences ? [streams.faces] : []), streams.points, ...(zTable ? [streams.zs] : []), ...(sequences ? [streams.vertexPoints, streams.vertexZs] : []), streams.vertices, streams.indices].join(' + ');
     throw fail(`${b.byteLength} bytes, its header (${F} faces, ${lengths} bytes of streams) needs ${sec.end}`);
   }
   const localSize = sequences || !zTable ? tableIndexSizeFor(F) : tableIndexSizeFor(Math.max(P, Z, F)), indexSize = indexSizeFor(V);
@@ -253,6 +263,7 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   // Version 5: the two face indices; version 4: point, z and the face indices; versions 2 and
   // 3: u32 point, f32 z, then the face indices.
   const stride = sequences ? encodedVertexBytes(localSize) : zTable ? 4 * localSize : 8 + 2 * localSize;
+  const rawFaces = new Uint32Array(sequences ? 2 * F : 0);
   const rawPoints = new Uint8Array(P * POINT_BYTES);
   const rawZs = new Uint8Array(Z * Z_BYTES);
   const pointOf = new Uint32Array(sequences ? V : 0), zOf = new Uint32Array(sequences ? V : 0);
@@ -262,6 +273,7 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   const indexBytes = new Uint8Array(out, indexOffset, 3 * T * indexSize);
   const stream = (at: number, length: number): Uint8Array => b.subarray(at, at + length);
   try {
+    if (sequences && F > 0) MeshoptDecoder.decodeVertexBuffer(new Uint8Array(rawFaces.buffer), F, FACE_RECORD_BYTES, stream(sec.faces, streams.faces));
     if (P > 0) MeshoptDecoder.decodeVertexBuffer(rawPoints, P, POINT_BYTES, stream(sec.points, streams.points));
     if (Z > 0) MeshoptDecoder.decodeVertexBuffer(rawZs, Z, Z_BYTES, stream(sec.zs, streams.zs));
     if (sequences && V > 0) {
@@ -271,11 +283,24 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
     if (V > 0) MeshoptDecoder.decodeVertexBuffer(raw, V, stride, stream(sec.vertices, streams.vertices));
     if (T > 0) MeshoptDecoder.decodeIndexBuffer(indexBytes, 3 * T, indexSize, stream(sec.indices, streams.indices));
   } catch (err) {
-    throw fail(`its compressed points, z values, vertices or triangles do not decode (${(err as Error).message})`);
+    throw fail(`its compressed ${sequences ? 'faces, ' : ''}points, z values, vertices or triangles do not decode (${(err as Error).message})`);
   }
 
-  const faceIds = new Uint32Array(b.buffer, b.byteOffset + sec.faceIds, F);
-  const faceClasses = new Uint16Array(b.buffer, b.byteOffset + sec.faceClasses, F);
+  let faceIds: Uint32Array, faceClasses: Uint16Array;
+  if (sequences) {
+    faceIds = new Uint32Array(F);
+    faceClasses = new Uint16Array(F);
+    for (let f = 0; f < F; f++) {
+      const id = rawFaces[2 * f]!, cls = rawFaces[2 * f + 1]!;
+      // NO_CLASS is face 0's: nothing below.
+      if (cls > NO_CLASS) throw fail(`face ${id} has class ${cls}`);
+      faceIds[f] = id;
+      faceClasses[f] = cls;
+    }
+  } else {
+    faceIds = new Uint32Array(b.buffer, b.byteOffset + sec.faceIds, F);
+    faceClasses = new Uint16Array(b.buffer, b.byteOffset + sec.faceClasses, F);
+  }
   const { positions, upper, lower, upperClass, lowerClass } = columnViews(out, V);
   const points = new Int32Array(rawPoints.buffer);
   const zs = new Float32Array(rawZs.buffer);

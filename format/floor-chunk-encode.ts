@@ -3,9 +3,9 @@
 // decoder in floor-chunk.ts: a file of its own so that the map does not load the encoder's
 // WebAssembly. Used by the build (Node). Same input, same bytes.
 import { gridExponentFor, gridPointKey, gridSteps, NO_CLASS, POINT_BYTES } from './chunk.js';
-import { encodeRecords } from './chunk-encode.js';
+import { encodeFaceStream, encodeRecords } from './chunk-encode.js';
 import {
-  cycleFaces, distinctPoints, FLOOR_CONTINUES, FLOOR_CYCLE_BYTES, FLOOR_FACE_BYTES, FLOOR_MAGIC, FLOOR_TRIANGLE_BYTES, floorCycles, floorEdgeBytes,
+  cycleFaces, distinctPoints, FLOOR_CONTINUES, FLOOR_CYCLE_BYTES, FLOOR_MAGIC, FLOOR_TRIANGLE_BYTES, floorCycles, floorEdgeBytes,
   floorEdgeLaneSize, floorFaceTriangles, floorSections, type FloorContent,
 } from './floor-chunk.js';
 
@@ -195,13 +195,10 @@ export function writeFloorChunk(f: FloorFile): Uint8Array {
     records[lanes * k + lanes - 1] = skip ? FLOOR_CONTINUES : 0;
     end = c.edgeStart[k]! + c.edgeCount[k]!;
   }
-  const faceRecords = new Uint32Array(2 * F);
   for (let i = 0; i < F; i++) {
     if (!(f.faceClasses[i]! >= 0 && f.faceClasses[i]! < NO_CLASS)) throw new Error(`floor chunk writer: face ${f.faceIds[i]} has class ${f.faceClasses[i]}, a class index is below ${NO_CLASS}`);
-    faceRecords[2 * i] = f.faceIds[i]!;
-    faceRecords[2 * i + 1] = f.faceClasses[i]!;
   }
-  const faceStream = faces ? encodeRecords(faceRecords.buffer, F, FLOOR_FACE_BYTES) : new Uint8Array(0);
+  const faceStream = faces ? encodeFaceStream(f.faceIds, f.faceClasses) : new Uint8Array(0);
   const cycleStream = faces ? encodeRecords(faces.buffer, faces.length, FLOOR_CYCLE_BYTES) : new Uint8Array(0);
   const edgeStream = encodeRecords(records.buffer, E, floorEdgeBytes(size, version));
   const pointStream = encodeRecords(c.points.buffer, P, POINT_BYTES);

@@ -11,7 +11,7 @@
 import { MeshoptDecoder } from 'meshoptimizer/decoder';
 import { VERTEX_BYTES } from './chunk-layout.js';
 import {
-  ChunkFormatError, columnViews, decodedByteLength, indexSizeFor, NO_CLASS, pad4, POINT_BYTES, positionGridProblem, tableIndexSizeFor,
+  ChunkFormatError, columnViews, decodedByteLength, FACE_RECORD_BYTES, indexSizeFor, NO_CLASS, pad4, POINT_BYTES, positionGridProblem, tableIndexSizeFor,
   type DecodedChunk,
 } from './chunk.js';
 import { earcutFace, type FaceEdge } from './face-rings.js';
@@ -23,8 +23,6 @@ export const FLOOR_HEADER_BYTES = 84;
 export const FLOOR_V1_HEADER_BYTES = 72;
 /** Bytes of one triangle record: three point indices and the face's table position (u32 each). */
 export const FLOOR_TRIANGLE_BYTES = 16;
-/** Bytes of one face record (version 2): face id, class index (u32 each). */
-export const FLOOR_FACE_BYTES = 8;
 /** Bytes of one cycle record (version 2): the face it bounds (table position + 1; 0 none), u32. */
 export const FLOOR_CYCLE_BYTES = 4;
 
@@ -269,7 +267,7 @@ export async function decodeFloorChunk(input: Uint8Array | ArrayBuffer, name = '
   // beyond what its stream could hold is refused before anything is allocated for it.
   const holds = (n: number, stride: number, length: number): boolean => n * stride <= MAX_CODEC_RATIO * length;
   if (!holds(E, edgeBytes, len.edges) || !holds(P, POINT_BYTES, len.points) || !holds(Tg, FLOOR_TRIANGLE_BYTES, len.triangles) || (Tg === 0 && len.triangles > 0)
-    || (version === 2 && (!holds(F, FLOOR_FACE_BYTES, len.faces) || !holds(C, FLOOR_CYCLE_BYTES, len.cycles)))) {
+    || (version === 2 && (!holds(F, FACE_RECORD_BYTES, len.faces) || !holds(C, FLOOR_CYCLE_BYTES, len.cycles)))) {
     throw fail(`counts out of bounds for their streams (${E} edges in ${len.edges} bytes, ${P} points in ${len.points}, ${Tg} triangles in ${len.triangles}${version === 2 ? `, ${F} faces in ${len.faces}, ${C} cycles in ${len.cycles}` : ''})`);
   }
   const rawEdges = new Uint8Array(E * edgeBytes);
@@ -280,7 +278,7 @@ export async function decodeFloorChunk(input: Uint8Array | ArrayBuffer, name = '
   const stream = (at: number, length: number): Uint8Array => b.subarray(at, at + length);
   try {
     if (version === 2) {
-      MeshoptDecoder.decodeVertexBuffer(new Uint8Array(rawFaces.buffer), F, FLOOR_FACE_BYTES, stream(sec.faces, len.faces));
+      MeshoptDecoder.decodeVertexBuffer(new Uint8Array(rawFaces.buffer), F, FACE_RECORD_BYTES, stream(sec.faces, len.faces));
       MeshoptDecoder.decodeVertexBuffer(new Uint8Array(rawCycles.buffer), C, FLOOR_CYCLE_BYTES, stream(sec.cycles, len.cycles));
     }
     MeshoptDecoder.decodeVertexBuffer(rawEdges, E, edgeBytes, stream(sec.edges, len.edges));
