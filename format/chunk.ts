@@ -3,8 +3,8 @@
 // corners of several surfaces share it), and each z (float32) once; a vertex is a point, a z
 // and the faces above and below, all as indices into chunk-local tables (the face table gives
 // each face's class). The face table, points, z values and the vertices' faces are compressed
-// with meshoptimizer's vertex codec, the vertices' point and z indices with its index sequence codec
-// and the triangles with its index codec (the glTF EXT_meshopt_compression codecs). The
+// with meshoptimizer's vertex codec, the vertices' point and z indices with its index sequence
+// codec and the triangles with its index codec (the glTF EXT_meshopt_compression codecs). The
 // decoder expands a file to the vertex columns the GPU binds as they are (chunk-layout.ts).
 // Pure: used by the CPU slicer and the map's worker; the encoder is in chunk-encode.ts so that
 // the map does not load its WebAssembly.
