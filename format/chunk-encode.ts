@@ -11,7 +11,7 @@
 import { MeshoptEncoder } from 'meshoptimizer/encoder';
 import {
   CHUNK_MAGIC, CHUNK_VERSION, chunkSections, encodedVertexBytes, FACE_RECORD_BYTES, gridExponentFor, gridPointKey, gridSteps, indexSizeFor,
-  POINT_BYTES, tableIndexSizeFor, Z_BYTES,
+  NO_CLASS, POINT_BYTES, tableIndexSizeFor, Z_BYTES,
 } from './chunk.js';
 
 await MeshoptEncoder.ready;
@@ -83,6 +83,9 @@ function faceTable(c: ChunkInput): { ids: number[]; classes: number[]; local: Ma
   const add = (face: number, cls: number): void => {
     const i = local.get(face);
     if (i === undefined) {
+      // A u32 id and a class of the decoder's u16 column (NO_CLASS, 0xffff, is face 0's).
+      if (!(Number.isInteger(face) && face >= 0 && face <= 0xffffffff)) throw new Error(`chunk encoder: face id ${face} is not a u32`);
+      if (!(Number.isInteger(cls) && cls >= 0 && cls <= NO_CLASS)) throw new Error(`chunk encoder: face ${face} has class ${cls}, a class index is 0 to ${NO_CLASS}`);
       local.set(face, ids.length);
       ids.push(face);
       classes.push(cls);

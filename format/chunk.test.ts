@@ -148,6 +148,15 @@ describe('chunk file', () => {
     assert.equal(bytes[vertexZsAt], 0xd1, 'then their z indices');
     const vertexAt = (vertexZsAt + vertexZs! + 3) & ~3;
     assert.equal(bytes[vertexAt], 0xa1, 'the vertex stream (faces) at the next multiple of 4');
+    // What each stream holds, vertex by vertex: corners (0,0), (1,0), (1,1), (0,1); z 3, 3, 5, 3;
+    // faces 7 over 0 but 8 over 7 at the tilted corner (table places 0, 1 and 2).
+    const pointIndices = new Uint32Array(4), zIndices = new Uint32Array(4), faceLanes = new Uint16Array(8);
+    MeshoptDecoder.decodeIndexSequence(new Uint8Array(pointIndices.buffer), 4, 4, bytes.subarray(vertexPointsAt, vertexPointsAt + vertexPoints));
+    MeshoptDecoder.decodeIndexSequence(new Uint8Array(zIndices.buffer), 4, 4, bytes.subarray(vertexZsAt, vertexZsAt + vertexZs!));
+    MeshoptDecoder.decodeVertexBuffer(new Uint8Array(faceLanes.buffer), 4, 4, bytes.subarray(vertexAt, vertexAt + vertexStream!));
+    assert.deepEqual([...pointIndices], [0, 1, 2, 3]);
+    assert.deepEqual([...zIndices], [0, 0, 1, 0]);
+    assert.deepEqual([...faceLanes], [0, 1, 0, 1, 2, 0, 0, 1], 'upper, then lower, u16 each');
     const indexAt = (vertexAt + vertexStream! + 3) & ~3;
     assert.equal(bytes[indexAt], 0xe1, 'the index stream at the next multiple of 4, with the index codec\'s header byte');
     assert.equal(bytes.byteLength, (indexAt + indexStream! + 3) & ~3);
@@ -218,7 +227,7 @@ describe('chunk file', () => {
     assert.deepEqual(encodeChunk(await decodeChunk(bytes)), bytes);
   });
 
-  test('more than 65535 vertices take 32-bit indices; more than 65535 points, z values or faces 32-bit table indices', async () => {
+  test('more than 65535 vertices take 32-bit indices, more than 65535 faces 32-bit face lanes; 65538 points or z values come back', async () => {
     // Degenerate triangles, each of its own face; `V` vertices, `pointAt` and `zAt` say how many distinct.
     const chunk = (V: number, pointAt: (i: number) => [number, number], zAt: (i: number) => number): ChunkInput => {
       const positions = new Float32Array(3 * V);
@@ -234,7 +243,7 @@ describe('chunk file', () => {
     const d = await decodeChunk(encodeChunk(few));
     assert.ok(d.indices instanceof Uint32Array);
     assertSame(d, few, 0);
-    // Each would wrap round in a u16 lane and name the wrong point, z or face.
+    // The point and z indices beyond a u16 (index sequences), and the faces in 4-byte lanes.
     const manyPoints = chunk(65538, (i) => [i % 1000, Math.floor(i / 1000)], () => 0);
     assertSame(await decodeChunk(encodeChunk(manyPoints)), manyPoints, 0);
     const manyZ = chunk(65538, () => [0, 0], (i) => i);
@@ -266,7 +275,7 @@ describe('chunk file', () => {
     assert.ok(after < before, `${after} bytes reordered, ${before} scattered`);
   });
 
-  test('the encoder refuses a face with two classes, a vertex outside the box and a vertex in no triangle', () => {
+  test('the encoder refuses a face with two classes, a vertex outside the box, a vertex in no triangle and a class beyond a u16', () => {
     const c = square();
     c.upperClass = Uint16Array.of(2, 2, 4, 3);
     assert.throws(() => encodeChunk(c), /face 7 has class 2 at one vertex and 3 at another/);
@@ -276,6 +285,10 @@ describe('chunk file', () => {
     const unused = square();
     unused.indices = Uint16Array.of(0, 1, 2);
     assert.throws(() => encodeChunk(unused), /vertex 3 is in no triangle/);
+    // A class the decoder's u16 column cannot hold, which it would refuse.
+    const wide = square();
+    wide.upperClass = Uint32Array.of(70000, 70000, 4, 70000);
+    assert.throws(() => encodeChunk(wide), /face 7 has class 70000, a class index is 0 to 65535/);
   });
 
   test('a damaged, truncated or old file is refused and the message says why', async () => {
@@ -310,6 +323,7 @@ describe('chunk file', () => {
     await refuses(damaged((dv) => dv.setUint32(64, 5, true)), /counts out of bounds \(2 triangles, 4 vertices, 5 points, 2 z values, 3 faces\)/);
     await refuses(damaged((dv) => dv.setUint32(68, 5, true)), /counts out of bounds \(2 triangles, 4 vertices, 4 points, 5 z values, 3 faces\)/);
     await refuses(damaged((dv) => dv.setUint32(84, 3, true)), /4 vertices cannot fit point and z index streams of 3 and 9 bytes/);
+    await refuses(damaged((dv) => dv.setUint32(88, 3, true)), /4 vertices cannot fit point and z index streams of 9 and 3 bytes/);
     await refuses(damaged((_, b) => { b[100] = 0; }), /compressed faces, points, z values, vertices or triangles do not decode/);
     // A face stream whose second face has a class beyond the u16 column (0xffff is face 0's).
     const oldFaces = new DataView(good.buffer, good.byteOffset).getUint32(72, true);
@@ -326,6 +340,10 @@ describe('chunk file', () => {
     const vp = [72, 76, 80].reduce((at, o) => at + ((head.getUint32(o, true) + 3) & ~3), 100);
     assert.equal(good[vp], 0xd1, 'the point index stream where the header says');
     await refuses(damaged((_, b) => { b[vp + 1] = 8; }), /vertex \d names point [4-9] of 4/);
+    // Likewise a z index beyond the 2 z values.
+    const vz = vp + ((head.getUint32(84, true) + 3) & ~3);
+    assert.equal(good[vz], 0xd1, 'the z index stream where the header says');
+    await refuses(damaged((_, b) => { b[vz + 1] = 8; }), /vertex \d names z value [2-9] of 2/);
   });
 
   test('a file of version 1 (24 bytes a vertex) is refused, not misread', async () => {

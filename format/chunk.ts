@@ -213,7 +213,7 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   const bytes = input instanceof Uint8Array ? input : new Uint8Array(input);
   const fail = (why: string): ChunkFormatError => new ChunkFormatError(`${name}: ${why}`);
   if (bytes.byteLength < 8) throw fail(`truncated (${bytes.byteLength} bytes, the header alone is ${CHUNK_HEADER_BYTES})`);
-  // Aligned copy when the bytes do not start on a 4-byte boundary (the face table is read in place).
+  // Aligned copy when the bytes do not start on a 4-byte boundary (versions 2 to 4 read the face table in place).
   const b = bytes.byteOffset % 4 === 0 ? bytes : bytes.slice();
   const dv = new DataView(b.buffer, b.byteOffset, b.byteLength);
   if (dv.getUint32(0, true) !== CHUNK_MAGIC) throw fail('not a chunk file (bad magic)');

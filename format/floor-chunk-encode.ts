@@ -195,6 +195,7 @@ export function writeFloorChunk(f: FloorFile): Uint8Array {
     records[lanes * k + lanes - 1] = skip ? FLOOR_CONTINUES : 0;
     end = c.edgeStart[k]! + c.edgeCount[k]!;
   }
+  if (f.faceIds.length !== F || f.faceClasses.length !== F) throw new Error(`floor chunk writer: ${f.faceIds.length} face ids and ${f.faceClasses.length} classes for ${F} faces`);
   for (let i = 0; i < F; i++) {
     if (!(f.faceClasses[i]! >= 0 && f.faceClasses[i]! < NO_CLASS)) throw new Error(`floor chunk writer: face ${f.faceIds[i]} has class ${f.faceClasses[i]}, a class index is below ${NO_CLASS}`);
   }
