@@ -178,6 +178,22 @@ export function chunkSections(s: ChunkStreams, headerBytes = CHUNK_HEADER_BYTES)
   return { faceIds, faceClasses, faces, points, zs, vertexPoints, vertexZs, vertices, indices, end: pad4(indices + s.indices) };
 }
 
+/**
+ * The face table from a face stream's decoded records (u32 id, u32 class: the chunk file's and
+ * the floor chunk file's), refused with `fail` where a class is above `highestClass`.
+ */
+export function faceTableOf(records: Uint32Array, highestClass: number, fail: (why: string) => Error): { ids: Uint32Array; classes: Uint16Array } {
+  const F = records.length / 2;
+  const ids = new Uint32Array(F), classes = new Uint16Array(F);
+  for (let f = 0; f < F; f++) {
+    const id = records[2 * f]!, cls = records[2 * f + 1]!;
+    if (cls > highestClass) throw fail(`face ${id} has class ${cls}`);
+    ids[f] = id;
+    classes[f] = cls;
+  }
+  return { ids, classes };
+}
+
 /** Bytes of a decoded chunk: the vertex columns, then the indices. */
 export function decodedByteLength(vertices: number, triangles: number): number {
   return pad4(vertices * VERTEX_BYTES) + pad4(triangles * 3 * indexSizeFor(vertices));
@@ -288,15 +304,8 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
 
   let faceIds: Uint32Array, faceClasses: Uint16Array;
   if (sequences) {
-    faceIds = new Uint32Array(F);
-    faceClasses = new Uint16Array(F);
-    for (let f = 0; f < F; f++) {
-      const id = rawFaces[2 * f]!, cls = rawFaces[2 * f + 1]!;
-      // NO_CLASS is face 0's: nothing below.
-      if (cls > NO_CLASS) throw fail(`face ${id} has class ${cls}`);
-      faceIds[f] = id;
-      faceClasses[f] = cls;
-    }
+    // NO_CLASS is face 0's: nothing below.
+    ({ ids: faceIds, classes: faceClasses } = faceTableOf(rawFaces, NO_CLASS, fail));
   } else {
     faceIds = new Uint32Array(b.buffer, b.byteOffset + sec.faceIds, F);
     faceClasses = new Uint16Array(b.buffer, b.byteOffset + sec.faceClasses, F);

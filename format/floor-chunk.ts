@@ -11,7 +11,7 @@
 import { MeshoptDecoder } from 'meshoptimizer/decoder';
 import { VERTEX_BYTES } from './chunk-layout.js';
 import {
-  ChunkFormatError, columnViews, decodedByteLength, FACE_RECORD_BYTES, indexSizeFor, NO_CLASS, pad4, POINT_BYTES, positionGridProblem, tableIndexSizeFor,
+  ChunkFormatError, columnViews, decodedByteLength, FACE_RECORD_BYTES, faceTableOf, indexSizeFor, NO_CLASS, pad4, POINT_BYTES, positionGridProblem, tableIndexSizeFor,
   type DecodedChunk,
 } from './chunk.js';
 import { earcutFace, type FaceEdge } from './face-rings.js';
@@ -325,15 +325,10 @@ export async function decodeFloorChunk(input: Uint8Array | ArrayBuffer, name = '
     const l = c.left[k]!, r = c.right[k]!;
     if (l > F || r > F || l === r) throw fail(`edge ${k} lies between faces ${l} and ${r} of a table of ${F}`);
   }
-  let faceIds: Uint32Array, faceClasses: Uint32Array | Uint16Array;
+  let faceIds: Uint32Array, faceClasses: Uint16Array;
   if (version === 2) {
-    faceIds = new Uint32Array(F);
-    faceClasses = new Uint32Array(F);
-    for (let f = 0; f < F; f++) {
-      faceIds[f] = rawFaces[2 * f]!;
-      faceClasses[f] = rawFaces[2 * f + 1]!;
-      if (rawFaces[2 * f + 1]! >= NO_CLASS) throw fail(`face ${rawFaces[2 * f]} has class ${rawFaces[2 * f + 1]}`);
-    }
+    // Every face is an input face: none has face 0's NO_CLASS.
+    ({ ids: faceIds, classes: faceClasses } = faceTableOf(rawFaces, NO_CLASS - 1, fail));
   } else {
     faceIds = new Uint32Array(b.buffer, b.byteOffset + sec.faceIds, F);
     faceClasses = new Uint16Array(b.buffer, b.byteOffset + sec.faceClasses, F);
