@@ -41,6 +41,8 @@ interface Harness {
   statuses(file: string): ChunkStatus[];
   /** Chunks posted to the map, in order. */
   received(): string[];
+  /** How many chunk requests had been made when `file` was posted to the map. */
+  requestsWhenPosted(file: string): number | undefined;
   errors(): SourceErrorInfo[];
   needed(): NeededChunks[];
   /** Answers the oldest open request with the file it asks for. */
@@ -60,8 +62,10 @@ async function harness(t: TestContext, files: Map<string, Uint8Array>, options: 
   const opts: SourceOptions = { concurrency: 4, retries: 0, backoffMs: 0, maxBackoffMs: 0, marginRestMs: 0, ...options };
   const tree = await IndexTree.load(`${BASE}index.json`, opts);
   const posted: FromWorker[] = [];
+  const requestsAtPost = new Map<string, number>();
   const scheduler = new ChunkScheduler(tree, opts, (msg) => {
     posted.push(msg);
+    if (msg.type === 'chunk') requestsAtPost.set(msg.chunk.file, fetched().length);
     if (uploads && msg.type === 'chunk') setTimeout(() => scheduler.uploaded(msg.chunk.file), 0);
   });
   const name = (url: string): string => url.slice(BASE.length);
@@ -73,6 +77,7 @@ async function harness(t: TestContext, files: Map<string, Uint8Array>, options: 
     times: (file) => fetched().filter((f) => f === file).length,
     statuses: (file) => posted.flatMap((m) => (m.type === 'status' && m.file === file ? [m.status] : [])),
     received: () => posted.flatMap((m) => (m.type === 'chunk' ? [m.chunk.file] : [])),
+    requestsWhenPosted: (file) => requestsAtPost.get(file),
     errors: () => posted.flatMap((m) => (m.type === 'error' ? [m.error] : [])),
     needed: () => posted.flatMap((m) => (m.type === 'needed' ? [m] : [])),
     answerOldest: () => {
@@ -120,6 +125,24 @@ describe('the chunk scheduler', () => {
     assert.deepEqual(sorted(h.received()), ['c-3.bin', 'c-4.bin', 'c-5.bin', 'c-6.bin', 'c-7.bin', 'c-8.bin']);
     for (const gone of ['c-0.bin', 'c-1.bin', 'c-9.bin']) assert.deepEqual(h.statuses(gone), [], `${gone} never requested`);
     assert.equal(h.fetch.maxOpen, 4);
+    assert.deepEqual(h.errors(), []);
+  });
+
+  test('a request frees its place once its body has come: the next one goes out while the chunk is still being checked and decoded', async (t) => {
+    const h = await harness(t, handMadeCube(row(3)).files, { concurrency: 1 }, () => 'hold');
+    h.scheduler.setView(view(1, 0, 30, { centerX: 5 }));
+    await eventually(() => h.fetched().length === 1, 'one request');
+    h.answerOldest();
+    await eventually(() => h.received().length === 1, 'c-0 on its way to the map');
+    // The decoding of c-0 took no place in the queue: c-1 was asked for before c-0 was posted.
+    assert.equal(h.requestsWhenPosted('c-0.bin'), 2);
+    assert.deepEqual(h.fetched(), ['c-0.bin', 'c-1.bin']);
+    assert.equal(h.fetch.open().length, 1);
+    h.answerOldest();
+    await eventually(() => h.received().length === 2, 'c-1 on its way');
+    h.answerOldest();
+    await eventually(() => h.received().length === 3, 'c-2 on its way');
+    assert.equal(h.fetch.maxOpen, 1, 'never more than one request on the network');
     assert.deepEqual(h.errors(), []);
   });
 
