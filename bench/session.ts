@@ -17,10 +17,12 @@
 // bytes by kind of file, and what the session's views need of the surface chunks
 // (triangles-in-view.ts: a floor for the chunk encoding as it is); `csv=<file>` also
 // writes every frame (medians over the runs); `waterfall` also prints, for each map's last run,
-// every response the server finished before the first map on the slow network, with when it
-// finished from the navigation's start (what lies on a phone's path to the first map; Chromium's
-// throttling hands it to the page later, by the bytes still queued before it). SwiftShader is
-// a software GPU: the times compare the two maps on one machine, nothing more.
+// every response the page had whole before the first map on the slow network, with when it came
+// from the navigation's start (what lies on a phone's path to the first map). On the slow network
+// a response counts from when the browser has it (Playwright's request timing, the worker's
+// requests too), not from when the server finished sending it: Chromium's throttling hands it to
+// the page later, by the bytes still queued before it. SwiftShader is a software GPU: the times
+// compare the two maps on one machine, nothing more.
 import { cp, mkdir, mkdtemp, rm, stat, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
@@ -109,6 +111,8 @@ interface OpenPage {
   first: FirstMap;
   /** Errors the page threw or logged. */
   problems: string[];
+  /** When the browser had each response whole (ms since the epoch), by request path, in order. */
+  arrivals: { path: string; at: number }[];
 }
 
 /** Opens `url` in a fresh context (an empty cache; on `network`'s conditions when given) up to its first complete map; `log` starts empty. */
@@ -117,6 +121,11 @@ async function openToFirstMap(browser: Browser, url: string, log: Sent[], networ
   try {
     const page = await context.newPage();
     const problems: string[] = [];
+    const arrivals: { path: string; at: number }[] = [];
+    page.on('requestfinished', (r) => {
+      const t = r.timing(), u = new URL(r.url());
+      if (t.responseEnd >= 0) arrivals.push({ path: u.pathname + u.search, at: t.startTime + t.responseEnd });
+    });
     page.on('pageerror', (e) => problems.push(e.message));
     page.on('console', (m) => {
       if (m.type() === 'error') problems.push(m.text());
@@ -129,7 +138,7 @@ async function openToFirstMap(browser: Browser, url: string, log: Sent[], networ
     log.length = 0;
     await page.goto(url);
     await page.waitForFunction(() => typeof bench !== 'undefined');
-    return { context, page, first: await page.evaluate(() => bench.first), problems };
+    return { context, page, first: await page.evaluate(() => bench.first), problems, arrivals };
   } catch (err) {
     await context.close();
     throw err;
@@ -171,10 +180,18 @@ async function runPage(browser: Browser, url: string, views: (ProjectedView | Ln
 
 /** The page opened in a fresh context on SLOW_NETWORK, to its first complete map. */
 async function firstOnSlowNetwork(browser: Browser, url: string, log: Sent[]): Promise<Pick<RunResult, 'slowFirstMs' | 'slowBytesBeforeFirst' | 'slowResponses'>> {
-  const { context, first, problems } = await openToFirstMap(browser, url, log, SLOW_NETWORK);
+  const { context, first, problems, arrivals } = await openToFirstMap(browser, url, log, SLOW_NETWORK);
   try {
     if (problems.length > 0) throw new Error(`${url} on a slow network: ${problems.join('; ')}`);
-    const before = log.filter((r) => r.at <= first.at);
+    // Each response the server sent, with when the browser had it (the next arrival of its path;
+    // the server's own time where the browser told none).
+    const pending = [...arrivals];
+    const came = log.map((r) => {
+      const k = pending.findIndex((a) => a.path === r.path);
+      const at = k < 0 ? r.at : pending.splice(k, 1)[0]!.at;
+      return { ...r, at };
+    }).sort((a, b) => a.at - b.at);
+    const before = came.filter((r) => r.at <= first.at);
     const start = first.at - first.ms;
     return {
       slowFirstMs: first.ms,
@@ -294,7 +311,7 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
     if (waterfall) {
       for (const which of ['vario', 'maplibre'] as const) {
         const last = results[which][runs - 1]!;
-        process.stdout.write(`${which}, last run, slow network: responses finished before the first map (${(last.slowFirstMs / 1000).toFixed(2)} s)\n`);
+        process.stdout.write(`${which}, last run, slow network: responses the page had before the first map (${(last.slowFirstMs / 1000).toFixed(2)} s)\n`);
         for (const r of last.slowResponses) process.stdout.write(`  ${(r.ms / 1000).toFixed(2)} s ${(r.bytes / 1000).toFixed(1).padStart(7)} kB  ${r.path}\n`);
       }
     }
