@@ -3,7 +3,7 @@
 // stores a point two edges share once, and damaged files are refused with the file's name.
 import test, { describe } from 'node:test';
 import assert from 'node:assert/strict';
-import { encodeChunk } from './chunk-encode.js';
+import { encodeChunk, encodeFaceStream } from './chunk-encode.js';
 import { NO_CLASS, type DecodedChunk } from './chunk.js';
 import { encodeFloorChunk, writeFloorChunk, type FloorChunkInput, type FloorFile } from './floor-chunk-encode.js';
 import { MeshoptDecoder } from 'meshoptimizer/decoder';
@@ -243,6 +243,24 @@ describe('floor chunk file', () => {
       await refuses(content((c) => { c.right[0] = 1; }), /edge 0 lies between faces 1 and 1/);
       await refuses(content((c) => { c.edgeCount[0] = 1; }), /edge 0 has 1 points/);
       await refuses(content((c) => { c.triangles = Uint32Array.of(0, 1, 9, 1); }), /triangle 0 names points 0, 1, 9 of 5 and face 1 of 1/);
+    });
+    test('a face of class 65,535 (the chunk file\'s class of face 0) in the face stream', async () => {
+      // The writer refuses that class, so the face stream of a good file is swapped for one that
+      // holds it; both are 1 record through the same codec, of the same length.
+      const file = writeFloorChunk({
+        originX: 0, originY: 0, gridExponent: 0, ground: [0, 0, 1, 1], faceIds: [3], faceClasses: [4],
+        content: {
+          points: Int32Array.of(0, 0, 1, 0, 1, 1, 0, 1, 0, 0), faceCount: 1, edgeStart: Uint32Array.of(0), edgeCount: Uint32Array.of(5),
+          left: Uint32Array.of(1), right: Uint32Array.of(0), triangles: new Uint32Array(0),
+        },
+      });
+      await decodeFloorChunk(file, 'b-x.bin');
+      const lf = new DataView(file.buffer, file.byteOffset).getUint32(64, true);
+      const swapped = encodeFaceStream([3], [NO_CLASS]);
+      assert.equal(swapped.length, lf);
+      const b = file.slice();
+      b.set(swapped, 84);
+      await refuses(b, /face 3 has class 65535$/);
     });
     test('the encoder refuses what it cannot write', () => {
       const file: FloorFile = {
