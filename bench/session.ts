@@ -75,10 +75,10 @@ function scriptedSession(meta: CubeMeta, zoomOutFrames: number): Session {
 
 interface RunResult {
   firstMs: number;
-  /** The first map on a slow network (SLOW_NETWORK), ms; the bytes sent before it, code and data. */
+  /** The first map on a slow network (SLOW_NETWORK), ms; the bytes the page had before it, code and data. */
   slowFirstMs: number;
   slowBytesBeforeFirst: number;
-  /** The responses finished before that first map: ms from the navigation's start, bytes, path. */
+  /** The responses the page had whole before that first map: ms from the navigation's start, bytes, path. */
   slowResponses: { ms: number; bytes: number; path: string }[];
   bytesBeforeFirst: number;
   /** Data bytes sent up to each frame's completion. */
@@ -122,6 +122,8 @@ async function openToFirstMap(browser: Browser, url: string, log: Sent[], networ
     const page = await context.newPage();
     const problems: string[] = [];
     const arrivals: { path: string; at: number }[] = [];
+    // Playwright's request start (wall clock) plus its end (from when the request was issued):
+    // late by the request's queueing in the browser, a few ms.
     page.on('requestfinished', (r) => {
       const t = r.timing(), u = new URL(r.url());
       if (t.responseEnd >= 0) arrivals.push({ path: u.pathname + u.search, at: t.startTime + t.responseEnd });
@@ -183,12 +185,13 @@ async function firstOnSlowNetwork(browser: Browser, url: string, log: Sent[]): P
   const { context, first, problems, arrivals } = await openToFirstMap(browser, url, log, SLOW_NETWORK);
   try {
     if (problems.length > 0) throw new Error(`${url} on a slow network: ${problems.join('; ')}`);
-    // Each response the server sent, with when the browser had it (the next arrival of its path;
-    // the server's own time where the browser told none).
+    // Each response the server sent, with when the browser had it whole (the next arrival of its
+    // path); one the browser never finished (still coming at the first map, or aborted) counts as
+    // not had.
     const pending = [...arrivals];
     const came = log.map((r) => {
       const k = pending.findIndex((a) => a.path === r.path);
-      const at = k < 0 ? r.at : pending.splice(k, 1)[0]!.at;
+      const at = k < 0 ? Infinity : pending.splice(k, 1)[0]!.at;
       return { ...r, at };
     }).sort((a, b) => a.at - b.at);
     const before = came.filter((r) => r.at <= first.at);

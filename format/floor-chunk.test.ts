@@ -255,7 +255,9 @@ describe('floor chunk file', () => {
         },
       });
       await decodeFloorChunk(file, 'b-x.bin');
-      const lf = new DataView(file.buffer, file.byteOffset).getUint32(64, true);
+      const dv = new DataView(file.buffer, file.byteOffset);
+      assert.equal(dv.getUint32(4, true), 2, 'version 2, whose face stream is at 84 and its length at 64');
+      const lf = dv.getUint32(64, true);
       const swapped = encodeFaceStream([3], [NO_CLASS]);
       assert.equal(swapped.length, lf);
       const b = file.slice();

@@ -210,6 +210,18 @@ describe('the chunk scheduler', () => {
     assert.equal(h.fetch.maxOpen, 4);
   });
 
+  test('the margin starts when the last chunk on screen fails its check, with nothing else to wait for', async (t) => {
+    const { files } = handMadeCube(row(3));
+    files.set('c-0.bin', squareChunk(7)); // a chunk, but not the one the index names
+    const h = await harness(t, files, { concurrency: 1 }, undefined, true);
+    // On screen c-0 only (no floor in this cube); c-1 and c-2 are the margin.
+    h.scheduler.setView(view(1, 0, 9.5, { centerX: 5, margin: [0, 30] }));
+    await eventually(() => h.errors().length === 1, 'c-0 refused');
+    assert.equal(h.errors()[0]!.kind, 'corrupt');
+    await eventually(() => h.received().length === 2, 'the margin fetched');
+    assert.deepEqual(h.fetched(), ['c-0.bin', 'c-1.bin', 'c-2.bin']);
+  });
+
   test('a chunk goes requested, received, on the GPU; evicted while in view it is fetched again, evicted out of view it waits until the view comes back', async (t) => {
     const h = await harness(t, handMadeCube(row(2)).files, { concurrency: 2 });
     const both = view(1, 0, 20, { centerX: 5 });

@@ -1,7 +1,8 @@
 // Which chunks to fetch, in what order, and what became of each. Runs in the worker.
 // - a view asks the index for the chunks under it (plus a margin) over its z range;
 // - each chunk has one status; a chunk is never requested twice at once;
-// - at most `concurrency` requests are on the network: one leaves the count when its body has come;
+// - at most `concurrency` requests are on the network or waiting to be retried: one leaves the
+//   count when its body has come, before it is checked and decoded;
 // - a request for a chunk that left the view (and its margin) is aborted;
 // - the nearest to the view centre and base z go first, the on-screen ones before the margin,
 //   then those of the views ahead (a flight's path), in the order they will be shown;
@@ -225,7 +226,9 @@ export class ChunkScheduler {
     const leaf = e.leaf;
     const url = this.tree.url(leaf.file);
     // The request's place is free once its body has come: checking and decoding it (a floor
-    // chunk cold in the worker: 15 ms) no longer hold the next request back.
+    // chunk cold in the worker: 15 ms) no longer hold the next request back. (The bodies waiting
+    // to be decoded are bounded by the chunks the view needs.) A microtask, so that nothing the
+    // next request does runs inside fetchBytes's error handling.
     let holding = true;
     const release = (): void => {
       if (!holding) return;
@@ -233,7 +236,7 @@ export class ChunkScheduler {
       this.inFlight--;
       this.pump();
     };
-    const opts = { ...this.opts, onLoaded: (u: string): void => { this.opts.onLoaded?.(u); release(); } };
+    const opts = { ...this.opts, onLoaded: (u: string): void => { this.opts.onLoaded?.(u); queueMicrotask(release); } };
     (isLineLeaf(leaf) ? fetchLineChunk(leaf, url, this.tree.index.meta, opts, controller.signal) : fetchChunk(leaf, url, opts, controller.signal))
       .then(
         (chunk) => {
@@ -258,7 +261,8 @@ export class ChunkScheduler {
           if (this.view && this.tree.index.floor) this.setView(this.view);
         },
       )
-      .finally(release);
+      // Pumped again either way: the chunk's end (received, failed) may let the margin start.
+      .finally(() => (holding ? release() : this.pump()));
   }
 
   private postError(error: SourceErrorInfo): void {

@@ -8,7 +8,7 @@ export interface RetryOptions {
   /** Wait before the first retry; doubled for each next one. */
   backoffMs: number;
   maxBackoffMs: number;
-  /** Told the URL of every body received whole (the worker lists them for offline caching). */
+  /** Told the URL of every body received whole (the worker lists them for offline caching; the scheduler frees the request's place). */
   onLoaded?: (url: string) => void;
 }
 

@@ -7,7 +7,7 @@ import type { DrawBlocks } from './draw-ranges.js';
 export type ChunkStatus = 'not-requested' | 'requested' | 'received' | 'gpu' | 'evicted' | 'failed';
 
 export interface SourceOptions {
-  /** Chunk requests on the network at once: a chunk whose body has come no longer counts while it is checked and decoded. */
+  /** Chunk requests on the network (or waiting to be retried) at once: a chunk whose body has come no longer counts while it is checked and decoded. */
   concurrency: number;
   retries: number;
   backoffMs: number;
