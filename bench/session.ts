@@ -308,7 +308,7 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
     const byKind = (f: (r: RunResult) => Map<string, number>): string =>
       kinds.map((k) => [k, median(results.vario.map((r) => f(r).get(k) ?? 0))] as const).filter(([, b]) => b > 0).map(([k, b]) => `${k} ${mb(b)}`).join(', ');
     process.stdout.write(`vario data bytes by kind of file: session ${byKind((r) => r.byKind)}; before the first map ${byKind((r) => r.byKindBeforeFirst)}\n`);
-    process.stdout.write(`surface chunks the session's views query (each once, no margin): ${mb(needs.queriedBytes)}; their share that some view needs: ${mb(needs.neededBytes)}\n`);
+    process.stdout.write(`surface chunks the session's views query (each once, no margin): ${mb(needs.queriedBytes)}; their share that some view needs: ${mb(needs.neededBytes)}, of which some view's slice cuts ${mb(needs.cutBytes)} (the rest lies at or below every slice that needs it)\n`);
     process.stdout.write(`whole dataset, gzip: cube ${mb(gz.get('cube')!)}, tiles (z${tiles.minZoom}-${tiles.maxZoom}) ${mb(gz.get('tiles')!)}, ratio ${ratio(gz.get('cube')!, gz.get('tiles')!)}\n`);
     process.stdout.write(`tiles: ${tiles.command}\n`);
     if (waterfall) {

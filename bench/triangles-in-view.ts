@@ -38,7 +38,7 @@ export async function trianglesInView(cubeDir: string): Promise<TrianglesInView>
     for (const leaf of await cube.query({ ground: [x0, y0, x1, y1], zMin: z, zMax: z })) {
       const c = await cube.chunk(leaf);
       sliceChunk(sl, c);
-      n += neededTriangles(c, z, [x0, y0, x1, y1], endOf).length;
+      forNeededTriangles(c, z, [x0, y0, x1, y1], endOf, () => n++);
     }
     let fragments = 0, covered = 0;
     sl.fragments!.forEach((f, p) => {
@@ -61,19 +61,21 @@ async function faceEnds(cube: CubeReader): Promise<(face: number) => number> {
   return (face) => ends[face] ?? Infinity;
 }
 
-/** The triangles of chunk `c` a slice at `z` needs within the ground box `box`, by index. */
-function neededTriangles(c: ChunkData, z: number, box: [number, number, number, number], endOf: (face: number) => number): number[] {
+/**
+ * Calls `use` with each triangle of chunk `c` a slice at `z` needs within the ground box `box`,
+ * and whether the slice cuts it (its highest corner is above `z`: a transition in progress)
+ * rather than lying wholly at or below it (settled: what the partition at that state shows).
+ */
+export function forNeededTriangles(c: ChunkData, z: number, box: [number, number, number, number], endOf: (face: number) => number, use: (t: number, cut: boolean) => void): void {
   const [x0, y0, x1, y1] = box;
   const P = c.positions, I = c.indices;
-  const out: number[] = [];
   for (let t = 0; t < c.triangleCount; t++) {
     const a = I[3 * t]!, b = I[3 * t + 1]!, d = I[3 * t + 2]!;
     if (Math.min(P[3 * a + 2]!, P[3 * b + 2]!, P[3 * d + 2]!) > z || endOf(c.upper[a]!) <= z) continue;
     const tx0 = c.originX + Math.min(P[3 * a]!, P[3 * b]!, P[3 * d]!), tx1 = c.originX + Math.max(P[3 * a]!, P[3 * b]!, P[3 * d]!);
     const ty0 = c.originY + Math.min(P[3 * a + 1]!, P[3 * b + 1]!, P[3 * d + 1]!), ty1 = c.originY + Math.max(P[3 * a + 1]!, P[3 * b + 1]!, P[3 * d + 1]!);
-    if (tx1 >= x0 && tx0 <= x1 && ty1 >= y0 && ty0 <= y1) out.push(t);
+    if (tx1 >= x0 && tx0 <= x1 && ty1 >= y0 && ty0 <= y1) use(t, Math.max(P[3 * a + 2]!, P[3 * b + 2]!, P[3 * d + 2]!) > z);
   }
-  return out;
 }
 
 export interface SessionNeeds {
@@ -81,6 +83,12 @@ export interface SessionNeeds {
   queriedBytes: number;
   /** Those chunks' bytes in proportion to the triangles some view needs of each: a floor for this encoding. */
   neededBytes: number;
+  /**
+   * The part of `neededBytes` in triangles some view's slice cuts (transitions in progress); the
+   * rest lie wholly at or below every slice that needs them, showing a state's partition, which
+   * a map could draw from that state's boundaries instead (issue 13's edges-and-events question).
+   */
+  cutBytes: number;
 }
 
 /**
@@ -91,22 +99,26 @@ export interface SessionNeeds {
 export async function sessionNeeds(cubeDir: string, views: { scale: number; centre: [number, number] }[], bytesOf: (file: string) => Promise<number>, width = 1280, height = 720): Promise<SessionNeeds> {
   const cube = await CubeReader.open(cubeDir);
   const endOf = await faceEnds(cube);
-  // Each chunk read and decoded once, however many views query it.
-  const needed = new Map<string, { chunk: ChunkData; used: Set<number> }>();
+  // Each chunk read and decoded once, however many views query it. Per needed triangle: whether some view cuts it.
+  const needed = new Map<string, { chunk: ChunkData; used: Map<number, boolean> }>();
   for (const v of views) {
     const z = zAtScale(cube.index.meta, v.scale);
     const box = viewBox(v.scale, v.centre, width, height);
     for (const leaf of await cube.query({ ground: box, zMin: z, zMax: z })) {
       let e = needed.get(leaf.file);
-      if (!e) needed.set(leaf.file, (e = { chunk: await cube.chunk(leaf), used: new Set() }));
-      for (const t of neededTriangles(e.chunk, z, box, endOf)) e.used.add(t);
+      if (!e) needed.set(leaf.file, (e = { chunk: await cube.chunk(leaf), used: new Map() }));
+      const used = e.used;
+      forNeededTriangles(e.chunk, z, box, endOf, (t, cut) => used.set(t, cut || used.get(t) === true));
     }
   }
-  let queriedBytes = 0, neededBytes = 0;
+  let queriedBytes = 0, neededBytes = 0, cutBytes = 0;
   for (const [file, e] of needed) {
     const b = await bytesOf(file);
     queriedBytes += b;
     neededBytes += (b * e.used.size) / e.chunk.triangleCount;
+    let cut = 0;
+    for (const c of e.used.values()) if (c) cut++;
+    cutBytes += (b * cut) / e.chunk.triangleCount;
   }
-  return { queriedBytes, neededBytes };
+  return { queriedBytes, neededBytes, cutBytes };
 }
