@@ -23,10 +23,8 @@ export const CHUNK_VERSION_2 = 2;
 /** The coarsest position grid a reader accepts, 2^MAX_POSITION_EXPONENT (every grid value stays finite in float32). */
 export const MAX_POSITION_EXPONENT = 64;
 export const NO_CLASS = 0xffff;
-/** Header bytes (docs/FORMAT.md), and those of version 4 and of versions 2 and 3. */
+/** Header bytes (docs/FORMAT.md). */
 export const CHUNK_HEADER_BYTES = 100;
-const V4_HEADER_BYTES = 88;
-const OLD_HEADER_BYTES = 80;
 /**
  * Bits of the position grid: x and y are whole steps of `2^e`, with `e` at least the box's own
  * exponent, the smallest with its largest |x| or |y| below `2^(e + POSITION_BITS)`. Every grid
@@ -213,6 +211,65 @@ export function columnViews(buf: ArrayBufferLike, V: number): Columns {
   };
 }
 
+/** How a version lays out its header and its vertex stream (docs/FORMAT.md, "Chunk file" and its older versions). */
+interface ChunkLayout {
+  headerBytes: number;
+  /** The stream lengths its header gives, the face table's entries `F` among them when the table is raw. */
+  streams(u32: (offset: number) => number, F: number): ChunkStreams;
+  /** Its z count is in the header (a z table); else each vertex holds its z. */
+  zTable: boolean;
+  /** The vertices' point and z indices are index sequence streams of their own; else they are in the vertex stream. */
+  sequences: boolean;
+  /** Its grid is always the box's own (before a cube-wide grid). */
+  boxOwnGrid: boolean;
+  /** Bytes per table index in the vertex stream, from the counts of faces, points and z values. */
+  laneSize(F: number, P: number, Z: number): 2 | 4;
+  /** Bytes of a vertex stream record, with lanes of `size` bytes. */
+  stride(size: 2 | 4): number;
+  /** The lane of a record that holds the upper face (the lower one follows). */
+  faceLane(size: 2 | 4): number;
+}
+
+/**
+ * Version 5: the face table through the codec; a vertex's point and z in sequence streams, its
+ * faces in the vertex stream. Version 4: the raw face table; point, z and faces in the vertex
+ * stream, on lanes sized for the largest table. Versions 2 and 3: no z table; a vertex is a u32
+ * point, an f32 z and its faces.
+ */
+const V2_V3: Omit<ChunkLayout, 'boxOwnGrid'> = {
+  headerBytes: 80,
+  streams: (u32, F) => ({ faceTable: F, faces: 0, points: u32(68), zs: 0, vertexPoints: 0, vertexZs: 0, vertices: u32(72), indices: u32(76) }),
+  zTable: false,
+  sequences: false,
+  laneSize: (F) => tableIndexSizeFor(F),
+  stride: (size) => 8 + 2 * size,
+  faceLane: (size) => 8 / size,
+};
+const LAYOUTS: ReadonlyMap<number, ChunkLayout> = new Map([
+  [CHUNK_VERSION, {
+    headerBytes: CHUNK_HEADER_BYTES,
+    streams: (u32) => ({ faceTable: 0, faces: u32(72), points: u32(76), zs: u32(80), vertexPoints: u32(84), vertexZs: u32(88), vertices: u32(92), indices: u32(96) }),
+    zTable: true,
+    sequences: true,
+    boxOwnGrid: false,
+    laneSize: (F) => tableIndexSizeFor(F),
+    stride: encodedVertexBytes,
+    faceLane: () => 0,
+  }],
+  [CHUNK_VERSION_4, {
+    headerBytes: 88,
+    streams: (u32, F) => ({ faceTable: F, faces: 0, points: u32(72), zs: u32(76), vertexPoints: 0, vertexZs: 0, vertices: u32(80), indices: u32(84) }),
+    zTable: true,
+    sequences: false,
+    boxOwnGrid: false,
+    laneSize: (F, P, Z) => tableIndexSizeFor(Math.max(P, Z, F)),
+    stride: (size) => 4 * size,
+    faceLane: () => 2,
+  }],
+  [CHUNK_VERSION_3, { ...V2_V3, boxOwnGrid: false }],
+  [CHUNK_VERSION_2, { ...V2_V3, boxOwnGrid: true }],
+]);
+
 export class ChunkFormatError extends FormatError {
   constructor(message: string) {
     super(message);
@@ -234,30 +291,21 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   const dv = new DataView(b.buffer, b.byteOffset, b.byteLength);
   if (dv.getUint32(0, true) !== CHUNK_MAGIC) throw fail('not a chunk file (bad magic)');
   const version = dv.getUint32(4, true);
-  if (version !== CHUNK_VERSION && version !== CHUNK_VERSION_4 && version !== CHUNK_VERSION_3 && version !== CHUNK_VERSION_2) {
-    throw fail(`chunk version ${version}, this reader knows only versions ${CHUNK_VERSION_2} to ${CHUNK_VERSION} (rebuild the cube with ssc build)`);
-  }
-  // Versions 2 and 3: no z table, the z in each vertex. Version 4: the vertices' point and z
-  // indices in the vertex stream beside their faces.
-  const zTable = version >= CHUNK_VERSION_4, sequences = version === CHUNK_VERSION;
-  const headerBytes = sequences ? CHUNK_HEADER_BYTES : zTable ? V4_HEADER_BYTES : OLD_HEADER_BYTES;
+  const layout = LAYOUTS.get(version);
+  if (!layout) throw fail(`chunk version ${version}, this reader knows only versions ${CHUNK_VERSION_2} to ${CHUNK_VERSION} (rebuild the cube with ssc build)`);
+  const { headerBytes, zTable, sequences } = layout;
   if (b.byteLength < headerBytes) throw fail(`truncated (${b.byteLength} bytes, the header alone is ${headerBytes})`);
   const V = dv.getUint32(8, true), T = dv.getUint32(12, true);
   const box = new Float32Array(6);
   for (let i = 0; i < 6; i++) box[i] = dv.getFloat32(32 + 4 * i, true);
   if (!box.every(Number.isFinite)) throw fail('its box is not finite');
   const e = dv.getInt32(56, true);
-  // Version 2 always used the box's own grid.
-  const gridProblem = positionGridProblem(e, box, version === CHUNK_VERSION_2);
+  const gridProblem = positionGridProblem(e, box, layout.boxOwnGrid);
   if (gridProblem) throw fail(gridProblem);
   const F = dv.getUint32(60, true), P = dv.getUint32(64, true);
   const u32 = (o: number): number => dv.getUint32(o, true);
   const Z = zTable ? u32(68) : 0;
-  const streams: ChunkStreams = sequences
-    ? { faceTable: 0, faces: u32(72), points: u32(76), zs: u32(80), vertexPoints: u32(84), vertexZs: u32(88), vertices: u32(92), indices: u32(96) }
-    : zTable
-      ? { faceTable: F, faces: 0, points: u32(72), zs: u32(76), vertexPoints: 0, vertexZs: 0, vertices: u32(80), indices: u32(84) }
-      : { faceTable: F, faces: 0, points: u32(68), zs: 0, vertexPoints: 0, vertexZs: 0, vertices: u32(72), indices: u32(76) };
+  const streams = layout.streams(u32, F);
   // Bounds that hold in every chunk (each point and z used by a vertex, each vertex by a
   // triangle, the index codecs' byte per triangle and per index): a damaged count is refused
   // before anything is allocated.
@@ -273,12 +321,10 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
     const lengths = [...(sequences ? [streams.faces] : []), streams.points, ...(zTable ? [streams.zs] : []), ...(sequences ? [streams.vertexPoints, streams.vertexZs] : []), streams.vertices, streams.indices].join(' + ');
     throw fail(`${b.byteLength} bytes, its header (${F} faces, ${lengths} bytes of streams) needs ${sec.end}`);
   }
-  const localSize = sequences || !zTable ? tableIndexSizeFor(F) : tableIndexSizeFor(Math.max(P, Z, F)), indexSize = indexSizeFor(V);
+  const localSize = layout.laneSize(F, P, Z), indexSize = indexSizeFor(V);
   await MeshoptDecoder.ready;
 
-  // Version 5: the two face indices; version 4: point, z and the face indices; versions 2 and
-  // 3: u32 point, f32 z, then the face indices.
-  const stride = sequences ? encodedVertexBytes(localSize) : zTable ? 4 * localSize : 8 + 2 * localSize;
+  const stride = layout.stride(localSize);
   const rawFaces = new Uint32Array(sequences ? 2 * F : 0);
   const rawPoints = new Uint8Array(P * POINT_BYTES);
   const rawZs = new Uint8Array(Z * Z_BYTES);
@@ -315,8 +361,10 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   const zs = new Float32Array(rawZs.buffer);
   const lanes = localSize === 2 ? new Uint16Array(raw.buffer) : new Uint32Array(raw.buffer);
   const words = new Uint32Array(raw.buffer), floats = new Float32Array(raw.buffer);
-  const w = stride / 4, h = stride / localSize, faceLane = sequences ? 0 : zTable ? 2 : 8 / localSize;
+  const w = stride / 4, h = stride / localSize, faceLane = layout.faceLane(localSize);
   const step = 2 ** e;
+  // A vertex's point and z: from the sequence streams (version 5), its record's first two lanes
+  // (version 4), or its record's u32 and f32 (versions 2 and 3).
   for (let k = 0; k < V; k++) {
     const p = sequences ? pointOf[k]! : zTable ? lanes[k * h]! : words[k * w]!;
     if (p >= P) throw fail(`vertex ${k} names point ${p} of ${P}`);
