@@ -21,7 +21,7 @@ import path from 'node:path';
 import { after, afterEach, before, describe, test } from 'node:test';
 import type { Browser, Page, Response } from 'playwright-core';
 import { expectedDigest } from '../format/cube-index.js';
-import { queryIndex } from '../format/index-query.js';
+import { boxMeets, queryIndex } from '../format/index-query.js';
 import { NGINX_BIN, startNginx, type RunningNginx } from '../server/nginx-process.js';
 import { launchChromium, type MapPage } from './helpers/browser.js';
 import { buildCube, clientDir, otterlo400, readCube, type BuiltCube, type CubeContents } from './helpers/cube.js';
@@ -32,6 +32,8 @@ import { camera, idle, openDemo, settle, type VarioWindow } from './helpers/vari
 
 const IMMUTABLE = 'public, max-age=31536000, immutable';
 const CHUNK = /^c-[0-9a-f]{16}\.bin$/;
+/** Every file the map checks against its name: chunks, floor chunks, line chunks. */
+const CHECKED = /^[cbl]-[0-9a-f]{16}\.bin$/;
 
 /** One response the browser got for a cube file (cube/<file>), with both sides' headers. */
 interface Seen {
@@ -293,12 +295,15 @@ describe('the demo map served by nginx with the documented config (bgt_otterlo_4
     // Decoded by the browser, the body is the index on disk.
     assert.deepEqual(index[0]!.body, await readFile(path.join(cube!.dir, 'index.json')), 'index.json decodes to the file');
 
-    const chunks = responses.filter((s) => CHUNK.test(s.file));
-    const leaves = new Map(contents.leaves.map((l) => [l.file, l]));
+    const checked = responses.filter((s) => CHECKED.test(s.file));
+    const chunks = checked.filter((s) => CHUNK.test(s.file));
+    const leaves = new Map([...contents.leaves, ...contents.floorLeaves, ...contents.lines].map((l) => [l.file, l]));
     assert.ok(chunks.length >= 2, `${chunks.length} chunks fetched`);
-    for (const c of chunks) {
+    // The line chunks come with them (this view's scale shows lines): checked the same way.
+    assert.ok(checked.some((s) => s.file.startsWith('l-')), `line chunks fetched (${checked.map((s) => s.file).join(', ')})`);
+    for (const c of checked) {
       assertServedCompressed(c, 'application/octet-stream', IMMUTABLE);
-      assert.ok(leaves.has(c.file), `${c.file} is a chunk of the index`);
+      assert.ok(leaves.has(c.file), `${c.file} is a leaf of the index`);
       // The worker's fetches are visible with their bodies: the decoded chunk is the one the index names.
       assert.ok(c.body, `${c.file}: body readable`);
       assert.ok(createHash('sha256').update(c.body).digest('hex').startsWith(expectedDigest(leaves.get(c.file)!)), `${c.file}: decodes to the chunk its name names`);
@@ -331,7 +336,7 @@ describe('the demo map served by nginx with the documented config (bgt_otterlo_4
     assert.equal(index.length, 1, 'index.json asked for once');
     assert.equal(index[0]!.ifNoneMatch, etag, 'with If-None-Match: the ETag it came with');
     assert.equal(index[0]!.status, 304, 'and nginx answered 304');
-    assert.deepEqual(log.filter((e) => CHUNK.test(e.uri.slice('/cube/'.length))).map((e) => e.uri), [], 'no chunk request reached nginx');
+    assert.deepEqual(log.filter((e) => CHECKED.test(e.uri.slice('/cube/'.length))).map((e) => e.uri), [], 'no chunk request reached nginx');
     // The browser's side of the same: the conditional request, and chunks it still had.
     const responses = await Promise.all(seen);
     assert.equal(responses.find((s) => s.file === 'index.json')?.request['if-none-match'], etag, 'the browser sent If-None-Match');
@@ -372,10 +377,11 @@ describe('the demo map served by nginx with the documented config (bgt_otterlo_4
     }
     // Whatever else was asked for on the way was found (499: the browser gave up waiting).
     for (const l of log) assert.ok(l.status === 200 || l.status === 499, `${l.uri}: nginx answered ${l.status}`);
-    // The browser's side: each came with its headers and decodes to the chunk the index names.
-    const leaves = new Map(contents.leaves.map((l) => [l.file, l]));
+    // The browser's side: each came with its headers and decodes to the chunk the index names
+    // (and so did any floor or line chunk it asked for on the way).
+    const leaves = new Map([...contents.leaves, ...contents.floorLeaves, ...contents.lines].map((l) => [l.file, l]));
     const responses = await Promise.all(seen);
-    for (const f of expectNew) {
+    for (const f of [...expectNew, ...responses.filter((s) => CHECKED.test(s.file) && !CHUNK.test(s.file)).map((s) => s.file)]) {
       const s = responses.find((x) => x.file === f);
       assert.ok(s, `the browser got ${f}`);
       assertServedCompressed(s, 'application/octet-stream', IMMUTABLE);
@@ -396,6 +402,43 @@ describe('the demo map served by nginx with the documented config (bgt_otterlo_4
       assertSamePicture(fromNginx, await screenshot(other.page), 0.01, 'zoomed in, nginx vs the test server');
     } finally {
       await checkAndClose(other);
+    }
+  });
+
+  test('a map opened below the floor\'s top takes the floor chunks on screen from nginx, each decoding to its name', async () => {
+    assert.ok(contents.floorLeaves.length > 0, 'the cube has floor chunks');
+    // The wheel's view, past the base scale, opened afresh from its URL (the hash holds the view).
+    const url = page().url();
+    assert.ok(new URL(url).hash.length > 1, `the URL holds the view: ${url}`);
+    seen.length = 0;
+    const mark = (await readLog()).length;
+    const context = await browser!.newContext({ viewport: { width: 640, height: 480 } });
+    try {
+      const p = await context.newPage();
+      watch(p);
+      await p.goto(url);
+      await idle(p);
+      const v = await view(p);
+      assert.ok(v.z < contents.floorTop, `the slice (z ${v.z}) lies below the floor's top (${contents.floorTop})`);
+      const onScreen = contents.floorLeaves.filter((l) => boxMeets(l.bbox, { ground: v.bounds, zMin: v.z, zMax: v.z })).map((l) => l.file);
+      assert.ok(onScreen.length > 0, 'floor chunks lie under the view');
+      const leaves = new Map(contents.floorLeaves.map((l) => [l.file, l]));
+      const responses = await Promise.all(seen);
+      for (const f of onScreen) {
+        const s = responses.find((x) => x.file === f && x.status === 200);
+        assert.ok(s, `${f}, a floor chunk on screen, came (got ${responses.map((x) => x.file).join(', ')})`);
+        assertServedCompressed(s, 'application/octet-stream', IMMUTABLE);
+        assert.ok(s.body, `${f}: body readable`);
+        assert.ok(createHash('sha256').update(s.body).digest('hex').startsWith(expectedDigest(leaves.get(f)!)), `${f}: decodes to the floor chunk its name names`);
+      }
+      const log = await logFrom(mark, (l) => onScreen.every((f) => l.some((e) => e.uri === `/cube/${f}`)));
+      for (const f of onScreen) {
+        const last = log.filter((e) => e.uri === `/cube/${f}`).at(-1);
+        assert.ok(last, `${f} fetched from nginx`);
+        await assertLoggedCompressed(last, 'application/octet-stream', IMMUTABLE);
+      }
+    } finally {
+      await context.close();
     }
   });
 });
