@@ -1,5 +1,6 @@
 // A face table page (docs/FORMAT.md, "Face table page f-<hash>.bin"): per face its class,
 // input feature and the steps it is alive in, for picking. Encoder and decoder. Pure.
+import { pad4 } from './chunk.js';
 import { FormatError } from './format-error.js';
 
 export const FACE_PAGE_MAGIC = 0x46435353; // "SSCF"
@@ -38,7 +39,7 @@ export interface FaceRecord {
 /** What a page says of one face. */
 export type FaceFields = Pick<FaceRecord, 'classIndex' | 'feature' | 'stepLow' | 'stepHigh' | 'mergedInto'>;
 
-const classBytes = (count: number): number => (2 * count + 3) & ~3;
+const classBytes = (count: number): number => pad4(2 * count);
 const pageBytes = (count: number): number => HEADER + classBytes(count) + 16 * count;
 
 /** The page of faces[first .. first + count). */
