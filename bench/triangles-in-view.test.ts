@@ -44,7 +44,7 @@ function needed(z: number, box: [number, number, number, number]): [number, bool
 test('a slice needs what lies at or below it, over its ground, whose upper face has not ended', () => {
   // Below the ramp's lowest corner: the two floor triangles, neither cut.
   assert.deepEqual(needed(0.5, square), [[0, false], [1, false]]);
-  // Face 2 has ended at z 3; the ramp is cut while the slice lies between its corners.
+  // At z 2 the ramp (corners at z 1 to 3) is cut; at 3.5 it lies below the slice, and face 2 has ended (at 3).
   assert.deepEqual(needed(2, square), [[0, false], [1, false], [2, true]]);
   assert.deepEqual(needed(3.5, square), [[0, false], [2, false]]);
   // Triangle 3 is needed only over its own ground.

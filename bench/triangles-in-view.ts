@@ -8,7 +8,8 @@
 // which the GPU's ID pass shades and keeps (it discards only what lies above the slice), per
 // pixel with a face. One fragment per pixel is the floor.
 // sessionNeeds takes the union over the views of a session: the bytes of the chunks they query,
-// and of the share of each chunk's triangles some view needs (bench:session).
+// of the share of each chunk's triangles some view needs, and of that the share some view's
+// slice cuts (bench:session).
 import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
 import { zAtScale } from '../format/scale.js';
 import { CpuSlicer, sliceChunk } from '../preprocess/ssc/cpu-slicer.js';

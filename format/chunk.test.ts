@@ -10,7 +10,7 @@ import { fileURLToPath } from 'node:url';
 import { encodeChunk, encodeFaceStream, orderForCodecs, type ChunkInput } from './chunk-encode.js';
 import { VERTEX_BYTES, VERTEX_COLUMNS, vertexColumnOffset } from './chunk-layout.js';
 import { MeshoptDecoder } from 'meshoptimizer/decoder';
-import { CHUNK_MAGIC, ChunkFormatError, decodeChunk, type DecodedChunk } from './chunk.js';
+import { CHUNK_MAGIC, ChunkFormatError, chunkLayout, decodeChunk, type DecodedChunk } from './chunk.js';
 
 const fixture = (name: string): string => path.join(path.dirname(fileURLToPath(import.meta.url)), 'testdata', name);
 
@@ -366,6 +366,29 @@ describe('chunk file', () => {
     assertSame(d, gridChunk(12, 700, 6), 2 ** -13);
     await assert.rejects(decodeChunk(v4.subarray(0, 86)), /truncated \(86 bytes, the header alone is 88\)/);
     await assert.rejects(decodeChunk(v4.subarray(0, v4.length - 4)), new RegExp(`${v4.length - 4} bytes, its header \\(\\d+ faces, \\d+ \\+ \\d+ \\+ \\d+ \\+ \\d+ bytes of streams\\) needs ${v4.length}`));
+  });
+
+  test("each version's vertex record is the one docs/FORMAT.md gives, 32-bit lanes included (the fixtures have only 16-bit ones)", () => {
+    const record = (version: number, F: number, P: number, Z: number): [number, number, number] => {
+      const l = chunkLayout(version)!;
+      const s = l.laneSize(F, P, Z);
+      return [s, l.stride(s), l.faceLane(s)];
+    };
+    const big = 70_000;
+    // Version 5: two face indices, 2 bytes each while F <= 65535; points and z values elsewhere.
+    assert.deepEqual(record(5, 10, big, big), [2, 4, 0]);
+    assert.deepEqual(record(5, big, 10, 10), [4, 8, 0]);
+    // Version 4: 4s bytes (point, z, upper, lower), s = 2 while P, Z and F are all <= 65535.
+    assert.deepEqual(record(4, 10, 10, 10), [2, 8, 2]);
+    for (const [F, P, Z] of [[big, 10, 10], [10, big, 10], [10, 10, big]] as const) assert.deepEqual(record(4, F, P, Z), [4, 16, 2]);
+    // Versions 3 and 2: 8 + 2f bytes (u32 point, f32 z, two faces of f bytes), f = 2 while F <= 65535.
+    for (const v of [3, 2]) {
+      assert.deepEqual(record(v, 10, big, 10), [2, 12, 4]);
+      assert.deepEqual(record(v, big, 10, 10), [4, 16, 2]);
+    }
+    assert.deepEqual([5, 4, 3, 2].map((v) => chunkLayout(v)!.headerBytes), [100, 88, 80, 80]);
+    assert.deepEqual([5, 4, 3, 2].map((v) => chunkLayout(v)!.boxOwnGrid), [false, false, false, true]);
+    assert.equal(chunkLayout(1), undefined);
   });
 
   test('files of versions 3 and 2 (a z in each vertex, 80-byte header) are still read', async () => {

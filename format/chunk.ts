@@ -212,7 +212,7 @@ export function columnViews(buf: ArrayBufferLike, V: number): Columns {
 }
 
 /** How a version lays out its header and its vertex stream (docs/FORMAT.md, "Chunk file" and its older versions). */
-interface ChunkLayout {
+export interface ChunkLayout {
   headerBytes: number;
   /** The stream lengths its header gives, the face table's entries `F` among them when the table is raw. */
   streams(u32: (offset: number) => number, F: number): ChunkStreams;
@@ -230,12 +230,7 @@ interface ChunkLayout {
   faceLane(size: 2 | 4): number;
 }
 
-/**
- * Version 5: the face table through the codec; a vertex's point and z in sequence streams, its
- * faces in the vertex stream. Version 4: the raw face table; point, z and faces in the vertex
- * stream, on lanes sized for the largest table. Versions 2 and 3: no z table; a vertex is a u32
- * point, an f32 z and its faces.
- */
+/** Versions 2 and 3 (which differ only in their grid rule). */
 const V2_V3: Omit<ChunkLayout, 'boxOwnGrid'> = {
   headerBytes: 80,
   streams: (u32, F) => ({ faceTable: F, faces: 0, points: u32(68), zs: 0, vertexPoints: 0, vertexZs: 0, vertices: u32(72), indices: u32(76) }),
@@ -245,6 +240,12 @@ const V2_V3: Omit<ChunkLayout, 'boxOwnGrid'> = {
   stride: (size) => 8 + 2 * size,
   faceLane: (size) => 8 / size,
 };
+/**
+ * Version 5: the face table through the codec; a vertex's point and z in sequence streams, its
+ * faces in the vertex stream. Version 4: the raw face table; point, z and faces in the vertex
+ * stream, on lanes sized for the largest table. Versions 2 and 3: no z table; a vertex is a u32
+ * point, an f32 z and its faces.
+ */
 const LAYOUTS: ReadonlyMap<number, ChunkLayout> = new Map([
   [CHUNK_VERSION, {
     headerBytes: CHUNK_HEADER_BYTES,
@@ -270,6 +271,9 @@ const LAYOUTS: ReadonlyMap<number, ChunkLayout> = new Map([
   [CHUNK_VERSION_2, { ...V2_V3, boxOwnGrid: true }],
 ]);
 
+/** The layout of a chunk file version this reader reads, or undefined. */
+export const chunkLayout = (version: number): ChunkLayout | undefined => LAYOUTS.get(version);
+
 export class ChunkFormatError extends FormatError {
   constructor(message: string) {
     super(message);
@@ -291,7 +295,7 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   const dv = new DataView(b.buffer, b.byteOffset, b.byteLength);
   if (dv.getUint32(0, true) !== CHUNK_MAGIC) throw fail('not a chunk file (bad magic)');
   const version = dv.getUint32(4, true);
-  const layout = LAYOUTS.get(version);
+  const layout = chunkLayout(version);
   if (!layout) throw fail(`chunk version ${version}, this reader knows only versions ${CHUNK_VERSION_2} to ${CHUNK_VERSION} (rebuild the cube with ssc build)`);
   const { headerBytes, zTable, sequences } = layout;
   if (b.byteLength < headerBytes) throw fail(`truncated (${b.byteLength} bytes, the header alone is ${headerBytes})`);
