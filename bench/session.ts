@@ -27,7 +27,6 @@ import { cp, mkdir, mkdtemp, rm, stat, writeFile } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import type { Browser, BrowserContext, Page } from 'playwright-core';
-import type { CubeMeta } from '../format/cube-index.js';
 import { loadStyle } from '../preprocess/style.js';
 import { createStaticServer } from '../server/static-server.js';
 import { launchChromium } from '../e2e/helpers/browser.js';
@@ -38,10 +37,10 @@ import { logResponses, type Sent } from './response-log.js';
 import { toMapLibreView, type LngLatView, type ProjectedView } from './scale-zoom.js';
 import { writeSessionPages, type FirstMap, type FrameResult } from './session-pages.js';
 import { printTable } from './table.js';
+import { scriptedSession, SESSION_HEIGHT as HEIGHT, SESSION_WIDTH as WIDTH } from './session-script.js';
 import { sessionNeeds } from './triangles-in-view.js';
 import { buildTiles, tippecanoeVersion, TIPPECANOE_MISSING, writeWgs84GeoJson } from './tippecanoe-tiles.js';
 
-const WIDTH = 1280, HEIGHT = 720;
 const MAPLIBRE_FILES = ['maplibre-gl.mjs', 'maplibre-gl-shared.mjs', 'maplibre-gl-worker.mjs', 'maplibre-gl.css'];
 
 interface PageBench {
@@ -49,29 +48,6 @@ interface PageBench {
   frame(v: ProjectedView | LngLatView): Promise<FrameResult>;
 }
 declare const bench: PageBench;
-
-interface Session {
-  start: ProjectedView;
-  /** Each frame's view and the phase it belongs to. */
-  frames: { phase: string; view: ProjectedView }[];
-}
-
-function scriptedSession(meta: CubeMeta, zoomOutFrames: number): Session {
-  const [x0, y0, x1, y1] = meta.extent;
-  const centre: [number, number] = [(x0 + x1) / 2, (y0 + y1) / 2];
-  const base = meta.baseScale;
-  const full = (Math.max((x1 - x0) / WIDTH, (y1 - y0) / HEIGHT) * 1000) / meta.pixelSizeMm;
-  const frames: Session['frames'] = [];
-  for (let i = 1; i <= zoomOutFrames; i++) frames.push({ phase: 'zoom out', view: { center: centre, scale: base * (full / base) ** (i / zoomOutFrames) } });
-  // A quarter of the data's width: at the full extent half the view would leave the data
-  // (bgt_otterlo_1800m is square, the view wide), and the zoom in must end on it.
-  const panFrames = Math.max(1, Math.round(zoomOutFrames / 6));
-  const end: [number, number] = [centre[0] + (x1 - x0) / 4, centre[1]];
-  for (let i = 1; i <= panFrames; i++) frames.push({ phase: 'pan', view: { center: [centre[0] + (end[0] - centre[0]) * (i / panFrames), centre[1]], scale: full } });
-  const inFrames = Math.max(1, Math.round(zoomOutFrames / 2));
-  for (let i = 1; i <= inFrames; i++) frames.push({ phase: 'zoom in', view: { center: end, scale: full * (base / full) ** (i / inFrames) } });
-  return { start: { center: centre, scale: base }, frames };
-}
 
 interface RunResult {
   firstMs: number;
