@@ -16,7 +16,6 @@ import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { gzipSync } from 'node:zlib';
 import { encodeRecords } from '../format/chunk-encode.js';
-import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
 import { zAtScale } from '../format/scale.js';
 import { readTgap } from '../format/tgap.js';
 import type { Tgap } from '../format/tgap-model.js';
@@ -25,7 +24,7 @@ import { buildBenchCube } from './bench-cube.js';
 import { benchArgs, datasets } from './datasets.js';
 import { scriptedSession, SESSION_HEIGHT, SESSION_WIDTH } from './session-script.js';
 import { printTable } from './table.js';
-import { sessionNeeds } from './triangles-in-view.js';
+import { sessionNeeds, viewBox } from './triangles-in-view.js';
 
 type Box = [number, number, number, number];
 
@@ -101,8 +100,7 @@ try {
     const shown = new Set<number>();
     for (const v of views) {
       const z = zAtScale(meta, v.scale);
-      const half = (v.scale * PIXEL_SIZE_MM) / 1000 / 2;
-      const box: Box = [v.center[0] - SESSION_WIDTH * half, v.center[1] - SESSION_HEIGHT * half, v.center[0] + SESSION_WIDTH * half, v.center[1] + SESSION_HEIGHT * half];
+      const box = viewBox(v.scale, v.center, SESSION_WIDTH, SESSION_HEIGHT);
       // A slice between two states shows some of each.
       for (const state of new Set([Math.floor(z), Math.ceil(z)])) edgesShown(t, boxes, state, box, shown);
     }

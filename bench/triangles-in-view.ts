@@ -51,7 +51,7 @@ export async function trianglesInView(cubeDir: string): Promise<TrianglesInView>
 }
 
 /** The ground box of a `width` x `height` px view at 1:scale centred on `centre`. */
-function viewBox(scale: number, centre: [number, number], width: number, height: number): [number, number, number, number] {
+export function viewBox(scale: number, centre: [number, number], width: number, height: number): [number, number, number, number] {
   const res = (scale * PIXEL_SIZE_MM) / 1000;
   return [centre[0] - (width / 2) * res, centre[1] - (height / 2) * res, centre[0] + (width / 2) * res, centre[1] + (height / 2) * res];
 }
