@@ -30,6 +30,15 @@
 // ID pass. Bands written by the build instead (each chunk's triangles in 4 bands of end z, a
 // band table in the file) would cost 1% of the chunks' bytes (bgt_otterlo_1800m: 1.848 ->
 // 1.866 MB gzip, the codecs' order kept within each band) for the same savings.
+// Tried a third time, with the cracks filled: each face's end bounded by a byte in the chunk
+// file (a version 6; the chunks 1.1% larger gzip on bgt_otterlo_1800m, 1.7% on nlcd_zion),
+// 4 bands of ends per cell, and the colour pass giving a pixel the ID pass left undrawn between
+// two drawn ones a neighbour's face. At 1:8,929 (bench:passes, 3 turns) 70,384 -> 34,689
+// triangles a frame, but the ID pass took 40-41 ms against 42-46, and the fill's branch cost the
+// colour pass 5 to 8 ms at every scale (19.3 -> 25.3 at 1:1,000): the software GPU pays for it
+// at every pixel. Its ID pass is not bound by these triangles: with a fragment shader that only
+// writes its inputs it took 38 ms at 1:8,929, and with one range a chunk (more triangles, far
+// fewer draws) 51-53. Not kept.
 // Pure: the worker orders a decoded chunk; the renderer picks the ranges each frame.
 
 /** The blocks of a chunk ordered for drawing, as transferred to the renderer. */
