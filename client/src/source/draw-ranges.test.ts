@@ -5,7 +5,7 @@
 // little more than the triangles there.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { drawRanges, orderForDrawing, rangesFor, type DrawBlocks } from './draw-ranges.js';
+import { drawingOrder, drawRanges, orderForDrawing, rangesFor, type DrawBlocks } from './draw-ranges.js';
 
 function random(seed: number): () => number {
   let s = seed >>> 0;
@@ -130,5 +130,18 @@ test('a chunk all at one z (the floor) has finer cells: a view inside one draws 
   for (const t of ts) {
     const x = positions[3 * idx[3 * t]!]!, y = positions[3 * idx[3 * t]! + 1]!;
     assert.ok(x < 5 && y < 5, `triangle over square ${x}, ${y}`);
+  }
+});
+
+test('the drawing order is that of a sort by cell, lowest z and number, ties and signs included', () => {
+  const r = random(11);
+  for (const [count, cells, zs] of [[5000, 16, 40], [3000, 64, 1], [777, 16, 3], [1, 16, 1], [0, 16, 1]] as const) {
+    const cellOf = Uint8Array.from({ length: count }, () => Math.floor(r() * cells));
+    // Few distinct z values (ties), some negative, and both zeros.
+    const values = [0, -0, -2.5, 1e-3, 7, 4654.25, -1e-7, 31172.3].map(Math.fround);
+    const low = Float64Array.from({ length: count }, () => (zs === 1 ? 3 : values[Math.floor(r() * values.length)]! + Math.fround(Math.floor(r() * zs) / 9)));
+    for (let t = 0; t < count; t++) low[t] = Math.fround(low[t]!);
+    const expected = Array.from({ length: count }, (_, t) => t).sort((p, q) => cellOf[p]! - cellOf[q]! || low[p]! - low[q]! || p - q);
+    assert.deepEqual([...drawingOrder(cellOf, cells, low, zs === 1)], expected, `${count} triangles in ${cells} cells`);
   }
 });
