@@ -1,6 +1,7 @@
 // Chunk loading in the worker against a server that misbehaves on purpose: every chunk fetched
 // once while it stays needed, the nearest first; requests for a view left behind aborted; a
-// small GPU memory budget evicts and later fetches again; 30% failing requests still give a
+// small GPU memory budget evicts and later fetches again; before the first complete map an
+// incomplete one is drawn at most every 250 ms; 30% failing requests still give a
 // complete map; a 404 and corrupt chunks are reported as errors; sub-index files load on
 // demand; gzip bodies without Content-Encoding are read; at the floor the floor chunks come
 // first, the cube's after them as the margin. The cube is a real one of
@@ -302,6 +303,46 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     assert.ok((await p.page.evaluate(() => (globalThis as unknown as { frames: number }).frames)) >= 1);
     assert.equal(await waitIdle(p.page), true);
     await assertMatchesSlicer(p, b, z, 'after loading');
+  });
+
+  test('before the first complete map, what has come is drawn at most every 250 ms, and the map then comes complete', async () => {
+    const z = 30;
+    const a = candidates().find((x) => needed(x, z).visible.length >= 6);
+    assert.ok(a, 'a view of at least 6 chunks');
+    const visible = needed(a, z).visible.map((l) => l.file);
+    // The view's chunks come one after another, 100 ms apart: drawn as they come, the images
+    // would be about that far apart.
+    server.faults.delayMs = (f) => (visible.includes(f) ? 150 + 100 * visible.indexOf(f) : 0);
+    type Ev = { type: string; frame: number; at: number };
+    // The page's map is assigned to window after it is made, before its first frame: the
+    // listeners are on from that frame on.
+    const record = `(() => {
+      const evs = [];
+      globalThis.evs = evs;
+      Object.defineProperty(globalThis, 'map', { configurable: true, get() { return this.m; }, set(m) {
+        this.m = m;
+        m.on('render', (e) => evs.push({ type: 'render', frame: e.frame, at: performance.now() }));
+        m.on('complete', (e) => evs.push({ type: 'complete', frame: e.frame, at: performance.now() }));
+      } });
+    })()`;
+    logStart = server.log.length;
+    mp = await openMap(browser, server.url, { source: 'cube/', bbox: a.join(','), z, supersampling: 1 }, { initScript: record });
+    assert.equal(await waitIdle(mp.page), true);
+    const evs = await mp.page.evaluate(() => (globalThis as unknown as { evs: Ev[] }).evs);
+    const done = evs.find((e) => e.type === 'complete');
+    assert.ok(done, JSON.stringify(evs));
+    const before = evs.filter((e) => e.type === 'render' && e.frame < done.frame);
+    // The map fills in while it loads: more than the first (empty) image before the complete one.
+    assert.ok(before.length >= 2, `${before.length} incomplete images before the complete one: ${JSON.stringify(evs)}`);
+    for (let i = 1; i < before.length; i++) {
+      // Timed when each image is drawn, 250 ms and more after the last one began: less the
+      // difference of their drawing times (tens of ms on a software GPU).
+      assert.ok(before[i]!.at - before[i - 1]!.at >= 200, `incomplete images ${before[i - 1]!.frame} and ${before[i]!.frame} ${Math.round(before[i]!.at - before[i - 1]!.at)} ms apart: ${JSON.stringify(evs)}`);
+    }
+    // Every chunk of the view came (once) before that.
+    const fetched = countBy(chunkRequests());
+    for (const f of visible) assert.equal(fetched.get(f), 1, f);
+    await assertMatchesSlicer(mp, a, z, 'the first complete map');
   });
 
   test("'complete' fires once per view, for the frame that shows all its chunks: at once for a pan within the margin, after the late chunks otherwise", async () => {
