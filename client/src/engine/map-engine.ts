@@ -111,8 +111,10 @@ export class MapEngine extends Evented<EngineEvents> {
       lines: options.lines ?? true,
       prefetchMargin: options.prefetchMargin ?? 0.25,
     };
-    this.renderer = Renderer.create(this.canvas.element, options.gpuMemoryBudget ?? DEFAULT_BUDGET, (files) => this.contextLost(files), () => this.contextRestored());
+    // The source first: its worker's script and index.json are then asked for before the
+    // renderer makes its WebGL context and compiles its shaders, not after.
     this.source = new ChunkSource(options.source, options.sourceOptions);
+    this.renderer = Renderer.create(this.canvas.element, options.gpuMemoryBudget ?? DEFAULT_BUDGET, (files) => this.contextLost(files), () => this.contextRestored());
     if (this.renderer) {
       const residency = new ChunkResidency(this.source, this.renderer, options.uploadBytesPerFrame ?? 16 * 1024 * 1024, (file) => this.fire('data', { file }));
       this.residency = residency;
