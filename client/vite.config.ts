@@ -5,6 +5,7 @@
 import { rmSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vite';
+import { glslMinifyPlugin } from './src/render/glsl-minify.js';
 
 const outDir = fileURLToPath(new URL('../dist/client', import.meta.url));
 
@@ -27,6 +28,7 @@ export default defineConfig({
   },
   worker: { format: 'es', rollupOptions: { output: { hashCharacters: 'hex' } } },
   plugins: [
+    glslMinifyPlugin(),
     {
       name: 'clear-assets',
       apply: 'build',

@@ -8,6 +8,7 @@
 import { rmSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vite';
+import { glslMinifyPlugin } from './src/render/glsl-minify.js';
 
 const outDir = fileURLToPath(new URL('../dist/lib', import.meta.url));
 const entry = fileURLToPath(new URL('./src/lib/bundle.ts', import.meta.url));
@@ -41,6 +42,7 @@ export default defineConfig(({ mode }) => {
     // worker over as a single asset and does not follow such an import, which would fail.
     worker: { format: umd ? 'iife' : 'es', rolldownOptions: { output: { codeSplitting: false } } },
     plugins: [
+      glslMinifyPlugin(),
       {
         name: 'clear-lib',
         apply: 'build',
