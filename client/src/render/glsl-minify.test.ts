@@ -1,5 +1,6 @@
 // The minified shaders against the files: every token but comments and whitespace the same and
-// in order (tokenized again), no comment left, each # line a line of its own, #version still
+// in order (tokenized again), no comment left but the title (the first line comment, up to its
+// colon: bench:passes names the programs by it), each # line a line of its own, #version still
 // first; and a hand-made source, byte for byte.
 import assert from 'node:assert/strict';
 import { readdirSync, readFileSync } from 'node:fs';
@@ -20,7 +21,12 @@ test("every shader keeps its code's tokens, in order, without its comments", () 
     const src = readFileSync(path.join(dir, f), 'utf8');
     const min = minifyGlsl(src);
     assert.deepEqual(code(min), code(src), f);
-    assert.equal(tokenize(min, { version: '300 es' }).filter((t) => t.type.endsWith('comment')).length, 0, `${f}: a comment left`);
+    const comments = tokenize(min, { version: '300 es' }).filter((t) => t.type.endsWith('comment')).map((t) => t.data);
+    // A pass's shaders are titled "// <name> pass: ..."; the includes' first lines have no such title.
+    const first = src.split('\n').find((l) => l.startsWith('//'))!;
+    const title = /^\/\/ \w+ pass(?=:)/.exec(first)?.[0];
+    assert.deepEqual(comments, title ? [title] : [], `${f}: its title alone is left`);
+    if (/\.frag$/.test(f) && f !== 'line-paint.glsl') assert.ok(title, `${f}: a fragment shader names its pass`);
     for (const line of min.split('\n')) if (line.includes('#')) assert.match(line, /^#/, `${f}: a # line shares a line: ${line}`);
     if (src.startsWith('#version')) assert.match(min, /^#version 300 es\n/, f);
     before += src.length;
@@ -32,7 +38,8 @@ test("every shader keeps its code's tokens, in order, without its comments", () 
 test('a hand-made shader comes out as expected', () => {
   const src = [
     '#version 300 es',
-    '// A comment line.',
+    '// Test pass: a comment line.',
+    '// Another.',
     'precision highp float; /* a block',
     '   comment */',
     '#ifdef FLAT',
@@ -44,5 +51,5 @@ test('a hand-made shader comes out as expected', () => {
     '    gl_FragColor = vec4(a,  a, a, 1.0);',
     '}',
   ].join('\n');
-  assert.equal(minifyGlsl(src), '#version 300 es\nprecision highp float;\n#ifdef FLAT\nfloat a = 1.0;\n#endif\nvoid main() {\ngl_FragColor = vec4(a, a, a, 1.0);\n}\n');
+  assert.equal(minifyGlsl(src), '#version 300 es\n// Test pass\nprecision highp float;\n#ifdef FLAT\nfloat a = 1.0;\n#endif\nvoid main() {\ngl_FragColor = vec4(a, a, a, 1.0);\n}\n');
 });
