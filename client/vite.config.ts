@@ -5,7 +5,7 @@
 import { rmSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vite';
-import { glslMinifyPlugin } from './src/render/glsl-minify.js';
+import { glslMinifyPlugin } from './build/glsl-minify.js';
 
 const outDir = fileURLToPath(new URL('../dist/client', import.meta.url));
 

@@ -305,30 +305,43 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     await assertMatchesSlicer(p, b, z, 'after loading');
   });
 
-  test('before the first complete map, what has come is drawn at most every 250 ms, and the map then comes complete', async () => {
-    const z = 30;
-    const a = candidates().find((x) => needed(x, z).visible.length >= 6);
-    assert.ok(a, 'a view of at least 6 chunks');
+  /**
+   * Opens view `a` at z with its chunks coming one after another, 100 ms apart (drawn as they
+   * come, the images would be about that far apart), recording the map's 'render' and
+   * 'complete' events from its first frame: when, and after how many animation frames.
+   */
+  async function openSlowly(a: Bbox, z: number): Promise<{ visible: string[]; p: MapPage }> {
     const visible = needed(a, z).visible.map((l) => l.file);
-    // The view's chunks come one after another, 100 ms apart: drawn as they come, the images
-    // would be about that far apart.
     server.faults.delayMs = (f) => (visible.includes(f) ? 150 + 100 * visible.indexOf(f) : 0);
-    type Ev = { type: string; frame: number; at: number };
     // The page's map is assigned to window after it is made, before its first frame: the
     // listeners are on from that frame on.
     const record = `(() => {
       const evs = [];
+      let rafs = 0;
+      const tick = () => { rafs++; requestAnimationFrame(tick); };
+      requestAnimationFrame(tick);
       globalThis.evs = evs;
+      globalThis.rafs = () => rafs;
       Object.defineProperty(globalThis, 'map', { configurable: true, get() { return this.m; }, set(m) {
         this.m = m;
-        m.on('render', (e) => evs.push({ type: 'render', frame: e.frame, at: performance.now() }));
-        m.on('complete', (e) => evs.push({ type: 'complete', frame: e.frame, at: performance.now() }));
+        m.on('render', (e) => evs.push({ type: 'render', frame: e.frame, at: performance.now(), raf: rafs }));
+        m.on('complete', (e) => evs.push({ type: 'complete', frame: e.frame, at: performance.now(), raf: rafs }));
       } });
     })()`;
     logStart = server.log.length;
-    mp = await openMap(browser, server.url, { source: 'cube/', bbox: a.join(','), z, supersampling: 1 }, { initScript: record });
-    assert.equal(await waitIdle(mp.page), true);
-    const evs = await mp.page.evaluate(() => (globalThis as unknown as { evs: Ev[] }).evs);
+    mp = await openMap(browser, server.url, { source: 'cube/', bbox: a.join(','), z }, { initScript: record });
+    return { visible, p: mp };
+  }
+  type Recorded = { type: string; frame: number; at: number; raf: number };
+  const recorded = (p: MapPage): Promise<Recorded[]> => p.page.evaluate(() => (globalThis as unknown as { evs: Recorded[] }).evs);
+
+  test('before the first complete map, what has come is drawn at most every 250 ms, and the map then comes complete', async () => {
+    const z = 30;
+    const a = candidates().find((x) => needed(x, z).visible.length >= 6);
+    assert.ok(a, 'a view of at least 6 chunks');
+    const { visible, p } = await openSlowly(a, z);
+    assert.equal(await waitIdle(p.page), true);
+    const evs = await recorded(p);
     const done = evs.find((e) => e.type === 'complete');
     assert.ok(done, JSON.stringify(evs));
     const before = evs.filter((e) => e.type === 'render' && e.frame < done.frame);
@@ -339,10 +352,34 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
       // difference of their drawing times (tens of ms on a software GPU).
       assert.ok(before[i]!.at - before[i - 1]!.at >= 200, `incomplete images ${before[i - 1]!.frame} and ${before[i]!.frame} ${Math.round(before[i]!.at - before[i - 1]!.at)} ms apart: ${JSON.stringify(evs)}`);
     }
-    // Every chunk of the view came (once) before that.
+    // Every chunk of the view was fetched, once.
     const fetched = countBy(chunkRequests());
     for (const f of visible) assert.equal(fetched.get(f), 1, f);
-    await assertMatchesSlicer(mp, a, z, 'the first complete map');
+    await assertMatchesSlicer(p, a, z, 'the first complete map');
+  });
+
+  test('a view changed before the first complete map is drawn at once', async () => {
+    const z = 30;
+    const a = candidates().find((x) => needed(x, z).visible.length >= 6);
+    assert.ok(a, 'a view of at least 6 chunks');
+    const { p } = await openSlowly(a, z);
+    // Once the first image is on screen, a pan of 5 m: a new view.
+    await p.page.waitForFunction(() => (globalThis as unknown as { evs: Recorded[] }).evs.some((e) => e.type === 'render'));
+    const b: Bbox = [a[0] + 5, a[1], a[2] + 5, a[3]];
+    const pan = await p.page.evaluate(([bb, zz]) => {
+      const at = performance.now(), raf = (globalThis as unknown as { rafs: () => number }).rafs();
+      map.fitBoundsProjected(bb, { sliceZ: zz, duration: 0 });
+      return { at, raf };
+    }, [b, z] as const);
+    assert.equal(await waitIdle(p.page), true);
+    const evs = await recorded(p);
+    const done = evs.find((e) => e.type === 'complete')!;
+    assert.ok(done.at > pan.at, `the pan came before the first complete map (else this test tells nothing): ${JSON.stringify(evs)}`);
+    const next = evs.find((e) => e.type === 'render' && e.at > pan.at)!;
+    // Drawn in the next animation frame or the one after (the counter's and the map's callbacks
+    // run in either order), not held back for up to 250 ms (some 15 frames).
+    assert.ok(next.raf - pan.raf <= 2, `the pan's first image came ${next.raf - pan.raf} animation frames later: ${JSON.stringify(evs)}`);
+    await assertMatchesSlicer(p, b, z, 'after the pan');
   });
 
   test("'complete' fires once per view, for the frame that shows all its chunks: at once for a pan within the margin, after the late chunks otherwise", async () => {

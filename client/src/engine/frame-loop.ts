@@ -51,14 +51,15 @@ export interface FrameSink {
 }
 
 /**
- * Before the map's first complete image, an incomplete one is drawn at most this often. Each
- * frame costs the GPU (on a software GPU the CPU the worker decodes the first chunks on), and
- * the first chunks come within a second on a fast network: nlcd_zion at 1:50,000 drew 4 to 9
- * incomplete images before its first complete map. With this, its first complete map came in
- * 981 ms instead of 1,051, bgt_otterlo_1800m's at 1:1,000 in 456 instead of 526 (the latter
- * with the worker's faster drawing order too; medians of 9 page loads each, alternated, no
- * network throttling); on Slow 4G, where the network sets the pace, 2,919 and 2,924 ms (5
- * loads). 250 ms still shows a slow network's map filling in.
+ * Before the map's first complete image, an incomplete one of a view already on screen is drawn
+ * at most this often (a view that changed is drawn at once). Each frame costs the GPU (on a
+ * software GPU the CPU the worker decodes the first chunks on), and the first chunks come within
+ * a second on a fast network: nlcd_zion at 1:50,000 drew 4 to 9 incomplete images before its
+ * first complete map. With this, its first complete map came in 981 ms instead of 1,051, and
+ * bgt_otterlo_1800m's at 1:1,000 in 456 instead of 526 (against the code before the worker's
+ * faster drawing order too); medians of 9 page loads each, alternated, no network throttling.
+ * On Slow 4G, where the network sets the pace: 2,924 ms before, 2,919 after (5 loads). 250 ms
+ * still shows a slow network's map filling in.
  */
 const PARTIAL_FRAME_MS = 250;
 
@@ -152,7 +153,7 @@ export class FrameLoop {
     if (!this.raf) return;
     cancelAnimationFrame(this.raf);
     this.raf = 0;
-    this.frame();
+    this.frame(true);
   }
 
   loaded(): boolean {
@@ -208,12 +209,13 @@ export class FrameLoop {
     return q;
   }
 
-  private frame(): void {
+  /** `force`: draw whatever is due, even an incomplete image that PARTIAL_FRAME_MS would hold back. */
+  private frame(force = false): void {
     const r = this.renderer;
     const meta = this.view.meta;
     if (!meta || this.stopped) return;
-    const now = performance.now();
-    this.view.tick(now);
+    const t = performance.now();
+    this.view.tick(t);
     const q = this.request();
     this.sentEarly = false;
     if (r.lost) return; // contextrestored schedules the next frame
@@ -243,26 +245,28 @@ export class FrameLoop {
     chunks.sort(byFile);
     lineChunks.sort(byFile);
     const { blending, boundaries, supersampling } = this.settings;
-    const blendOn = blending.mode === 'always' || (blending.mode === 'moving' && now - this.lastSliceMove < MOVING_MS);
+    const blendOn = blending.mode === 'always' || (blending.mode === 'moving' && t - this.lastSliceMove < MOVING_MS);
     if (blendOn !== this.blendingWasOn) this.accumulated = 0;
     this.blendingWasOn = blendOn;
-    if (this.firstCompleteAt === null && this.accumulated === 0) {
-      // Until the first complete map: an incomplete image at most every PARTIAL_FRAME_MS (the
-      // chunks that came are on the GPU already, uploaded above).
-      if (!this.residency.shows(this.viewSeq, files)) {
-        const wait = this.lastPartialFrame + PARTIAL_FRAME_MS - now;
-        if (wait > 0) {
-          // A chunk that comes meanwhile schedules a frame of its own, complete or not.
-          if (!this.partialTimer) this.partialTimer = setTimeout(() => ((this.partialTimer = 0), this.schedule()), wait);
-          return;
-        }
-        this.lastPartialFrame = now;
+    // Until the first complete map, an incomplete image of a view already on screen (only more
+    // of its chunks came) at most every PARTIAL_FRAME_MS; a view that changed is drawn at once.
+    if (!force && this.firstCompleteAt === null && this.accumulated < supersampling && this.shown?.seq === this.viewSeq && !this.residency.shows(this.viewSeq, files)) {
+      const wait = this.lastPartialFrame + PARTIAL_FRAME_MS - t;
+      if (wait > 0) {
+        // The chunks that came went to the GPU above, up to the frame's budget: the rest next
+        // frame. A chunk that comes meanwhile asks for a frame of its own, complete or not.
+        if (this.residency.hasPending) this.schedule();
+        if (!this.partialTimer) this.partialTimer = setTimeout(() => ((this.partialTimer = 0), this.schedule()), wait);
+        return;
       }
     }
+    if (this.partialTimer) clearTimeout(this.partialTimer);
+    this.partialTimer = 0;
     // Once the accumulation is complete the finished image stays on screen: a frame asked for
     // without a change (a late answer, a failed or dropped chunk) draws nothing, since one more
     // jittered frame averaged in would blur its edges. Every change resets `accumulated`.
     if (this.accumulated < supersampling) {
+      if (this.firstCompleteAt === null) this.lastPartialFrame = t;
       const n = this.accumulated;
       const colour = colourParams({ view: q.view, ratio: this.canvas.deviceRatio(), boundaries, paints: this.settings.paints, blendDistance: blendOn ? blending.distance : 0, weight: weight(n) });
       const { triangles, segments } = r.render({ view: q.view, surface: this.view.surface(), zMax: meta.zMax, jitter: jitter(n), colour, pixelRatio: this.canvas.deviceRatio(), sliceRange: [q.zMin, q.zMax] }, chunks, lineChunks);

@@ -114,7 +114,13 @@ export class MapEngine extends Evented<EngineEvents> {
     // The source first: its worker's script and index.json are then asked for before the
     // renderer makes its WebGL context and compiles its shaders, not after.
     this.source = new ChunkSource(options.source, options.sourceOptions);
-    this.renderer = Renderer.create(this.canvas.element, options.gpuMemoryBudget ?? DEFAULT_BUDGET, (files) => this.contextLost(files), () => this.contextRestored());
+    try {
+      this.renderer = Renderer.create(this.canvas.element, options.gpuMemoryBudget ?? DEFAULT_BUDGET, (files) => this.contextLost(files), () => this.contextRestored());
+    } catch (err) {
+      // A shader that does not compile: the worker, running already, goes with the engine.
+      this.source.destroy();
+      throw err;
+    }
     if (this.renderer) {
       const residency = new ChunkResidency(this.source, this.renderer, options.uploadBytesPerFrame ?? 16 * 1024 * 1024, (file) => this.fire('data', { file }));
       this.residency = residency;

@@ -78,9 +78,9 @@ const sortKeyBits = (() => {
  * values; all equal when `flat`), ties in their own order. A counting sort by cell, then within
  * each cell one numeric sort of float64 keys that hold both the z and the triangle. Ordering the
  * 34 floor chunks of nlcd_zion's first view at 1:50,000 took the worker 100 to 157 ms in three
- * page loads with a sort by comparator, 52 to 72 ms so (the rest is the boxes and the blocks); the
- * first complete map came in 998 ms instead of 1,033 (median of 9 loads each, alternated, no
- * network throttling).
+ * page loads with a sort by comparator, 52 to 72 ms so (the rest is the boxes and the blocks); in
+ * one run of 9 page loads each, alternated, with no network throttling, the first complete map
+ * came in 998 ms instead of 1,033 (such runs differ by some 50 ms).
  */
 export function drawingOrder(cellOf: Uint8Array, cellCount: number, low: Float64Array, flat: boolean): Uint32Array {
   const count = cellOf.length;
