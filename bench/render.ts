@@ -3,7 +3,8 @@
 // extent. Per view: time from page load to the first complete map, frame time (median and p95
 // over 60 frames of continuous redrawing, each frame a new view so the worker queries the
 // index), triangles submitted per frame and those the view needs (triangles-in-view.ts), index
-// query time per frame, and the chunks and bytes the view needs. Lines: segments submitted per
+// query time per frame, the chunks and bytes the view needs, and GPU memory: the chunks' and
+// the frame's targets' (those of overlays and lines only once they are drawn). Lines: segments submitted per
 // frame, the line chunks' bytes, and the frame time with the lines hidden, measured in turns
 // with the lines shown on the same page; in a third turn every triangle of the chunks is drawn,
 // as before draw runs, for comparison. Cubes are built fresh (ssc build) and served by the
@@ -41,7 +42,7 @@ interface PageEngine {
   off(t: 'render', f: (s: Stats) => void): void;
   neededChunks(): { visible: string[]; margin: string[] };
   setWholeChunks(whole: boolean): void;
-  stats(): { gpuBytes: number };
+  stats(): { gpuBytes: number; targetBytes: number };
 }
 interface Stats { triangles: number; segments: number; queryMs: number }
 declare const map: PageMap;
@@ -62,7 +63,7 @@ async function main(): Promise<void> {
   const filter = process.argv[2];
   const sets = datasets(filter, ['bgt_otterlo_1800m', 'nlcd_zion']);
   const browser = await launchChromium();
-  const rows: string[][] = [['dataset', 'view', 'scale', 'first map ms', 'frame ms median', 'frame ms p95', 'no lines ms', 'whole chunks ms', 'triangles/frame', 'whole chunks', 'needed in view', 'ID fragments/px', 'GPU MB', 'at 5 places', 'segments/frame', 'line vertices in view', 'query ms/frame', 'chunks', 'MB', 'line MB', 'long tasks load', 'long tasks frames']];
+  const rows: string[][] = [['dataset', 'view', 'scale', 'first map ms', 'frame ms median', 'frame ms p95', 'no lines ms', 'whole chunks ms', 'triangles/frame', 'whole chunks', 'needed in view', 'ID fragments/px', 'GPU MB', 'targets MB', 'at 5 places', 'segments/frame', 'line vertices in view', 'query ms/frame', 'chunks', 'MB', 'line MB', 'long tasks load', 'long tasks frames']];
   const ratios: string[] = [];
   try {
     for (const d of sets) {
@@ -99,7 +100,8 @@ async function main(): Promise<void> {
           await page.evaluate(() => map.whenIdle());
           const firstMs = await page.evaluate(() => engine.firstCompleteAt);
           // The chunks on the GPU once the view is complete (with its margin and what lies ahead).
-          const gpuMb = (await page.evaluate(() => engine.stats().gpuBytes)) / 1e6;
+          const { gpuBytes, targetBytes } = await page.evaluate(() => engine.stats());
+          const gpuMb = gpuBytes / 1e6, targetMb = targetBytes / 1e6;
           const longLoad = await page.evaluate(() => (globalThis as unknown as { longTasks: number[] }).longTasks.splice(0));
           const needed = await page.evaluate(() => engine.neededChunks());
           const files = [...needed.visible, ...needed.margin];
@@ -175,7 +177,7 @@ async function main(): Promise<void> {
             firstMs === null ? 'never' : firstMs.toFixed(0),
             median(frameMs).toFixed(1), p95(frameMs).toFixed(1), median(noLinesMs).toFixed(1), median(wholeMs).toFixed(1),
             Math.round(drawn).toString(), Math.round(median(wholeStats.map((s) => s.triangles))).toString(), String(neededTriangles),
-            fragmentsPerPixel.toFixed(2), gpuMb.toFixed(1),
+            fragmentsPerPixel.toFixed(2), gpuMb.toFixed(1), targetMb.toFixed(1),
             Math.round(triangleMeans[triangleMeans.length - 1]!).toString(),
             Math.round(median(kept.map((s) => s.segments))).toString(), String(lineVertices),
             median(kept.map((s) => s.queryMs)).toFixed(2),

@@ -12,7 +12,7 @@ import { describe, test } from 'node:test';
 import type { Page } from 'playwright-core';
 import { openMap } from './helpers/browser.js';
 import { LIB_PAGE_HEAD, useLibSite } from './helpers/lib-site.js';
-import { hexColour, loseAndRestoreContext, pixel, screenshot, type Rgba } from './helpers/map-page.js';
+import { GL_ALLOCATION_LOG, glAllocations, hexColour, loseAndRestoreContext, pixel, screenshot, type Rgba } from './helpers/map-page.js';
 import { distanceToPolyline, insideRings } from '../client/src/overlay/overlay-hit.js';
 import { idle, settle, type VarioWindow } from './helpers/vario-page.js';
 
@@ -155,6 +155,32 @@ describe('GeoJsonLayer in the script-tag build (bgt_otterlo_400m)', () => {
   function near(got: number[], want: number[], tol: number): boolean {
     return got.every((v, k) => Math.abs(v - want[k]!) <= tol);
   }
+
+  test('a map with no layer compiles no overlay program and keeps no overlay target; the first layer adds four programs and two targets of the canvas', async () => {
+    bed.page = await openMap(bed.site.browser, bed.site.server.url, {}, { page: 'geojson.html', initScript: GL_ALLOCATION_LOG });
+    const page = bed.page.page;
+    await idle(page);
+    const gl = (): ReturnType<typeof glAllocations> => glAllocations(page);
+    const RG32UI = 0x823c, R32F = 0x822e, RGBA8 = 0x8058, RGBA16F = 0x881a, DEPTH32F = 0x8cac;
+    const before = await gl();
+    // ids and aux with their depth, the slicing surface, the colour (float where it can be
+    // drawn to), and the lines' coverage: this cube has lines.
+    assert.deepEqual(before.targets, [RG32UI, RG32UI, DEPTH32F, R32F, RGBA16F, RGBA8]);
+    const centre = await lngLats(page, [[320, 240], [360, 240], [360, 280], [320, 280]]);
+    const shot = await screenshot(page);
+    await page.evaluate(async (ring) => {
+      const w = globalThis as unknown as LayerWindow;
+      w.layers = [new w.vario.GeoJsonLayer({ data: { type: 'Polygon', coordinates: [[...ring, ring[0]!]] }, paint: { fillColor: '#0000ff', fillOpacity: 1, lineWidth: 0 } }).addTo(w.map)];
+      await w.map.whenIdle();
+    }, centre);
+    const after = await gl();
+    assert.equal(after.links, before.links + 4, 'fill, quads, composite and show');
+    // The layer's coverage, and the layers painted in the colour's format.
+    assert.deepEqual(after.targets, [...before.targets, RGBA8, RGBA16F]);
+    const drawn = await screenshot(page);
+    assert.deepEqual(pixel(drawn, 340, 260), hexColour('#0000ff'), 'the square is drawn');
+    assert.deepEqual(pixel(drawn, 100, 100), pixel(shot, 100, 100), 'and nothing else');
+  });
 
   test('a line in longitude/latitude is drawn where its coordinates project, also after a wheel zoom; removing it gives the map back exactly', async () => {
     const page = await open();

@@ -15,7 +15,7 @@ import { fitView } from '../preprocess/map/rasterize.js';
 import { CubeReader } from '../preprocess/ssc/read-cube.js';
 import { openMap } from './helpers/browser.js';
 import { otterlo400 } from './helpers/cube.js';
-import { hexColour, pixel, screenshot, waitIdle, type Rgba } from './helpers/map-page.js';
+import { GL_ALLOCATION_LOG, glAllocations, hexColour, pixel, screenshot, waitIdle, type Rgba } from './helpers/map-page.js';
 import { useTestBed } from './helpers/test-bed.js';
 
 const W = 640, H = 480;
@@ -202,6 +202,26 @@ describe('lines of the cube (bgt_otterlo_400m)', () => {
       await bed.page.close();
       bed.page = null;
     }
+  });
+
+  test('with its lines hidden the map keeps no target for them; shown, it makes one; the stats count the targets WebGL was asked for', async () => {
+    const { all, cube } = await lines();
+    const meta = cube.index.meta;
+    const z = busiestZ(all, meta.zMax);
+    bed.page = await openMap(bed.browser, bed.server.url, { source: 'cube/', bbox: meta.extent.join(','), z, supersampling: 1, lines: 0 }, { initScript: GL_ALLOCATION_LOG });
+    const page = bed.page.page;
+    assert.equal(await waitIdle(page), true);
+    const RGBA8 = 0x8058;
+    const hidden = await glAllocations(page);
+    assert.ok(!hidden.targets.includes(RGBA8), 'no RGBA8 target (the lines\' coverage, the overlays\') while the lines are hidden');
+    assert.equal((await page.evaluate(() => engine.stats())).targetBytes, hidden.targetBytes);
+    await setLinesVisible(page, true);
+    const shown = await glAllocations(page);
+    assert.deepEqual(shown.targets, [...hidden.targets, RGBA8], 'the lines\' coverage');
+    const stats = await page.evaluate(() => engine.stats());
+    assert.ok(stats.segments > 0, 'lines drawn');
+    assert.equal(stats.targetBytes, shown.targetBytes);
+    assert.equal(shown.targetBytes - hidden.targetBytes, 4 * W * H);
   });
 
   test('a line is as dark at its vertices and joins as along its segments: overlapping segments paint a pixel once', async () => {

@@ -44,7 +44,7 @@ export interface EngineApi {
   readIds(): { width: number; height: number; upper: Uint32Array; lower: Uint32Array; classes: Uint32Array; z: Float32Array; slice: Float32Array } | null;
   chunkStatuses(): Map<string, string>;
   neededChunks(): { visible: string[]; margin: string[] };
-  stats(): { frame: number; triangles: number; segments: number; chunks: number; queryMs: number; gpuBytes: number };
+  stats(): { frame: number; triangles: number; segments: number; chunks: number; queryMs: number; gpuBytes: number; targetBytes: number };
 }
 
 
@@ -133,4 +133,42 @@ export function pixel(img: Rgba, i: number, j: number): [number, number, number]
 export function hexColour(hex: string): [number, number, number] {
   const n = parseInt(hex.slice(1), 16);
   return [(n >> 16) & 255, (n >> 8) & 255, n & 255];
+}
+
+/**
+ * An init script (openMap's initScript) that logs, as WebGL is asked, every program linked and
+ * every texture and renderbuffer allocated: read back by glAllocations.
+ */
+export const GL_ALLOCATION_LOG = `window.glLog = { links: 0, storage: [] };
+  const P = WebGL2RenderingContext.prototype, link = P.linkProgram, tex = P.texStorage2D, rb = P.renderbufferStorage;
+  P.linkProgram = function (p) { window.glLog.links++; return link.call(this, p); };
+  P.texStorage2D = function (t, levels, format, w, h) { window.glLog.storage.push([format, w, h]); return tex.call(this, t, levels, format, w, h); };
+  P.renderbufferStorage = function (t, format, w, h) { window.glLog.storage.push([format, w, h]); return rb.call(this, t, format, w, h); };`;
+
+/** Bytes a pixel of each internal format the map allocates at the canvas's size takes. */
+const FORMAT_BYTES = new Map([
+  [0x823c, 8], // RG32UI
+  [0x822e, 4], // R32F
+  [0x881a, 8], // RGBA16F
+  [0x8058, 4], // RGBA8
+  [0x8cac, 4], // DEPTH_COMPONENT32F
+]);
+
+/**
+ * What GL_ALLOCATION_LOG saw: programs linked, the formats of the textures and renderbuffers of
+ * the canvas's size (the frame's targets) in order, and their bytes.
+ */
+export async function glAllocations(page: Page): Promise<{ links: number; targets: number[]; targetBytes: number }> {
+  const { links, sized } = await page.evaluate(() => {
+    const w = globalThis as unknown as { glLog: { links: number; storage: [number, number, number][] }; document: { querySelector(s: string): { width: number; height: number } } };
+    const c = w.document.querySelector('canvas');
+    return { links: w.glLog.links, sized: w.glLog.storage.filter(([, tw, th]) => tw === c.width && th === c.height) };
+  });
+  let targetBytes = 0;
+  for (const [f, w, h] of sized) {
+    const b = FORMAT_BYTES.get(f);
+    if (b === undefined) throw new Error(`a target of format 0x${f.toString(16)}, which glAllocations does not know`);
+    targetBytes += b * w * h;
+  }
+  return { links, targets: sized.map(([f]) => f), targetBytes };
 }

@@ -37,7 +37,10 @@ export interface RenderStats {
   chunks: number;
   /** Last index query in the worker. */
   queryMs: number;
+  /** GPU memory for chunks, bytes. */
   gpuBytes: number;
+  /** GPU memory for the frame's targets, bytes. */
+  targetBytes: number;
   jittered: boolean;
 }
 
@@ -89,7 +92,7 @@ export class FrameLoop {
   private sentEarly = false;
   /** The overlays changed: the finished map is shown again with them, without drawing it again. */
   private overlaysDue = false;
-  private lastStats: RenderStats = { frame: 0, triangles: 0, segments: 0, chunks: 0, queryMs: 0, gpuBytes: 0, jittered: false };
+  private lastStats: RenderStats = { frame: 0, triangles: 0, segments: 0, chunks: 0, queryMs: 0, gpuBytes: 0, targetBytes: 0, jittered: false };
 
   constructor(
     private readonly view: MapView,
@@ -271,7 +274,7 @@ export class FrameLoop {
       const colour = colourParams({ view: q.view, ratio: this.canvas.deviceRatio(), boundaries, paints: this.settings.paints, blendDistance: blendOn ? blending.distance : 0, weight: weight(n) });
       const { triangles, segments } = r.render({ view: q.view, surface: this.view.surface(), zMax: meta.zMax, jitter: jitter(n), colour, pixelRatio: this.canvas.deviceRatio(), sliceRange: [q.zMin, q.zMax] }, chunks, lineChunks);
       this.accumulated = n + 1;
-      this.lastStats = { frame: this.frameNo, triangles, segments, chunks: chunks.length, queryMs: this.residency.queryMs, gpuBytes: r.store.bytes, jittered: n > 0 };
+      this.lastStats = { frame: this.frameNo, triangles, segments, chunks: chunks.length, queryMs: this.residency.queryMs, gpuBytes: r.store.bytes, targetBytes: r.targetBytes, jittered: n > 0 };
       // Line chunks count as shown with lines turned off: there is nothing more to fetch for them.
       this.shown = { seq: this.viewSeq, frame: this.frameNo, files };
       this.sink.render(this.stats());

@@ -343,7 +343,7 @@ export class MapEngine extends Evented<EngineEvents> {
   }
 
   stats(): RenderStats {
-    return this.loop?.stats() ?? { frame: 0, triangles: 0, segments: 0, chunks: 0, queryMs: 0, gpuBytes: 0, jittered: false };
+    return this.loop?.stats() ?? { frame: 0, triangles: 0, segments: 0, chunks: 0, queryMs: 0, gpuBytes: 0, targetBytes: 0, jittered: false };
   }
 
   /** The ID buffer of the current view (device pixels, rows from the top). */

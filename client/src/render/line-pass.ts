@@ -38,7 +38,7 @@ export class LinePass {
     if (segments === 0) return 0;
     const p = this.programs.get(flatZ === null ? [] : ['FLAT']);
     p.use();
-    gl.bindFramebuffer(gl.FRAMEBUFFER, targets.linesFb);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, targets.lines().fb);
     gl.viewport(0, 0, targets.width, targets.height);
     gl.clearBufferfv(gl.COLOR, 0, new Float32Array([0, 0, 0, 0]));
     gl.disable(gl.DEPTH_TEST);

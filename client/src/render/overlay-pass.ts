@@ -6,7 +6,9 @@
 // is a layer of many touching polygons. The overlays target is then shown over the canvas;
 // while neither the view nor the layers change (the frames that accumulate a still map) only
 // that last step is repeated. Meshes are uploaded the first time they are drawn and kept until
-// their layer changes or goes; a layer wholly off screen is skipped.
+// their layer changes or goes; a layer wholly off screen is skipped. The programs and the
+// targets are made when a layer is first drawn: a map that shows no overlay compiles four
+// programs fewer before its first frame and keeps no targets for them.
 import fullscreenVert from '../../shaders/fullscreen.vert?raw';
 import compositeFrag from '../../shaders/overlay-composite.frag?raw';
 import showFrag from '../../shaders/overlay-show.frag?raw';
@@ -41,20 +43,30 @@ export interface OverlayDrawable {
 /** Not written: a channel's half width that covers no pixel (overlay-quad.frag). */
 const NONE = -1;
 
+interface OverlayPrograms {
+  fill: Program;
+  quad: Program;
+  composite: Program;
+  show: Program;
+}
+
 export class OverlayPass {
-  private readonly fill: Program;
-  private readonly quad: Program;
-  private readonly composite: Program;
-  private readonly show: Program;
+  private made: OverlayPrograms | null = null;
   private readonly emptyVao: WebGLVertexArrayObject;
   private readonly meshes = new Map<OverlayMesh, GpuOverlayMesh>();
 
   constructor(private readonly gl: WebGL2RenderingContext) {
-    this.fill = new Program(gl, fillVert, fillFrag, 'overlay fill');
-    this.quad = new Program(gl, quadVert, quadFrag, 'overlay quads');
-    this.composite = new Program(gl, fullscreenVert, compositeFrag, 'overlay composite');
-    this.show = new Program(gl, fullscreenVert, showFrag, 'overlay show');
     this.emptyVao = gl.createVertexArray();
+  }
+
+  private programs(): OverlayPrograms {
+    const gl = this.gl;
+    return (this.made ??= {
+      fill: new Program(gl, fillVert, fillFrag, 'overlay fill'),
+      quad: new Program(gl, quadVert, quadFrag, 'overlay quads'),
+      composite: new Program(gl, fullscreenVert, compositeFrag, 'overlay composite'),
+      show: new Program(gl, fullscreenVert, showFrag, 'overlay show'),
+    });
   }
 
   /** Frees the meshes of layers no longer drawn. */
@@ -74,16 +86,17 @@ export class OverlayPass {
   draw(targets: Targets, view: ViewGeometry, ratio: number, layers: readonly OverlayDrawable[], redraw: boolean): void {
     if (!layers.some((l) => l.mesh)) return;
     const gl = this.gl;
+    const progs = this.programs(), t = targets.overlays();
     gl.disable(gl.DEPTH_TEST);
     gl.enable(gl.BLEND);
     gl.bindVertexArray(this.emptyVao);
     if (redraw) {
-      gl.bindFramebuffer(gl.FRAMEBUFFER, targets.overlaysFb);
+      gl.bindFramebuffer(gl.FRAMEBUFFER, t.overlaysFb);
       gl.clearBufferfv(gl.COLOR, 0, new Float32Array([0, 0, 0, 0]));
       for (const layer of layers) {
         if (!layer.mesh || !this.coverage(targets, view, ratio, layer.mesh, layer.paint)) continue;
-        gl.bindFramebuffer(gl.FRAMEBUFFER, targets.overlaysFb);
-        this.fullscreen(targets, this.composite, targets.coverage, 'uCoverage', (c) => {
+        gl.bindFramebuffer(gl.FRAMEBUFFER, t.overlaysFb);
+        this.fullscreen(targets, progs.composite, t.coverage, 'uCoverage', (c) => {
           const p = layer.paint;
           gl.uniform4fv(c.loc('uFill'), p.fill);
           gl.uniform4fv(c.loc('uLine'), p.line);
@@ -93,7 +106,7 @@ export class OverlayPass {
       }
     }
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
-    this.fullscreen(targets, this.show, targets.overlays, 'uOverlays', () => {});
+    this.fullscreen(targets, progs.show, t.overlays, 'uOverlays', () => {});
     gl.bindVertexArray(null);
     gl.blendFunc(gl.ONE, gl.ZERO);
     gl.disable(gl.BLEND);
@@ -118,7 +131,8 @@ export class OverlayPass {
   delete(): void {
     for (const m of this.meshes.values()) m.delete();
     this.meshes.clear();
-    for (const p of [this.fill, this.quad, this.composite, this.show]) p.delete();
+    if (this.made) for (const p of Object.values(this.made)) p.delete();
+    this.made = null;
     this.gl.deleteVertexArray(this.emptyVao);
   }
 
@@ -137,7 +151,8 @@ export class OverlayPass {
     const gl = this.gl;
     let gpu = this.meshes.get(mesh);
     if (!gpu) this.meshes.set(mesh, (gpu = new GpuOverlayMesh(gl, mesh)));
-    gl.bindFramebuffer(gl.FRAMEBUFFER, targets.coverageFb);
+    const progs = this.programs();
+    gl.bindFramebuffer(gl.FRAMEBUFFER, targets.overlays().coverageFb);
     gl.viewport(0, 0, targets.width, targets.height);
     gl.clearBufferfv(gl.COLOR, 0, new Float32Array([0, 0, 0, 0]));
     gl.blendEquation(gl.MAX);
@@ -151,13 +166,13 @@ export class OverlayPass {
     };
     const fillShown = p.fill[3] > 0;
     if (fillShown) {
-      common(this.fill);
+      common(progs.fill);
       drawPart(gl, gpu.fill);
     }
-    common(this.quad);
+    common(progs.quad);
     const quads = (parts: DrawnPart[], radii: [number, number, number, number]): void => {
-      gl.uniform4fv(this.quad.loc('uRadii'), radii);
-      gl.uniform1f(this.quad.loc('uReach'), Math.max(...radii) + 1);
+      gl.uniform4fv(progs.quad.loc('uRadii'), radii);
+      gl.uniform1f(progs.quad.loc('uReach'), Math.max(...radii) + 1);
       for (const part of parts) drawPart(gl, part);
     };
     // The fill's edge, anti-aliased: half a pixel either side of the rings.

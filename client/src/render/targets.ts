@@ -6,6 +6,9 @@
 //   (the pass putting the map on the canvas paints them, and so does Renderer.present);
 // - coverage: scratch RGBA8, each overlay layer's coverage (overlay-pass.ts);
 // - overlays: every overlay layer painted (premultiplied), in the colour target's format.
+// The line target is made when lines are first drawn, the overlay targets when an overlay is:
+// a map without them (a cube without lines, a page that adds no layer) spends 16 bytes a pixel
+// less, a quarter of it at 1280x720 (three devices pixels a CSS pixel on a phone: 32 MB).
 // Integer and float textures are sampled with texelFetch and NEAREST filtering (integer
 // textures read as zero with any other filter).
 
@@ -51,12 +54,8 @@ export class Targets {
   colourFb!: WebGLFramebuffer;
   /** The colour target's format (to read it back). */
   colourFloat = false;
-  coverage!: WebGLTexture;
-  coverageFb!: WebGLFramebuffer;
-  lineCover!: WebGLTexture;
-  linesFb!: WebGLFramebuffer;
-  overlays!: WebGLTexture;
-  overlaysFb!: WebGLFramebuffer;
+  private lineTargets: LineTargets | null = null;
+  private overlayTargets: OverlayTargets | null = null;
   private live = false;
 
   constructor(
@@ -83,21 +82,58 @@ export class Targets {
     this.colourFloat = this.caps.floatTargets;
     this.colour = texture2d(gl, this.colourFloat ? gl.RGBA16F : gl.RGBA8, width, height);
     this.colourFb = framebuffer(gl, [this.colour], null, 'colour');
-    this.coverage = texture2d(gl, gl.RGBA8, width, height);
-    this.coverageFb = framebuffer(gl, [this.coverage], null, 'overlay coverage');
-    this.lineCover = texture2d(gl, gl.RGBA8, width, height);
-    this.linesFb = framebuffer(gl, [this.lineCover], null, 'line coverage');
-    this.overlays = texture2d(gl, this.colourFloat ? gl.RGBA16F : gl.RGBA8, width, height);
-    this.overlaysFb = framebuffer(gl, [this.overlays], null, 'overlays');
     this.live = true;
+  }
+
+  /** The cube's lines' coverage target, made the first time it is asked for at this size. */
+  lines(): LineTargets {
+    if (!this.lineTargets) {
+      const cover = texture2d(this.gl, this.gl.RGBA8, this.width, this.height);
+      this.lineTargets = { cover, fb: framebuffer(this.gl, [cover], null, 'line coverage') };
+    }
+    return this.lineTargets;
+  }
+
+  /** The overlays' targets, made the first time they are asked for at this size. */
+  overlays(): OverlayTargets {
+    if (!this.overlayTargets) {
+      const gl = this.gl;
+      const coverage = texture2d(gl, gl.RGBA8, this.width, this.height);
+      const overlays = texture2d(gl, this.colourFloat ? gl.RGBA16F : gl.RGBA8, this.width, this.height);
+      this.overlayTargets = { coverage, coverageFb: framebuffer(gl, [coverage], null, 'overlay coverage'), overlays, overlaysFb: framebuffer(gl, [overlays], null, 'overlays') };
+    }
+    return this.overlayTargets;
+  }
+
+  /** GPU memory the targets take, bytes. */
+  get bytes(): number {
+    if (!this.live) return 0;
+    const colour = this.colourFloat ? 8 : 4;
+    // ids and aux 8 each, depth 4, surface 4, colour; lines 4; coverage 4 and overlays as colour.
+    const perPixel = 8 + 8 + 4 + 4 + colour + (this.lineTargets ? 4 : 0) + (this.overlayTargets ? 4 + colour : 0);
+    return perPixel * this.width * this.height;
   }
 
   delete(): void {
     if (!this.live) return;
     const gl = this.gl;
-    for (const t of [this.ids, this.aux, this.surface, this.colour, this.coverage, this.lineCover, this.overlays]) gl.deleteTexture(t);
+    for (const t of [this.ids, this.aux, this.surface, this.colour, this.lineTargets?.cover, this.overlayTargets?.coverage, this.overlayTargets?.overlays]) if (t) gl.deleteTexture(t);
     gl.deleteRenderbuffer(this.depth);
-    for (const f of [this.idFb, this.surfaceFb, this.colourFb, this.coverageFb, this.linesFb, this.overlaysFb]) if (f) gl.deleteFramebuffer(f);
+    for (const f of [this.idFb, this.surfaceFb, this.colourFb, this.lineTargets?.fb, this.overlayTargets?.coverageFb, this.overlayTargets?.overlaysFb]) if (f) gl.deleteFramebuffer(f);
+    this.lineTargets = null;
+    this.overlayTargets = null;
     this.live = false;
   }
+}
+
+export interface LineTargets {
+  cover: WebGLTexture;
+  fb: WebGLFramebuffer;
+}
+
+export interface OverlayTargets {
+  coverage: WebGLTexture;
+  coverageFb: WebGLFramebuffer;
+  overlays: WebGLTexture;
+  overlaysFb: WebGLFramebuffer;
 }
