@@ -7,8 +7,8 @@
 // - coverage: scratch RGBA8, each overlay layer's coverage (overlay-pass.ts);
 // - overlays: every overlay layer painted (premultiplied), in the colour target's format.
 // The line target is made when lines are first drawn, the overlay targets when an overlay is:
-// a map without them (a cube without lines, a page that adds no layer) spends 16 bytes a pixel
-// less, a quarter of it at 1280x720 (three devices pixels a CSS pixel on a phone: 32 MB).
+// a map without them (a cube without lines, a page that adds no layer) spends 32 bytes a pixel,
+// not 48 (on a phone's 1170x2532 device pixels, 47 MB less).
 // Integer and float textures are sampled with texelFetch and NEAREST filtering (integer
 // textures read as zero with any other filter).
 
