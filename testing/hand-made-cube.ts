@@ -88,9 +88,11 @@ export interface HandMadeCube {
 
 /**
  * A cube whose index.json lists these chunks directly under its root, and `floor.chunks` as
- * floor chunks below `floor.top` (docs/FORMAT.md, "Floor chunks").
+ * floor chunks below `floor.top` (docs/FORMAT.md, "Floor chunks"). With `subIndex`, the root
+ * refers to a sub-index file of that name, which lists the chunks, as the build writes a cube
+ * with floor chunks.
  */
-export function handMadeCube(chunks: ChunkSpec[], floor?: { top: number; chunks: ChunkSpec[] }): HandMadeCube {
+export function handMadeCube(chunks: ChunkSpec[], floor?: { top: number; chunks: ChunkSpec[] }, subIndex?: string): HandMadeCube {
   const files = new Map<string, Uint8Array>();
   const leaves = new Map<string, ChunkLeaf>();
   const add = (specs: ChunkSpec[]): ChunkLeaf[] =>
@@ -104,7 +106,12 @@ export function handMadeCube(chunks: ChunkSpec[], floor?: { top: number; chunks:
   const children = add(chunks);
   const floorLeaves = add(floor?.chunks ?? []);
   const floorRoot = floor ? { top: floor.top, root: { bbox: boxAround(floorLeaves), children: floorLeaves } } : undefined;
-  files.set('index.json', indexFile({ bbox: boxAround(children), children }, floorRoot));
+  let root: InnerNode = { bbox: boxAround(children), children };
+  if (subIndex) {
+    files.set(subIndex, subIndexFile(root));
+    root = { bbox: root.bbox, children: [{ bbox: root.bbox, ref: subIndex, chunks: children.length }] };
+  }
+  files.set('index.json', indexFile(root, floorRoot));
   return { leaves, files };
 }
 

@@ -16,7 +16,8 @@ export const usage = `ssc build <input|file.tgap> --out <dir> [options]
   FlatGeobuf), or a tGAP that ssc generalize wrote
   --style <style.json>      for polygon input: classes, colours, weights (see ssc generalize)
   --chunk-bytes <n>         target chunk size (default ${DEFAULT_CHUNK_BYTES}; floor chunks ${FLOOR_CHUNK_FACTOR} times it)
-  --sub-index-bytes <n>     largest index file before subtrees move to sub-index files (default 131072)
+  --sub-index-bytes <n>     largest index file before subtrees move to sub-index files (default 131072;
+                            with floor chunks the cube's tree below its root always does)
   --no-precompress          do not write the .gz and .br copies
   --classic                 today's classic cube: every change a horizontal surface (for comparison);
                             the default is the smooth cube, where merges and simplification are

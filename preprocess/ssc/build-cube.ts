@@ -17,7 +17,7 @@ import { floorTop, planChunks } from './chunking.js';
 import { floorChunks } from './floor-chunks.js';
 import { encodeAttributePage, ATTRIBUTE_PAGE_SIZE } from '../../format/attribute-page.js';
 import { encodeFacePage, FACE_PAGE_SIZE } from '../../format/face-page.js';
-import { packTree, splitTree } from './rtree-index.js';
+import { packTree, rootOutOfLine, splitTree } from './rtree-index.js';
 import { buildSurfaces, type SurfaceStats } from './surfaces.js';
 import { cubeLines, lineChunks } from './cube-lines.js';
 import { parseStyle } from '../style.js';
@@ -161,8 +161,12 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
     attributePages.push({ first, file: put('a', bytes, 'json') });
   }
   const subIndexBytes = opts.subIndexBytes ?? 128 * 1024;
-  const tree = splitTree(packTree(leaves), subIndexBytes, (json) => hashName('i', json, 'json'));
-  const floor = top === null ? null : { top, tree: splitTree(packTree(floorLeaves), subIndexBytes, (json) => hashName('i', json, 'json')) };
+  const subName = (json: string): string => hashName('i', json, 'json');
+  const floor = top === null ? null : { top, tree: splitTree(packTree(floorLeaves), subIndexBytes, subName) };
+  // With floor chunks, the first map at the floor needs the floor's tree alone: the cube's goes
+  // out of index.json (docs/FORMAT.md, "index.json").
+  const cubeTree = splitTree(packTree(leaves), subIndexBytes, subName);
+  const tree = floor ? rootOutOfLine(cubeTree, subName) : cubeTree;
   for (const f of [...tree.files, ...(floor?.tree.files ?? [])]) files.set(f.name, new TextEncoder().encode(f.json));
   const style = t.meta.style as { name?: string; attribution?: string };
   const proj4 = t.meta.proj4 ?? proj4Definition(t.meta.crs);

@@ -3,7 +3,7 @@
 import test from 'node:test';
 import assert from 'node:assert/strict';
 import { isExternal, isLeaf, parseSubIndex, type ChunkLeaf, type IndexNode, type InnerNode } from '../../format/cube-index.js';
-import { FANOUT, packTree, splitTree } from './rtree-index.js';
+import { FANOUT, packTree, rootOutOfLine, splitTree } from './rtree-index.js';
 
 function leaves(n: number): ChunkLeaf[] {
   return Array.from({ length: n }, (_, i) => ({
@@ -85,4 +85,26 @@ test('a tree that fits stays whole', () => {
   const { root: top, files } = splitTree(root, 1 << 20, () => assert.fail('no file expected'));
   assert.equal(files.length, 0);
   assert.deepEqual(top, root);
+});
+
+test('out of line, every inner child of the root is a sub-index file of its own; files already split off stay, and every leaf is reached once', () => {
+  const ls = leaves(300);
+  let n = 0;
+  const name = (): string => `s-${n++}.json`;
+  // 300 leaves: 19 nodes of up to 16 under 2 under the root; the split moves some of them out,
+  // and the root keeps an inner child.
+  const split = splitTree(packTree(ls), 6000, name);
+  const inline = split.root.children.filter((c) => 'children' in c).length;
+  assert.ok(split.files.length > 0 && inline >= 1, `${split.files.length} files, ${inline} inner children under the root`);
+  const { root, files } = rootOutOfLine(split, name);
+  assert.deepEqual(files.slice(0, split.files.length), split.files);
+  assert.equal(files.length, split.files.length + inline);
+  assert.ok(root.children.every(isExternal), 'only references under the root');
+  assert.deepEqual(root.bbox, split.root.bbox);
+  const byName = new Map(files.map((f) => [f.name, parseSubIndex(JSON.parse(f.json), f.name)]));
+  assert.deepEqual(leavesUnder(root, byName), ls);
+  for (const c of root.children) if (isExternal(c)) assert.equal(c.chunks, leavesUnder(byName.get(c.ref)!, byName).length);
+  // A root whose children are leaves (16 chunks or fewer) has nothing to move.
+  const small = splitTree(packTree(leaves(10)), 1 << 20, name);
+  assert.deepEqual(rootOutOfLine(small, () => assert.fail('no file expected')), small);
 });

@@ -344,6 +344,33 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
     assert.deepEqual(h.fetched(), ['c-floor.bin'], 'the cube\'s chunks wait');
   });
 
+  test('the cube\'s sub-index file waits for the floor chunk on screen; then it and the cube\'s chunks come as the margin', async (t) => {
+    const files = handMadeCube(row(3), { top: 0.5, chunks: [{ file: 'c-floor.bin', bbox: [0, 0, 0, 30, 10, 0.5] }] }, 'i-cube.json').files;
+    const h = await harness(t, files, { concurrency: 4 }, () => 'hold');
+    h.scheduler.setView(at(1, 0));
+    await eventually(() => h.fetched().length === 1, 'the floor chunk requested');
+    await settle();
+    assert.deepEqual(h.fetched(), ['c-floor.bin'], 'nothing else while it comes');
+    assert.deepEqual(h.needed().at(-1)!.visible, ['c-floor.bin']);
+    h.answerOldest();
+    await eventually(() => h.received().length === 1, 'the floor chunk');
+    h.uploadAll();
+    await eventually(() => h.fetched().length === 2, 'the sub-index file');
+    assert.equal(h.fetched()[1], 'i-cube.json');
+    h.answerOldest();
+    await eventually(() => h.fetched().length === 5, 'the cube\'s chunks');
+    assert.deepEqual(sorted(h.fetched().slice(2)), CUBE);
+    assert.deepEqual(sorted(h.needed().at(-1)!.margin), CUBE);
+  });
+
+  test('a view above the floor asks for the cube\'s sub-index file at once', async (t) => {
+    const files = handMadeCube(row(3), { top: 0.5, chunks: [{ file: 'c-floor.bin', bbox: [0, 0, 0, 30, 10, 0.5] }] }, 'i-cube.json').files;
+    const h = await harness(t, files, { concurrency: 4 }, () => 'hold');
+    h.scheduler.setView(at(1, 50));
+    await eventually(() => h.fetched().length === 1, 'a request');
+    assert.deepEqual(h.fetched(), ['i-cube.json']);
+  });
+
   test('back at the floor with the cube\'s chunks here, the view takes them and fetches nothing', async (t) => {
     const h = await harness(t, cube(), {}, undefined, true);
     h.scheduler.setView(at(1, 50));

@@ -14,7 +14,8 @@
 //   ahead do not wait: during a flight some on-screen chunk is nearly always coming, and the
 //   path must be fetched ahead;
 // - below the floor's top the floor chunks go on screen, and the cube's chunks are the margin
-//   (floorShown): the first map at the base scale takes a fifth of the bytes.
+//   (floorShown): the first map at the base scale takes a fifth of the bytes. The cube's
+//   sub-index files wait with the margin for the floor chunks on screen.
 import type { ChunkLeaf, LineChunkLeaf } from '../../../format/cube-index.js';
 import { boxMeets, chunkPriority, queryLineChunks, type QueryBox, type QueryResult } from '../../../format/index-query.js';
 import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
@@ -54,6 +55,8 @@ export class ChunkScheduler {
   /** When the view last changed (performance.now()), and the timer that starts the margin once it has rested. */
   private viewSince = 0;
   private restTimer: ReturnType<typeof setTimeout> | null = null;
+  /** The cube's sub-index files a view at the floor reaches: loaded once its floor chunks on screen have come (pump). */
+  private marginSubs: string[] = [];
 
   constructor(
     private readonly tree: IndexTree,
@@ -77,7 +80,10 @@ export class ChunkScheduler {
     const margin: string[] = [];
     const ahead: string[] = [];
     const needed = new Set<string>();
-    const missing = new Set([...cube.missing, ...(floor?.missing ?? [])]);
+    // Below the floor's top the cube's sub-index files are the margin's (floorShown): they wait
+    // with it, not to share the link with the floor chunks on screen.
+    const missing = new Set(floor ? floor.missing : cube.missing);
+    this.marginSubs = floor ? cube.missing : [];
     const want = (leaf: Leaf, priority: number): void => {
       let e = this.entries.get(leaf.file);
       if (!e) {
@@ -121,15 +127,20 @@ export class ChunkScheduler {
       }
     }
     this.post({ type: 'needed', seq: view.seq, visible, margin, ahead, indexComplete: (floor ?? cube).missing.length === 0, queryMs, visited: cube.visited + (floor?.visited ?? 0) });
-    if (missing.size > 0) {
-      this.tree.loadSubs([...missing]).then(
-        () => {
-          if (this.view === view) this.setView(view);
-        },
-        (err: unknown) => this.postError(indexError(err)),
-      );
-    }
+    this.loadSubs([...missing]);
     this.pump();
+  }
+
+  /** Sub-index files the view reaches, loaded; the view is asked again when they have come. */
+  private loadSubs(refs: string[]): void {
+    if (refs.length === 0) return;
+    const view = this.view;
+    this.tree.loadSubs(refs).then(
+      () => {
+        if (view && this.view === view) this.setView(view);
+      },
+      (err: unknown) => this.postError(indexError(err)),
+    );
   }
 
   /**
@@ -198,6 +209,11 @@ export class ChunkScheduler {
       const toStart = e.status === 'not-requested' || e.status === 'evicted';
       if (toStart) waiting.push(e);
       if (e.priority < MARGIN_TIER && (toStart || e.status === 'requested' || e.status === 'received')) onScreenComing = true;
+    }
+    if (!onScreenComing && this.marginSubs.length > 0) {
+      const refs = this.marginSubs;
+      this.marginSubs = [];
+      this.loadSubs(refs);
     }
     waiting.sort((a, b) => a.priority - b.priority);
     const restLeft = this.viewSince + this.opts.marginRestMs - performance.now();
