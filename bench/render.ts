@@ -11,10 +11,9 @@
 // project's static server.
 // SwiftShader is a software GPU: the numbers compare versions on one machine, nothing more.
 import { execFile } from 'node:child_process';
-import { readFile } from 'node:fs/promises';
 import path from 'node:path';
 import { promisify } from 'node:util';
-import { parseIndex, type ChunkLeaf, type IndexNode } from '../format/cube-index.js';
+import { CubeReader } from '../preprocess/ssc/read-cube.js';
 import { launchChromium } from '../e2e/helpers/browser.js';
 import { withClientSite } from './client-site.js';
 import { datasets, median, root } from './datasets.js';
@@ -53,12 +52,6 @@ function p95(xs: number[]): number {
   return s[Math.min(s.length - 1, Math.ceil(0.95 * s.length) - 1)]!;
 }
 
-function leaves(n: IndexNode, out: ChunkLeaf[]): ChunkLeaf[] {
-  if ('file' in n) out.push(n);
-  else if ('children' in n) n.children.forEach((c) => leaves(c, out));
-  return out;
-}
-
 async function main(): Promise<void> {
   const filter = process.argv[2];
   const sets = datasets(filter, ['bgt_otterlo_1800m', 'nlcd_zion']);
@@ -70,9 +63,11 @@ async function main(): Promise<void> {
       await withClientSite('ssc-bench-', async ({ dir, url }) => {
         process.stderr.write(`building ${d.name}...\n`);
         await run(process.execPath, [path.join(root, 'bin/ssc.js'), 'build', d.file, '--style', d.style, '--out', path.join(dir, 'cube'), '--quiet'], { maxBuffer: 1 << 26 });
-        const index = parseIndex(JSON.parse(await readFile(path.join(dir, 'cube/index.json'), 'utf8')));
-        // Sub-index files are not followed here: the byte count covers the chunks in index.json.
-        const leafBytes = new Map(leaves(index.root, []).map((l) => [l.file, l.bytes]));
+        const reader = await CubeReader.open(path.join(dir, 'cube'));
+        const index = reader.index;
+        // Every chunk's bytes, the floor's too, through the sub-index files.
+        const all = [...(await reader.loadAll()), ...(index.floor ? await reader.loadAll(index.floor.root) : [])];
+        const leafBytes = new Map(all.map((l) => [l.file, l.bytes]));
         const lineBytes = new Map((index.lines ?? []).map((l) => [l.file, l.bytes]));
         const meta = index.meta;
         const [x0, y0, x1, y1] = meta.extent;
@@ -103,6 +98,9 @@ async function main(): Promise<void> {
           const { gpuBytes, targetBytes } = await page.evaluate(() => engine.stats());
           const gpuMb = gpuBytes / 1e6, targetMb = targetBytes / 1e6;
           const longLoad = await page.evaluate(() => (globalThis as unknown as { longTasks: number[] }).longTasks.splice(0));
+          // At the floor the cube's chunks are the margin, known once its sub-index files have
+          // come, which they do after the floor chunks on screen: the map can be idle before.
+          if (name === 'base') await page.waitForFunction(() => engine.neededChunks().margin.length > 0, null, { timeout: 10_000 });
           const needed = await page.evaluate(() => engine.neededChunks());
           const files = [...needed.visible, ...needed.margin];
           const bytes = files.reduce((s, f) => s + (leafBytes.get(f) ?? 0), 0);

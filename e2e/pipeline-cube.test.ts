@@ -151,7 +151,12 @@ test('bgt_otterlo_400m cube', async (t) => {
     assert.ok(index.includes('"ref"'), 'the root refers to sub-index files');
     const r = runSsc(['inspect', split, '--json']);
     assert.equal(r.code, 0, r.stderr);
-    assert.equal((JSON.parse(r.stdout) as { index: { files: number } }).index.files, subs.length + 1);
+    const report = JSON.parse(r.stdout) as { index: { files: number; depth: number } };
+    assert.equal(report.index.files, subs.length + 1);
+    // The tree's depth through the files: its leaves packed 16 a node up to one root.
+    let depth = 1;
+    for (let n = readdirSync(split).filter((f) => /^c-.*\.bin$/.test(f)).length; n > 1; n = Math.ceil(n / 16)) depth++;
+    assert.equal(report.index.depth, depth);
     for (const s of [0, 250, steps]) {
       for (const [d, name] of [[cube, 'a'], [split, 'b']] as const) {
         assert.equal(runSsc(['slice', d, '--step', String(s), '--size', `${W}x${H}`, '--out', path.join(dir, `${name}.png`), '--ids', path.join(dir, `${name}.ids`)]).code, 0);

@@ -15,6 +15,9 @@ interface BroadcastUpdate {
 const isBroadcastUpdate = (d: unknown): d is BroadcastUpdate =>
   typeof d === 'object' && d !== null && (d as { meta?: unknown }).meta === 'workbox-broadcast-update';
 
+/** When the files loaded before the service worker took over are handed to it once more. */
+const HAND_OVER_AGAIN_MS = 3000;
+
 export function enableOffline(map: VarioMap, onNewBuild: () => void): void {
   if (!('serviceWorker' in navigator)) return;
   const wb = new Workbox('sw.js');
@@ -23,9 +26,12 @@ export function enableOffline(map: VarioMap, onNewBuild: () => void): void {
     if (urls.length > 0) wb.messageSW({ type: 'CACHE_URLS', payload: { urlsToCache: urls } }).catch(() => undefined);
   };
   wb.addEventListener('controlling', () => {
-    // Now, and again once the requests already under way (outside its control) have finished.
+    // Now, and again once the requests already under way (outside its control) have finished:
+    // at the next idle, and a few seconds on for what comes after it (the margin after the view
+    // has rested, the cube's sub-index files after the floor chunks on screen).
     void handOver();
     void map.whenIdle().then(handOver);
+    setTimeout(() => void handOver(), HAND_OVER_AGAIN_MS);
   });
   navigator.serviceWorker.addEventListener('message', (ev: MessageEvent<unknown>) => {
     if (isBroadcastUpdate(ev.data) && ev.data.payload.updatedURL === map.getSourceUrl()) onNewBuild();

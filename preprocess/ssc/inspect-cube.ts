@@ -64,9 +64,15 @@ export async function inspectCube(dir: string): Promise<CubeReport> {
   const floorDecoded = [];
   for (const leaf of floor ? await cube.loadAll(floor.root) : []) floorDecoded.push({ leaf, c: await cube.chunk(leaf) });
   let depth = 0;
+  // Through the sub-index files (all read above): a reference stands for its file's node.
   const walk = (n: IndexNode, d: number): void => {
+    if (isExternal(n)) {
+      const sub = cube.loadedSub(n.ref);
+      if (sub) walk(sub, d);
+      return;
+    }
     depth = Math.max(depth, d);
-    if (isLeaf(n) || isExternal(n)) return;
+    if (isLeaf(n)) return;
     for (const c of n.children) walk(c, d + 1);
   };
   walk(cube.index.root, 1);

@@ -51,6 +51,11 @@ export class CubeReader {
   }
 
   /** Synchronous query over what is loaded (after loadAll of the same tree). */
+  /** The node of a sub-index file read so far. */
+  loadedSub(ref: string): InnerNode | undefined {
+    return this.subs.get(ref);
+  }
+
   queryLoaded(q: QueryBox, root: InnerNode = this.index.root): ChunkLeaf[] {
     return queryIndex(root, q, (ref) => this.subs.get(ref)).leaves;
   }

@@ -74,8 +74,7 @@ export function splitTree(root: InnerNode, maxBytes: number, name: (json: string
 /**
  * The root's inline inner children moved out to sub-index files too (`split` as splitTree gave
  * it): index.json then holds only the root's boxes. For a cube with floor chunks, whose first
- * map at the floor needs the floor's tree alone: on nlcd_zion the cube's tree was 22.7 of
- * index.json's 28.8 kB gzip, all of it on the way to the first map.
+ * map at the floor needs the floor's tree alone (docs/FORMAT.md, "index.json", has the figures).
  */
 export function rootOutOfLine(split: { root: InnerNode; files: SubIndexFile[] }, name: (json: string) => string): { root: InnerNode; files: SubIndexFile[] } {
   const files = [...split.files];

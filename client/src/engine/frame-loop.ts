@@ -29,6 +29,9 @@ export interface RenderSettings {
   prefetchMargin: number;
 }
 
+/** The stats before any frame. */
+export const EMPTY_STATS: RenderStats = { frame: 0, triangles: 0, segments: 0, chunks: 0, queryMs: 0, gpuBytes: 0, targetBytes: 0, jittered: false };
+
 export interface RenderStats {
   frame: number;
   triangles: number;
@@ -92,7 +95,7 @@ export class FrameLoop {
   private sentEarly = false;
   /** The overlays changed: the finished map is shown again with them, without drawing it again. */
   private overlaysDue = false;
-  private lastStats: RenderStats = { frame: 0, triangles: 0, segments: 0, chunks: 0, queryMs: 0, gpuBytes: 0, targetBytes: 0, jittered: false };
+  private lastStats: RenderStats = EMPTY_STATS;
 
   constructor(
     private readonly view: MapView,
@@ -193,7 +196,8 @@ export class FrameLoop {
   }
 
   stats(): RenderStats {
-    return { ...this.lastStats, queryMs: this.residency.queryMs };
+    // The targets' bytes as they are now: a frame that only shows new overlays (present) makes theirs.
+    return { ...this.lastStats, queryMs: this.residency.queryMs, targetBytes: this.renderer.targetBytes };
   }
 
   stop(): void {

@@ -20,7 +20,7 @@ import type { ChunkStatus, SourceErrorInfo, SourceOptions } from '../source/work
 import { showLoadError } from '../ui/load-error.js';
 import { showWebGl2Missing } from '../ui/webgl-missing.js';
 import { ChunkResidency } from './chunk-residency.js';
-import { FrameLoop, type RenderSettings, type RenderStats } from './frame-loop.js';
+import { EMPTY_STATS, FrameLoop, type RenderSettings, type RenderStats } from './frame-loop.js';
 import { MapCanvas } from './map-canvas.js';
 import { featuresAt, type Feature, type QueryOptions } from './picking.js';
 
@@ -343,7 +343,7 @@ export class MapEngine extends Evented<EngineEvents> {
   }
 
   stats(): RenderStats {
-    return this.loop?.stats() ?? { frame: 0, triangles: 0, segments: 0, chunks: 0, queryMs: 0, gpuBytes: 0, targetBytes: 0, jittered: false };
+    return this.loop?.stats() ?? EMPTY_STATS;
   }
 
   /** The ID buffer of the current view (device pixels, rows from the top). */

@@ -21,7 +21,7 @@ import type { OverlayMesh } from '../overlay/overlay-mesh.js';
 import { GpuOverlayMesh, type DrawnPart } from './gpu-overlay-mesh.js';
 import { Program } from './program.js';
 import type { Rgba } from './style-texture.js';
-import type { Targets } from './targets.js';
+import type { OverlayTargets, Targets } from './targets.js';
 
 /** A layer's paint as the pass takes it: colours with their opacity as alpha, sizes in CSS px. */
 export interface OverlayPaintParams {
@@ -94,7 +94,7 @@ export class OverlayPass {
       gl.bindFramebuffer(gl.FRAMEBUFFER, t.overlaysFb);
       gl.clearBufferfv(gl.COLOR, 0, new Float32Array([0, 0, 0, 0]));
       for (const layer of layers) {
-        if (!layer.mesh || !this.coverage(targets, view, ratio, layer.mesh, layer.paint)) continue;
+        if (!layer.mesh || !this.coverage(targets, t, progs, view, ratio, layer.mesh, layer.paint)) continue;
         gl.bindFramebuffer(gl.FRAMEBUFFER, t.overlaysFb);
         this.fullscreen(targets, progs.composite, t.coverage, 'uCoverage', (c) => {
           const p = layer.paint;
@@ -140,7 +140,7 @@ export class OverlayPass {
    * The layer's coverage of each pixel into the coverage target: fill (r), line (g), circle (b),
    * circle with stroke (a). False when none of it is on screen (nothing drawn).
    */
-  private coverage(targets: Targets, view: ViewGeometry, ratio: number, mesh: OverlayMesh, p: OverlayPaintParams): boolean {
+  private coverage(targets: Targets, t: OverlayTargets, progs: OverlayPrograms, view: ViewGeometry, ratio: number, mesh: OverlayMesh, p: OverlayPaintParams): boolean {
     const halfWidth = (p.lineWidth * ratio) / 2;
     const r = p.circleRadius * ratio, stroke = p.circleStrokeWidth * ratio;
     // How far past its positions the layer draws, in ground units.
@@ -151,8 +151,7 @@ export class OverlayPass {
     const gl = this.gl;
     let gpu = this.meshes.get(mesh);
     if (!gpu) this.meshes.set(mesh, (gpu = new GpuOverlayMesh(gl, mesh)));
-    const progs = this.programs();
-    gl.bindFramebuffer(gl.FRAMEBUFFER, targets.overlays().coverageFb);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, t.coverageFb);
     gl.viewport(0, 0, targets.width, targets.height);
     gl.clearBufferfv(gl.COLOR, 0, new Float32Array([0, 0, 0, 0]));
     gl.blendEquation(gl.MAX);

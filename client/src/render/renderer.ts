@@ -60,10 +60,6 @@ export class Renderer {
   private gpu: Gpu | null = null;
   private meta: CubeMeta | null = null;
 
-  /** GPU memory the frame's targets take, bytes (the chunks' is the store's). */
-  get targetBytes(): number {
-    return this.gpu?.targets.bytes ?? 0;
-  }
   private style: CubeStyle | null = null;
   /** Each face's drawn states (bits): the feature state texture is made again from them after a lost context, and the colour pass leaves states out while there are none. */
   private readonly faceStates = new Map<number, number>();
@@ -98,6 +94,11 @@ export class Renderer {
     canvas.addEventListener('webglcontextlost', this.lostHandler);
     canvas.addEventListener('webglcontextrestored', this.restoredHandler);
     this.build();
+  }
+
+  /** GPU memory the frame's targets take, bytes (the chunks' is the store's). */
+  get targetBytes(): number {
+    return this.gpu?.targets.bytes ?? 0;
   }
 
   /** Null where WebGL2 is missing. */
@@ -276,7 +277,8 @@ export class Renderer {
 
   /** The last frame's lines, to paint over its map (null: it had none). */
   private paintedLines(g: Gpu): DrawnLines | null {
-    return this.linesDrawn && g.lineRules ? { cover: g.targets.lines().cover, rules: g.lineRules } : null;
+    const cover = g.targets.lineCover;
+    return this.linesDrawn && g.lineRules && cover ? { cover, rules: g.lineRules } : null;
   }
 
   /** The overlays over the canvas, drawn again only if the view or the layers changed. */

@@ -2,13 +2,13 @@
 // - ids: RG32UI upper/lower face + RG32UI classes/surface z, with a float depth buffer (MRT);
 // - surface: R32F slicing surface z;
 // - colour: the accumulated (supersampled) colour (a frame of weight 1 goes to the canvas only, renderer.ts);
-// - lineCover: RGBA8, the cube's lines' coverage (line-pass.ts), kept until the next frame
+// - lines().cover: RGBA8, the cube's lines' coverage (line-pass.ts), kept until the next frame
 //   (the pass putting the map on the canvas paints them, and so does Renderer.present);
-// - coverage: scratch RGBA8, each overlay layer's coverage (overlay-pass.ts);
-// - overlays: every overlay layer painted (premultiplied), in the colour target's format.
+// - overlays().coverage: scratch RGBA8, each overlay layer's coverage (overlay-pass.ts);
+// - overlays().overlays: every overlay layer painted (premultiplied), in the colour target's format.
 // The line target is made when lines are first drawn, the overlay targets when an overlay is:
 // a map without them (a cube without lines, a page that adds no layer) spends 32 bytes a pixel,
-// not 48 (on a phone's 1170x2532 device pixels, 47 MB less).
+// not 48 (28, not 40, without float targets; on a phone's 1170x2532 device pixels, 47 MB less).
 // Integer and float textures are sampled with texelFetch and NEAREST filtering (integer
 // textures read as zero with any other filter).
 
@@ -83,6 +83,11 @@ export class Targets {
     this.colour = texture2d(gl, this.colourFloat ? gl.RGBA16F : gl.RGBA8, width, height);
     this.colourFb = framebuffer(gl, [this.colour], null, 'colour');
     this.live = true;
+  }
+
+  /** The lines' coverage as the last line pass left it; null when none has drawn at this size. */
+  get lineCover(): WebGLTexture | null {
+    return this.lineTargets?.cover ?? null;
   }
 
   /** The cube's lines' coverage target, made the first time it is asked for at this size. */

@@ -354,6 +354,8 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
     assert.deepEqual(h.needed().at(-1)!.visible, ['c-floor.bin']);
     h.answerOldest();
     await eventually(() => h.received().length === 1, 'the floor chunk');
+    await settle();
+    assert.equal(h.fetched().length, 1, 'the sub-index file waits for the floor chunk to be on the GPU');
     h.uploadAll();
     await eventually(() => h.fetched().length === 2, 'the sub-index file');
     assert.equal(h.fetched()[1], 'i-cube.json');
@@ -361,6 +363,16 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
     await eventually(() => h.fetched().length === 5, 'the cube\'s chunks');
     assert.deepEqual(sorted(h.fetched().slice(2)), CUBE);
     assert.deepEqual(sorted(h.needed().at(-1)!.margin), CUBE);
+  });
+
+  test('with the floor chunk on screen failing, the cube\'s sub-index file is asked for at once, and its chunks drawn instead', async (t) => {
+    const files = handMadeCube(row(3), { top: 0.5, chunks: [{ file: 'c-floor.bin', bbox: [0, 0, 0, 30, 10, 0.5] }] }, 'i-cube.json').files;
+    const serve = serveFiles(BASE, files);
+    const h = await harness(t, files, {}, (url) => (url.endsWith('c-floor.bin') ? status(404) : serve(url)), true);
+    h.scheduler.setView(at(1, 0));
+    await eventually(() => h.received().length === 3, 'the cube\'s chunks');
+    assert.deepEqual(h.fetched().slice(0, 2), ['c-floor.bin', 'i-cube.json']);
+    assert.deepEqual(sorted(h.needed().at(-1)!.visible), CUBE);
   });
 
   test('a view above the floor asks for the cube\'s sub-index file at once', async (t) => {

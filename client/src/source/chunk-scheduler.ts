@@ -15,7 +15,7 @@
 //   path must be fetched ahead;
 // - below the floor's top the floor chunks go on screen, and the cube's chunks are the margin
 //   (floorShown): the first map at the base scale takes a fifth of the bytes. The cube's
-//   sub-index files wait with the margin for the floor chunks on screen.
+//   sub-index files wait, as the margin does, until the floor chunks on screen are on the GPU.
 import type { ChunkLeaf, LineChunkLeaf } from '../../../format/cube-index.js';
 import { boxMeets, chunkPriority, queryLineChunks, type QueryBox, type QueryResult } from '../../../format/index-query.js';
 import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
@@ -131,16 +131,17 @@ export class ChunkScheduler {
     this.pump();
   }
 
-  /** Sub-index files the view reaches, loaded; the view is asked again when they have come. */
+  /**
+   * Sub-index files the view reaches, loaded; the view is asked again once they have all come or
+   * failed (each failure reported), if any came: one that fails holds back none of the others.
+   */
   private loadSubs(refs: string[]): void {
     if (refs.length === 0) return;
     const view = this.view;
-    this.tree.loadSubs(refs).then(
-      () => {
-        if (view && this.view === view) this.setView(view);
-      },
-      (err: unknown) => this.postError(indexError(err)),
-    );
+    void Promise.allSettled(refs.map((ref) => this.tree.loadSubs([ref]))).then((results) => {
+      for (const r of results) if (r.status === 'rejected') this.postError(indexError(r.reason));
+      if (results.some((r) => r.status === 'fulfilled') && view && this.view === view) this.setView(view);
+    });
   }
 
   /**
@@ -201,7 +202,6 @@ export class ChunkScheduler {
   }
 
   private pump(): void {
-    if (this.inFlight >= this.opts.concurrency) return;
     const waiting: Entry[] = [];
     let onScreenComing = false;
     for (const file of this.needed) {
@@ -210,11 +210,13 @@ export class ChunkScheduler {
       if (toStart) waiting.push(e);
       if (e.priority < MARGIN_TIER && (toStart || e.status === 'requested' || e.status === 'received')) onScreenComing = true;
     }
+    // Not held back by the view's rest as the margin's chunks are: a few files, each loaded once.
     if (!onScreenComing && this.marginSubs.length > 0) {
       const refs = this.marginSubs;
       this.marginSubs = [];
       this.loadSubs(refs);
     }
+    if (this.inFlight >= this.opts.concurrency) return;
     waiting.sort((a, b) => a.priority - b.priority);
     const restLeft = this.viewSince + this.opts.marginRestMs - performance.now();
     let marginWaits = false;

@@ -4,8 +4,8 @@
 // One worker decodes every chunk. A pool (MapLibre's way: more copies of this script, each
 // handed bodies through a MessagePort by this one when free) was built and measured at stop 50,
 // and not kept: on this machine's two cores, first complete maps with 2 and 3 workers took
-// 0.96-1.14x and 1.02-1.12x the time of one (bench:decoders, a 160x90 canvas showing the
-// 1280x720 views' ground, so that the software GPU took little; median of 5). A trace showed both
+// 0.96-1.14x and 1.02-1.12x the time of one (a benchmark written for it and not kept: a 160x90
+// canvas showing the 1280x720 views' ground, so that the software GPU took little; median of 5). A trace showed both
 // cores taken by this worker and the GPU process, and each extra worker starts cold: its first
 // chunks decode at a third of a warm worker's speed (node: 286 ms cold, 94 warm, for nlcd_zion's
 // 34 first floor chunks), which a view of a few dozen chunks does not earn back. A device with
