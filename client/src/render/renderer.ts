@@ -59,7 +59,6 @@ export class Renderer {
   wholeChunks = false;
   private gpu: Gpu | null = null;
   private meta: CubeMeta | null = null;
-
   private style: CubeStyle | null = null;
   /** Each face's drawn states (bits): the feature state texture is made again from them after a lost context, and the colour pass leaves states out while there are none. */
   private readonly faceStates = new Map<number, number>();

@@ -55,7 +55,7 @@ export class ChunkScheduler {
   /** When the view last changed (performance.now()), and the timer that starts the margin once it has rested. */
   private viewSince = 0;
   private restTimer: ReturnType<typeof setTimeout> | null = null;
-  /** The cube's sub-index files a view at the floor reaches: loaded once its floor chunks on screen have come (pump). */
+  /** The cube's sub-index files a view at the floor reaches: loaded once its floor chunks on screen are on the GPU (pump). */
   private marginSubs: string[] = [];
 
   constructor(
