@@ -306,11 +306,14 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   });
 
   /**
-   * Opens view `a` at z with its chunks coming one after another, 100 ms apart (drawn as they
-   * come, the images would be about that far apart), recording the map's 'render' and
-   * 'complete' events from its first frame: when, and after how many animation frames.
+   * Opens a view of at least 6 chunks at z with its chunks coming one after another, 100 ms
+   * apart (drawn as they come, the images would be about that far apart), recording the map's
+   * 'render' and 'complete' events from its first frame: when, and after how many animation
+   * frames.
    */
-  async function openSlowly(a: Bbox, z: number): Promise<{ visible: string[]; p: MapPage }> {
+  async function openSlowly(z: number): Promise<{ a: Bbox; visible: string[]; p: MapPage }> {
+    const a = candidates().find((x) => needed(x, z).visible.length >= 6);
+    assert.ok(a, 'a view of at least 6 chunks');
     const visible = needed(a, z).visible.map((l) => l.file);
     server.faults.delayMs = (f) => (visible.includes(f) ? 150 + 100 * visible.indexOf(f) : 0);
     // The page's map is assigned to window after it is made, before its first frame: the
@@ -330,16 +333,14 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     })()`;
     logStart = server.log.length;
     mp = await openMap(browser, server.url, { source: 'cube/', bbox: a.join(','), z }, { initScript: record });
-    return { visible, p: mp };
+    return { a, visible, p: mp };
   }
   type Recorded = { type: string; frame: number; at: number; raf: number };
   const recorded = (p: MapPage): Promise<Recorded[]> => p.page.evaluate(() => (globalThis as unknown as { evs: Recorded[] }).evs);
 
   test('before the first complete map, what has come is drawn at most every 250 ms, and the map then comes complete', async () => {
     const z = 30;
-    const a = candidates().find((x) => needed(x, z).visible.length >= 6);
-    assert.ok(a, 'a view of at least 6 chunks');
-    const { visible, p } = await openSlowly(a, z);
+    const { a, visible, p } = await openSlowly(z);
     assert.equal(await waitIdle(p.page), true);
     const evs = await recorded(p);
     const done = evs.find((e) => e.type === 'complete');
@@ -360,9 +361,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
 
   test('a view changed before the first complete map is drawn at once', async () => {
     const z = 30;
-    const a = candidates().find((x) => needed(x, z).visible.length >= 6);
-    assert.ok(a, 'a view of at least 6 chunks');
-    const { p } = await openSlowly(a, z);
+    const { a, p } = await openSlowly(z);
     // Once the first image is on screen, a pan of 5 m: a new view.
     await p.page.waitForFunction(() => (globalThis as unknown as { evs: Recorded[] }).evs.some((e) => e.type === 'render'));
     const b: Bbox = [a[0] + 5, a[1], a[2] + 5, a[3]];

@@ -95,7 +95,8 @@ export class FrameLoop {
   private sentEarly = false;
   /** The overlays changed: the finished map is shown again with them, without drawing it again. */
   private overlaysDue = false;
-  private lastStats: RenderStats = EMPTY_STATS;
+  /** The last frame's stats; the targets' bytes are read as they are now (stats). */
+  private lastStats: Omit<RenderStats, 'targetBytes'> = EMPTY_STATS;
 
   constructor(
     private readonly view: MapView,
@@ -278,7 +279,7 @@ export class FrameLoop {
       const colour = colourParams({ view: q.view, ratio: this.canvas.deviceRatio(), boundaries, paints: this.settings.paints, blendDistance: blendOn ? blending.distance : 0, weight: weight(n) });
       const { triangles, segments } = r.render({ view: q.view, surface: this.view.surface(), zMax: meta.zMax, jitter: jitter(n), colour, pixelRatio: this.canvas.deviceRatio(), sliceRange: [q.zMin, q.zMax] }, chunks, lineChunks);
       this.accumulated = n + 1;
-      this.lastStats = { frame: this.frameNo, triangles, segments, chunks: chunks.length, queryMs: this.residency.queryMs, gpuBytes: r.store.bytes, targetBytes: r.targetBytes, jittered: n > 0 };
+      this.lastStats = { frame: this.frameNo, triangles, segments, chunks: chunks.length, queryMs: this.residency.queryMs, gpuBytes: r.store.bytes, jittered: n > 0 };
       // Line chunks count as shown with lines turned off: there is nothing more to fetch for them.
       this.shown = { seq: this.viewSeq, frame: this.frameNo, files };
       this.sink.render(this.stats());

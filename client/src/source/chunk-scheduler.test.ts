@@ -316,8 +316,9 @@ describe('the chunk scheduler', () => {
 });
 
 describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
-  // The cube's three chunks along x (0..30, z 0..100), and one floor chunk over all of them, below z 0.5.
-  const cube = (): Map<string, Uint8Array> => handMadeCube(row(3), { top: 0.5, chunks: [{ file: 'c-floor.bin', bbox: [0, 0, 0, 30, 10, 0.5] }] }).files;
+  // The cube's three chunks along x (0..30, z 0..100), and one floor chunk over all of them, below
+  // z 0.5; with `subIndex`, the cube's chunks listed in that sub-index file (as the build writes it).
+  const cube = (subIndex?: string): Map<string, Uint8Array> => handMadeCube(row(3), { top: 0.5, chunks: [{ file: 'c-floor.bin', bbox: [0, 0, 0, 30, 10, 0.5] }] }, subIndex).files;
   const at = (seq: number, zMax: number): ViewRequest => ({ ...view(seq, 0, 30, { centerX: 15 }), zMin: 0, zMax });
   const CUBE = ['c-0.bin', 'c-1.bin', 'c-2.bin'];
 
@@ -345,7 +346,7 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
   });
 
   test('the cube\'s sub-index file waits for the floor chunk on screen; then it and the cube\'s chunks come as the margin', async (t) => {
-    const files = handMadeCube(row(3), { top: 0.5, chunks: [{ file: 'c-floor.bin', bbox: [0, 0, 0, 30, 10, 0.5] }] }, 'i-cube.json').files;
+    const files = cube('i-cube.json');
     const h = await harness(t, files, { concurrency: 4 }, () => 'hold');
     h.scheduler.setView(at(1, 0));
     await eventually(() => h.fetched().length === 1, 'the floor chunk requested');
@@ -366,7 +367,7 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
   });
 
   test('with the floor chunk on screen failing, the cube\'s sub-index file is asked for at once, and its chunks drawn instead', async (t) => {
-    const files = handMadeCube(row(3), { top: 0.5, chunks: [{ file: 'c-floor.bin', bbox: [0, 0, 0, 30, 10, 0.5] }] }, 'i-cube.json').files;
+    const files = cube('i-cube.json');
     const serve = serveFiles(BASE, files);
     const h = await harness(t, files, {}, (url) => (url.endsWith('c-floor.bin') ? status(404) : serve(url)), true);
     h.scheduler.setView(at(1, 0));
@@ -376,7 +377,7 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
   });
 
   test('a view above the floor asks for the cube\'s sub-index file at once', async (t) => {
-    const files = handMadeCube(row(3), { top: 0.5, chunks: [{ file: 'c-floor.bin', bbox: [0, 0, 0, 30, 10, 0.5] }] }, 'i-cube.json').files;
+    const files = cube('i-cube.json');
     const h = await harness(t, files, { concurrency: 4 }, () => 'hold');
     h.scheduler.setView(at(1, 50));
     await eventually(() => h.fetched().length === 1, 'a request');

@@ -138,7 +138,7 @@ export class ChunkScheduler {
   private loadSubs(refs: string[]): void {
     if (refs.length === 0) return;
     const view = this.view;
-    void Promise.allSettled(refs.map((ref) => this.tree.loadSubs([ref]))).then((results) => {
+    void Promise.allSettled(refs.map((ref) => this.tree.loadSub(ref))).then((results) => {
       for (const r of results) if (r.status === 'rejected') this.postError(indexError(r.reason));
       if (results.some((r) => r.status === 'fulfilled') && view && this.view === view) this.setView(view);
     });

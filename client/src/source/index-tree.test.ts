@@ -23,7 +23,7 @@ describe('the index tree in the worker', () => {
     const tree = await IndexTree.load(`${BASE}index.json?v=3`, retry);
     assert.equal(tree.index.meta.name, 'hand-made');
     assert.equal(tree.url('c-a.bin'), `${BASE}c-a.bin`);
-    await tree.loadSubs(['i-b.json']);
+    await tree.loadSub('i-b.json');
     assert.deepEqual(f.urls(), [`${BASE}index.json?v=3`, `${BASE}i-b.json`]);
   });
 
@@ -33,13 +33,13 @@ describe('the index tree in the worker', () => {
     const first = tree.query(everything);
     assert.deepEqual(first.leaves.map((l) => l.file), ['c-a.bin']);
     assert.deepEqual(first.missing, ['i-b.json']);
-    const waits = [tree.loadSubs(first.missing), tree.loadSubs(['i-b.json']), tree.loadSubs(['i-b.json'])];
+    const waits = [Promise.all(first.missing.map((ref) => tree.loadSub(ref))), tree.loadSub('i-b.json'), tree.loadSub('i-b.json')];
     await eventually(() => f.requests.length === 2, 'the sub-index request');
     const sub = files().get('i-b.json');
     assert.ok(sub);
     f.open()[0]!.answer(body(sub));
     await Promise.all(waits);
-    await tree.loadSubs(['i-b.json']);
+    await tree.loadSub('i-b.json');
     assert.equal(f.urls().filter((u) => u.endsWith('i-b.json')).length, 1);
     assert.deepEqual(tree.query(everything).missing, []);
     assert.deepEqual(chunkFiles(tree), ['c-a.bin', 'c-b.bin']);
@@ -49,9 +49,9 @@ describe('the index tree in the worker', () => {
     const serve = serveFiles(BASE, files());
     const f = installFakeFetch(t, (url, n) => (url.endsWith('i-b.json') && n === 1 ? status(503) : serve(url)));
     const tree = await IndexTree.load(`${BASE}index.json`, retry);
-    await assert.rejects(tree.loadSubs(['i-b.json']), (e: unknown) => e instanceof FetchFailure && e.status === 503);
+    await assert.rejects(tree.loadSub('i-b.json'), (e: unknown) => e instanceof FetchFailure && e.status === 503);
     assert.deepEqual(tree.query(everything).missing, ['i-b.json'], 'still missing, not forgotten');
-    await tree.loadSubs(['i-b.json']);
+    await tree.loadSub('i-b.json');
     assert.equal(f.urls().filter((u) => u.endsWith('i-b.json')).length, 2);
     assert.deepEqual(chunkFiles(tree), ['c-a.bin', 'c-b.bin']);
   });
@@ -61,6 +61,6 @@ describe('the index tree in the worker', () => {
     bad.set('i-b.json', new TextEncoder().encode('{"format":"ssc-index","node":{}}'));
     installFakeFetch(t, serveFiles(BASE, bad));
     const tree = await IndexTree.load(`${BASE}index.json`, retry);
-    await assert.rejects(tree.loadSubs(['i-b.json']), /i-b\.json: .*format/);
+    await assert.rejects(tree.loadSub('i-b.json'), /i-b\.json: .*format/);
   });
 });

@@ -38,21 +38,17 @@ export class IndexTree {
     return queryIndex(floor.root, q, (ref) => this.subs.get(ref));
   }
 
-  /** Loads the sub-index files (those not loaded or loading yet); resolves when all are in. */
-  loadSubs(refs: string[]): Promise<void> {
-    return Promise.all(
-      refs.map((ref) => {
-        let p = this.loading.get(ref);
-        if (!p) {
-          p = fetchJson(this.url(ref), this.retry).then((json) => {
-            this.subs.set(ref, parseSubIndex(json, ref));
-          });
-          // A failed load may be retried by a later query.
-          p.catch(() => this.loading.delete(ref));
-          this.loading.set(ref, p);
-        }
-        return p;
-      }),
-    ).then(() => undefined);
+  /** Loads a sub-index file, unless it is loaded or loading already; resolves when it is in. */
+  loadSub(ref: string): Promise<void> {
+    let p = this.loading.get(ref);
+    if (!p) {
+      p = fetchJson(this.url(ref), this.retry).then((json) => {
+        this.subs.set(ref, parseSubIndex(json, ref));
+      });
+      // A failed load may be retried by a later query.
+      p.catch(() => this.loading.delete(ref));
+      this.loading.set(ref, p);
+    }
+    return p;
   }
 }
