@@ -58,7 +58,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   afterEach(async () => {
     await checkAndClose(mp);
     mp = null;
-    Object.assign(server.faults, { chunkFailRate: 0, notFound: new Set(), unavailable: new Set(), delayMs: () => 0, corrupt: new Map(), gzipWithoutEncoding: false });
+    Object.assign(server.faults, { chunkFailRate: 0, notFound: new Set(), unavailable: new Set(), delayMs: () => 0, appDelayMs: () => 0, corrupt: new Map(), gzipWithoutEncoding: false });
   });
 
   after(async () => {
@@ -180,19 +180,41 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     await assertMatchesSlicer(p, views[views.length - 1]!, z, 'after the pans');
   });
 
+  /** The floor chunks a view of `bbox` at the base scale shows. */
+  const floorOnScreen = (bbox: Bbox): ChunkLeaf[] => contents.floorLeaves.filter((l) => boxMeets(l.bbox, { ground: viewBbox(fitBbox(bbox, W, H)), zMin: 0, zMax: 0 }));
+
   test('at the floor the first complete map needs the floor chunks alone, and equals the CPU slicer', async () => {
     // The cube's own chunks are all missing: what the map shows comes from the floor chunks.
     server.faults.notFound = files(contents.leaves);
-    const [view] = pickPair((a) => contents.floorLeaves.filter((l) => boxMeets(l.bbox, { ground: viewBbox(fitBbox(a, W, H)), zMin: 0, zMax: 0 })).length >= 2, (a) => [a]);
+    const [view] = pickPair((a) => floorOnScreen(a).length >= 2, (a) => [a]);
     const p = await open(view, 0);
     assert.equal(await waitIdle(p.page), true, 'complete without any of the cube\'s chunks');
     await assertMatchesSlicer(p, view, 0, 'at the floor');
-    const onScreen = contents.floorLeaves.filter((l) => boxMeets(l.bbox, { ground: viewBbox(fitBbox(view, W, H)), zMin: 0, zMax: 0 }));
+    const onScreen = floorOnScreen(view);
     const counts = countBy(chunkRequests());
     for (const l of onScreen) assert.equal(counts.get(l.file), 1, `${l.file} (floor, on screen) fetched once`);
     const floorFiles = files(contents.floorLeaves);
     for (const f of counts.keys()) assert.ok(floorFiles.has(f) || server.faults.notFound.has(f), `${f} is a chunk of the cube`);
     assert.ok(contents.floorTop > 0 && contents.floorLeaves.length > 1, `${contents.floorLeaves.length} floor chunks below z ${contents.floorTop}`);
+  });
+
+  test('at the floor the first view\'s floor chunks are asked for while the worker\'s script is still coming, each once, and the map equals the CPU slicer', async () => {
+    // The worker's script comes a second late, as its 33 kB gzip would on a slow phone network:
+    // the map reads index.json and fetches the first view's floor chunks for the worker meanwhile.
+    const worker = /^\/assets\/chunk-worker-[\w-]+\.js$/;
+    server.faults.appDelayMs = (path) => (worker.test(path) ? 1000 : 0);
+    const [view] = pickPair((a) => floorOnScreen(a).length >= 2, (a) => [a]);
+    const p = await open(view, 0);
+    assert.equal(await waitIdle(p.page), true);
+    const script = server.log.slice(logStart).find((e) => worker.test(e.path));
+    assert.ok(script && script.outcome === 200, 'the worker\'s script was served');
+    const requests = chunkRequests();
+    for (const l of floorOnScreen(view)) {
+      const asked = requests.filter((r) => fileOf(r) === l.file);
+      assert.equal(asked.length, 1, `${l.file} fetched once`);
+      assert.ok(asked[0]!.start < script.end - 500, `${l.file} asked for ${asked[0]!.start - script.start} ms after the worker's script, which came after ${script.end - script.start} ms`);
+    }
+    await assertMatchesSlicer(p, view, 0, 'at the floor, its chunks fetched by the map');
   });
 
   test('at the floor the cube\'s chunks come after the floor\'s, as the margin, and a zoom out draws from them without fetching more', async () => {

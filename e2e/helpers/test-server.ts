@@ -27,6 +27,8 @@ export interface Faults {
   unavailable: Set<string>;
   /** Delay before answering a cube request, ms (e.g. to abort it meanwhile). */
   delayMs: (file: string) => number;
+  /** Delay before answering a request for the app's own files (path from the site's root, e.g. the worker's script), ms. */
+  appDelayMs: (path: string) => number;
   /** Cube files whose body is changed before it is sent. */
   corrupt: Map<string, (body: Buffer) => Buffer>;
   /** Chunks are sent as their .gz copy without a Content-Encoding header. */
@@ -64,7 +66,7 @@ export async function startTestServer(opts: { clientDir: string; cubeDir: string
   const clientPort = (await client.listen(0, '127.0.0.1')).port;
   const cubePort = (await cube.listen(0, '127.0.0.1')).port;
   const log: LoggedRequest[] = [];
-  const faults: Faults = { chunkFailRate: 0, seed: 1, notFound: new Set(), unavailable: new Set(), delayMs: () => 0, corrupt: new Map(), gzipWithoutEncoding: false };
+  const faults: Faults = { chunkFailRate: 0, seed: 1, notFound: new Set(), unavailable: new Set(), delayMs: () => 0, appDelayMs: () => 0, corrupt: new Map(), gzipWithoutEncoding: false };
   let random = mulberry32(faults.seed);
   let seedUsed = faults.seed;
 
@@ -112,7 +114,9 @@ export async function startTestServer(opts: { clientDir: string; cubeDir: string
       if (!res.writableFinished && entry.outcome === 'aborted') entry.end = Date.now();
     });
     if (!url.pathname.startsWith('/cube/')) {
-      forward(req, res, clientPort, url.pathname + url.search, entry);
+      const delay = faults.appDelayMs(url.pathname);
+      if (delay > 0) void sleep(delay).then(() => res.destroyed || req.destroyed || forward(req, res, clientPort, url.pathname + url.search, entry));
+      else forward(req, res, clientPort, url.pathname + url.search, entry);
       return;
     }
     const file = url.pathname.slice('/cube/'.length);

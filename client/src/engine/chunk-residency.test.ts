@@ -34,6 +34,7 @@ function harness(budget = 250) {
     uploaded: (f) => uploadedToWorker.push(f),
     evicted: (fs) => evicted.push(...fs),
     status: (f): ChunkStatus => (failed.has(f) ? 'failed' : onGpu.has(f) ? 'gpu' : 'requested'),
+    handingOver: false,
   };
   const gpu: GpuChunks = { upload: (c) => onGpu.add(c.file), evict: () => [], store: { has: (f) => onGpu.has(f) } };
   const residency = new ChunkResidency(source, gpu, budget, (f) => data.push(f));

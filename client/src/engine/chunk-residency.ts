@@ -14,6 +14,8 @@ export interface ChunkRequests {
   uploaded(file: string): void;
   evicted(files: string[]): void;
   status(file: string): ChunkStatus;
+  /** The map still fetches some of the first view's chunks for the worker (ChunkSource's head start). */
+  readonly handingOver: boolean;
 }
 
 /** The GPU's side (Renderer) as residency uses it. */
@@ -82,6 +84,11 @@ export class ChunkResidency {
 
   get hasPending(): boolean {
     return this.pending.length > 0;
+  }
+
+  /** The map still fetches some of the first view's chunks for the worker: their bodies pass through this thread. */
+  get handingOver(): boolean {
+    return this.source.handingOver;
   }
 
   /** Views to come (a flight's path), fetched after the view's own; [] forgets them. */

@@ -80,6 +80,8 @@ export class FrameLoop {
   private lastSliceMove = -Infinity;
   /** When the last incomplete image before the first complete one was drawn. */
   private lastPartialFrame = -Infinity;
+  /** When the first frame with the cube's metadata was asked for. */
+  private firstViewAt: number | null = null;
   /** Schedules the next frame once an incomplete image may be drawn again (0: none set). */
   private partialTimer: ReturnType<typeof setTimeout> | 0 = 0;
   private blendingWasOn = false;
@@ -256,6 +258,19 @@ export class FrameLoop {
     const blendOn = blending.mode === 'always' || (blending.mode === 'moving' && t - this.lastSliceMove < MOVING_MS);
     if (blendOn !== this.blendingWasOn) this.accumulated = 0;
     this.blendingWasOn = blendOn;
+    // The first image, before any of its chunks has come, waits (at most PARTIAL_FRAME_MS from
+    // the first view) while the map hands the worker the first view's chunks (ChunkSource's head
+    // start): their bodies pass through this thread, which a software GPU holds for 100 ms and
+    // more as it draws its first image (it compiles the shaders then). On a fast network they
+    // come within that time, and a slow network's come after the image.
+    this.firstViewAt ??= t;
+    if (!force && this.shown === null && files.size === 0 && this.residency.handingOver) {
+      const wait = this.firstViewAt + PARTIAL_FRAME_MS - t;
+      if (wait > 0) {
+        if (!this.partialTimer) this.partialTimer = setTimeout(() => ((this.partialTimer = 0), this.schedule()), wait);
+        return;
+      }
+    }
     // Until the first complete map, an incomplete image of a view already on screen (only more
     // of its chunks came) at most every PARTIAL_FRAME_MS; a view that changed is drawn at once.
     if (!force && this.firstCompleteAt === null && this.accumulated < supersampling && this.shown?.seq === this.viewSeq && !this.residency.shows(this.viewSeq, files)) {

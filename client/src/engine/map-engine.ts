@@ -144,6 +144,7 @@ export class MapEngine extends Evented<EngineEvents> {
       this.loop?.answered();
       this.loop?.schedule();
     });
+    this.source.on('handed-over', () => this.loop?.schedule());
     this.source.on('chunk', (ch) => {
       this.residency?.arrived(ch);
       this.loop?.schedule();

@@ -17,9 +17,10 @@
 //   (floorShown): the first map at the base scale takes a fifth of the bytes. The cube's
 //   sub-index files wait, as the margin does, until the floor chunks on screen are on the GPU.
 import type { ChunkLeaf, LineChunkLeaf } from '../../../format/cube-index.js';
-import { boxMeets, chunkPriority, queryLineChunks, type QueryBox, type QueryResult } from '../../../format/index-query.js';
+import { boxMeets, queryLineChunks, type QueryBox, type QueryResult } from '../../../format/index-query.js';
 import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
 import { fetchLineChunk } from './line-chunk-fetch.js';
+import { floorChoice, leafPriority } from './floor-choice.js';
 import { FetchFailure, type RetryOptions } from './fetch-retry.js';
 import { indexError } from './index-error.js';
 import type { IndexTree } from './index-tree.js';
@@ -95,12 +96,12 @@ export class ChunkScheduler {
     };
     const rank = view.visible;
     for (const leaf of floor?.leaves ?? []) {
-      want(leaf, priorityIn(leaf, rank, view));
+      want(leaf, leafPriority(leaf, rank, view));
       visible.push(leaf.file);
     }
     for (const leaf of [...cube.leaves, ...lineLeaves]) {
       const onScreen = (!floor || isLineLeaf(leaf)) && boxMeets(leaf.bbox, visibleQ);
-      want(leaf, priorityIn(leaf, rank, view) + (onScreen ? 0 : MARGIN_TIER));
+      want(leaf, leafPriority(leaf, rank, view) + (onScreen ? 0 : MARGIN_TIER));
       (onScreen ? visible : margin).push(leaf.file);
     }
     (view.ahead ?? []).forEach((a, i) => {
@@ -110,7 +111,7 @@ export class ChunkScheduler {
       for (const m of r.missing) missing.add(m);
       for (const leaf of [...r.leaves, ...this.lineLeaves(aq)]) {
         if (needed.has(leaf.file)) continue;
-        want(leaf, AHEAD_TIER + i * MARGIN_TIER + priorityIn(leaf, a.box, a));
+        want(leaf, AHEAD_TIER + i * MARGIN_TIER + leafPriority(leaf, a.box, a));
         ahead.push(leaf.file);
       }
     });
@@ -149,17 +150,10 @@ export class ChunkScheduler {
    * chunks"): the floor the cube's chunks there hold among others' triangles, in fewer bytes.
    * The cube's chunks are then the margin: the next view may as well be a zoom out, for which
    * the floor's are no use, as a pan, which the cube's serve too. Null (the cube's on screen
-   * too) when the cube's leave fewer bytes to fetch on screen (they are here already, say,
-   * after a zoom back in), when one of the floor chunks has failed (offline, it may never
-   * have been fetched), or when there is no floor. While the cube's sub-index files are
-   * missing its cost is not known: the floor.
+   * too) by floorChoice's rule, or when there is no floor.
    */
   private floorShown(cube: QueryResult, onScreen: QueryBox): QueryResult | null {
-    const floor = this.tree.floorQuery(onScreen);
-    if (!floor) return null;
-    const floorBytes = this.bytesToFetch(floor.leaves, onScreen);
-    if (floorBytes === Infinity) return null;
-    return cube.missing.length === 0 && this.bytesToFetch(cube.leaves, onScreen) < floorBytes ? null : floor;
+    return floorChoice(this.tree.floorQuery(onScreen), cube, (leaves) => this.bytesToFetch(leaves, onScreen));
   }
 
   /** Bytes of `leaves` meeting `onScreen` not received yet; Infinity when one of them has failed. */
@@ -286,12 +280,6 @@ export class ChunkScheduler {
   private postError(error: SourceErrorInfo): void {
     this.post({ type: 'error', error });
   }
-}
-
-/** Nearest to the centre and base z of a view with ground box `box` first. */
-function priorityIn(leaf: Leaf, box: [number, number, number, number], v: { centerX: number; centerY: number; z: number; zMin: number; zMax: number }): number {
-  const halfDiag = Math.hypot(box[2] - box[0], box[3] - box[1]) / 2;
-  return chunkPriority(leaf.bbox, v.centerX, v.centerY, v.z, halfDiag, Math.max(1, v.zMax - v.zMin));
 }
 
 function chunkError(err: unknown, file: string, url: string): SourceErrorInfo {

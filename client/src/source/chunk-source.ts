@@ -1,11 +1,14 @@
-// The map's side of the chunk worker: starts it, forwards views and GPU notices, mirrors every
-// chunk's status, and turns the worker's messages into events.
-import type { CubeMeta } from '../../../format/cube-index.js';
+// The map's side of the chunk worker: starts it, reads the cube's index.json for the map and the
+// worker, fetches the first view's floor chunks for the worker (its head start), forwards views
+// and GPU notices, mirrors every chunk's status, and turns the worker's messages into events.
+import type { CubeIndex, CubeMeta } from '../../../format/cube-index.js';
 import { Evented } from '../events.js';
 import { createChunkWorker } from './create-worker.js';
 import { fetchBytes } from './fetch-retry.js';
 import { indexError } from './index-error.js';
 import { indexUrl } from './index-url.js';
+import { firstFloorFiles } from './floor-choice.js';
+import { readIndex } from './read-index.js';
 import type { ChunkStatus, Payload, FeatureInfo, FromWorker, NeededChunks, SourceErrorInfo, SourceOptions, ToWorker, ViewRequest } from './worker-protocol.js';
 
 export interface ChunkSourceEvents {
@@ -16,6 +19,8 @@ export interface ChunkSourceEvents {
   error: SourceErrorInfo;
   /** The index could not be loaded (after 'error'): the map has nothing to show. */
   failed: SourceErrorInfo;
+  /** The head start's last body went to the worker (or its fetch failed). */
+  'handed-over': undefined;
 }
 
 export const defaultSourceOptions: SourceOptions = { concurrency: 6, retries: 5, backoffMs: 250, maxBackoffMs: 4000, marginRestMs: 300 };
@@ -28,6 +33,14 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
   private readonly requests = new Map<number, { resolve: (answer: unknown) => void; reject: (e: Error) => void }>();
   private nextRequest = 1;
   meta: CubeMeta | null = null;
+  private readonly opts: SourceOptions;
+  /** index.json, once read (the worker has its own copy). */
+  private index: CubeIndex | null = null;
+  private headStarted = false;
+  /** The map was removed: an index that comes late is not taken. */
+  private destroyed = false;
+  /** Head start fetches whose body has not gone to the worker yet. */
+  private handOvers = 0;
 
   constructor(url: string, options: Partial<SourceOptions> = {}) {
     super();
@@ -35,18 +48,64 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
     this.worker = createChunkWorker();
     this.worker.addEventListener('message', (ev: MessageEvent<FromWorker>) => this.receive(ev.data));
     this.worker.addEventListener('error', (ev) => this.fire('error', { kind: 'index', message: `chunk worker failed: ${ev.message}`, url: this.url }));
-    const opts = { ...defaultSourceOptions, ...options };
-    this.send({ type: 'init', url: this.url, options: opts });
-    // index.json is fetched here while the worker's own script loads, not by the worker after
-    // it: on a slow network the first map comes a round trip sooner (bench:session).
-    fetchBytes(this.url, opts).then(
-      (body) => this.worker.postMessage({ type: 'index', body } satisfies ToWorker, [body]),
-      (err: unknown) => this.send({ type: 'index-unavailable', error: indexError(err, this.url) }),
+    this.opts = { ...defaultSourceOptions, ...options };
+    this.send({ type: 'init', url: this.url, options: this.opts });
+    // index.json is read here while the worker's own script loads, not by the worker after it:
+    // on a slow network the first map comes a round trip sooner (bench:session), and the first
+    // view's floor chunks can be asked for before the worker runs (setView).
+    readIndex(this.url, this.opts).then(
+      (index) => {
+        if (this.destroyed) return;
+        this.index = index;
+        this.send({ type: 'index', index });
+        this.meta = index.meta;
+        this.fire('meta', index.meta);
+      },
+      (err: unknown) => {
+        if (this.destroyed) return;
+        const error = indexError(err, this.url);
+        this.send({ type: 'index-unavailable', error });
+        this.fire('error', error);
+        this.fire('failed', error);
+      },
     );
   }
 
   setView(view: ViewRequest): void {
+    if (this.index && !this.headStarted) {
+      this.headStarted = true;
+      this.headStart(firstFloorFiles(this.index, view));
+    }
     this.send({ type: 'view', view });
+  }
+
+  /**
+   * The first view's floor chunks, fetched here and handed to the worker: on a slow network its
+   * script (33 kB gzip) takes a round trip and more to come, and these need not wait for it. The
+   * worker is told before the view (messages keep their order), so it asks for none of them
+   * again; one that fails here it fetches itself, with its retries.
+   */
+  private headStart(files: string[]): void {
+    if (files.length === 0) return;
+    const base = new URL('.', this.url);
+    const urls = files.map((f) => new URL(f, base).href);
+    this.send({ type: 'head-start', urls });
+    const once = { ...this.opts, retries: 0 };
+    this.handOvers = urls.length;
+    const handedOver = (): void => {
+      if (--this.handOvers === 0) this.fire('handed-over', undefined);
+    };
+    for (const url of urls) {
+      fetchBytes(url, once).then(
+        (body) => this.worker.postMessage({ type: 'head-start-body', url, body } satisfies ToWorker, [body]),
+        () => this.send({ type: 'head-start-body', url, body: null }),
+      ).finally(handedOver);
+    }
+  }
+
+  /** The map still fetches some of the first view's chunks for the worker (headStart). */
+  get handingOver(): boolean {
+    return this.handOvers > 0;
   }
 
   /** The chunk went to the GPU. */
@@ -85,6 +144,7 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
   }
 
   destroy(): void {
+    this.destroyed = true;
     this.worker.terminate();
     for (const r of this.requests.values()) r.reject(new Error('the map was removed'));
     this.requests.clear();
@@ -111,10 +171,6 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
 
   private receive(msg: FromWorker): void {
     switch (msg.type) {
-      case 'meta':
-        this.meta = msg.meta;
-        this.fire('meta', msg.meta);
-        break;
       case 'needed':
         this.fire('needed', msg);
         break;
@@ -128,10 +184,6 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
         break;
       case 'error':
         this.fire('error', msg.error);
-        break;
-      case 'index-failed':
-        this.fire('error', msg.error);
-        this.fire('failed', msg.error);
         break;
       case 'features':
         this.answer(msg.id, msg.features, msg.error);

@@ -1,5 +1,6 @@
-// The chunk worker's entry point: reads the index the map fetched, then answers the map's
-// messages (views, upload and eviction notices, feature lookups) with chunks, statuses and errors.
+// The chunk worker's entry point: takes the index the map read, then answers the map's messages
+// (views, upload and eviction notices, feature lookups) with chunks, statuses and errors; the
+// first view's floor chunks may come from the map too (head-start.ts).
 //
 // One worker decodes every chunk. A pool (MapLibre's way: more copies of this script, each
 // handed bodies through a MessagePort by this one when free) was built and measured at stop 50,
@@ -11,10 +12,10 @@
 // 34 first floor chunks), which a view of a few dozen chunks does not earn back. A device with
 // free cores may gain; it was not measurable here.
 import { ChunkScheduler } from './chunk-scheduler.js';
-import { indexError } from './index-error.js';
 import { FeaturePages } from './feature-pages.js';
+import { HeadStart } from './head-start.js';
 import { IndexTree } from './index-tree.js';
-import type { FromWorker, SourceErrorInfo, ToWorker, ViewRequest } from './worker-protocol.js';
+import type { FromWorker, ToWorker, ViewRequest } from './worker-protocol.js';
 
 // The DOM lib types `self` as a Window; this is the part of a dedicated worker's scope used here.
 interface WorkerScope {
@@ -28,40 +29,41 @@ let scheduler: ChunkScheduler | null = null;
 let pages: FeaturePages | null = null;
 let pendingView: ViewRequest | null = null;
 let ready: Promise<void> | null = null;
-/** Takes index.json's body when the map sends it, or why it has none. */
+/** Takes the index the map read, or why it has none (the map has reported that). */
 let indexCame: (msg: Extract<ToWorker, { type: 'index' | 'index-unavailable' }>) => void = () => undefined;
 // Every file received whole, in order: what a service worker must cache to show these views offline.
 const loadedUrls = new Set<string>();
+const headStart = new HeadStart();
 
 scope.addEventListener('message', (ev) => {
   const msg = ev.data;
   switch (msg.type) {
     case 'init': {
-      const options = { ...msg.options, onLoaded: (url: string) => loadedUrls.add(url) };
-      // Rejected with the map's SourceErrorInfo when the fetch failed; an Error when the body is no index.
-      const body = new Promise<ArrayBuffer>((resolve, reject) => (indexCame = (m) => (m.type === 'index' ? resolve(m.body) : reject(m.error))));
-      ready = body.then((b) => {
-        options.onLoaded(msg.url);
-        return IndexTree.fromBody(b, msg.url, options);
-      }).then(
-        (tree) => {
+      const options = { ...msg.options, onLoaded: (url: string) => loadedUrls.add(url), headStart };
+      ready = new Promise<void>((resolve, reject) => {
+        indexCame = (m) => {
+          if (m.type === 'index-unavailable') return reject(new Error(m.error.message));
+          options.onLoaded(msg.url);
+          const tree = IndexTree.of(m.index, msg.url, options);
           scheduler = new ChunkScheduler(tree, options, post);
           pages = new FeaturePages(tree.index.meta.faces, tree.index.meta.attributes, (f) => tree.url(f), options);
-          post({ type: 'meta', meta: tree.index.meta });
           if (pendingView) scheduler.setView(pendingView);
           pendingView = null;
-        },
-        (err: unknown) => {
-          post({ type: 'index-failed', error: err instanceof Error ? indexError(err, msg.url) : (err as SourceErrorInfo) });
-          throw err;
-        },
-      );
+          resolve();
+        };
+      });
       ready.catch(() => undefined);
       break;
     }
     case 'index':
     case 'index-unavailable':
       indexCame(msg);
+      break;
+    case 'head-start':
+      headStart.expect(msg.urls);
+      break;
+    case 'head-start-body':
+      headStart.arrived(msg.url, msg.body);
       break;
     case 'view':
       if (scheduler) scheduler.setView(msg.view);

@@ -1,6 +1,7 @@
 // fetch with retries: server errors (5xx) and network failures are retried with exponential
 // backoff, since they are usually passing; client errors (4xx) are not, they will not change.
 import { gunzipIfNeeded } from './gunzip.js';
+import type { HeadStart } from './head-start.js';
 
 export interface RetryOptions {
   /** Retries after the first attempt. */
@@ -10,6 +11,8 @@ export interface RetryOptions {
   maxBackoffMs: number;
   /** Told the URL of every body received whole (the worker lists them for offline caching; the scheduler frees the request's place). */
   onLoaded?: (url: string) => void;
+  /** Bodies fetched elsewhere for this worker (head-start.ts): a URL among them is not asked for again. */
+  headStart?: Pick<HeadStart, 'take'>;
 }
 
 export type FetchFailureKind = 'http' | 'network' | 'abort';
@@ -42,10 +45,33 @@ function sleep(ms: number, signal?: AbortSignal): Promise<void> {
   });
 }
 
+/** `p`, or a FetchFailure of kind 'abort' as soon as `signal` aborts. */
+function untilAborted<T>(p: Promise<T>, url: string, signal?: AbortSignal): Promise<T> {
+  if (!signal) return p;
+  const aborted = (): FetchFailure => new FetchFailure('aborted', 'abort', url);
+  if (signal.aborted) return Promise.reject(aborted());
+  return new Promise<T>((resolve, reject) => {
+    const onAbort = (): void => reject(aborted());
+    signal.addEventListener('abort', onAbort, { once: true });
+    void p.then((v) => {
+      signal.removeEventListener('abort', onAbort);
+      resolve(v);
+    });
+  });
+}
+
 const isAbort = (err: unknown): boolean => err instanceof Error && err.name === 'AbortError';
 
 /** The body of `url` as bytes; throws FetchFailure. */
 export async function fetchBytes(url: string, opts: RetryOptions, signal?: AbortSignal): Promise<ArrayBuffer> {
+  const early = opts.headStart?.take(url);
+  if (early) {
+    const body = await untilAborted(early, url, signal);
+    if (body) {
+      opts.onLoaded?.(url);
+      return body;
+    }
+  }
   let attempt = 0;
   for (;;) {
     attempt++;

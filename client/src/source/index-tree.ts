@@ -1,8 +1,10 @@
 // The cube's R-tree in the worker: the root from index.json, sub-index files fetched the first
 // time a query reaches them (once each, however many queries ask meanwhile).
-import { parseIndex, parseSubIndex, type CubeIndex, type InnerNode } from '../../../format/cube-index.js';
+import { parseSubIndex, type CubeIndex, type InnerNode } from '../../../format/cube-index.js';
 import { queryIndex, type QueryBox, type QueryResult } from '../../../format/index-query.js';
-import { fetchBytes, fetchJson, jsonOf, type RetryOptions } from './fetch-retry.js';
+import { fetchJson, type RetryOptions } from './fetch-retry.js';
+import { floorQuery } from './floor-choice.js';
+import { readIndex } from './read-index.js';
 
 export class IndexTree {
   private readonly subs = new Map<string, InnerNode>();
@@ -15,12 +17,12 @@ export class IndexTree {
   ) {}
 
   static async load(indexUrl: string, retry: RetryOptions): Promise<IndexTree> {
-    return IndexTree.fromBody(await fetchBytes(indexUrl, retry), indexUrl, retry);
+    return IndexTree.of(await readIndex(indexUrl, retry), indexUrl, retry);
   }
 
-  /** The index from the body of `indexUrl`, fetched elsewhere (the map fetches it while the worker starts). */
-  static async fromBody(body: ArrayBuffer, indexUrl: string, retry: RetryOptions): Promise<IndexTree> {
-    return new IndexTree(parseIndex(await jsonOf(body)), new URL('.', indexUrl).href, retry);
+  /** The index of `indexUrl`, read elsewhere (the map reads it while the worker starts, ChunkSource). */
+  static of(index: CubeIndex, indexUrl: string, retry: RetryOptions): IndexTree {
+    return new IndexTree(index, new URL('.', indexUrl).href, retry);
   }
 
   url(file: string): string {
@@ -33,9 +35,7 @@ export class IndexTree {
 
   /** The floor chunks a query needs, or null when the cube has none or the query reaches above their top. */
   floorQuery(q: QueryBox): QueryResult | null {
-    const floor = this.index.floor;
-    if (!floor || q.zMax >= floor.top) return null;
-    return queryIndex(floor.root, q, (ref) => this.subs.get(ref));
+    return floorQuery(this.index, q, (ref) => this.subs.get(ref));
   }
 
   /** Loads a sub-index file, unless it is loaded or loading already; resolves when it is in. */

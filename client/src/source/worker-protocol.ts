@@ -1,5 +1,5 @@
 // Messages between the map (main thread) and the chunk worker.
-import type { Box3, CubeMeta } from '../../../format/cube-index.js';
+import type { Box3, CubeIndex } from '../../../format/cube-index.js';
 import type { FaceRecord } from '../../../format/face-page.js';
 import type { DrawBlocks } from './draw-ranges.js';
 
@@ -47,9 +47,13 @@ export interface AheadView {
 
 export type ToWorker =
   | { type: 'init'; url: string; options: SourceOptions }
-  /** index.json's body, or why it could not be had: the map fetches it while the worker starts (ChunkSource). */
-  | { type: 'index'; body: ArrayBuffer }
+  /** index.json read and checked, or why it could not be had: the map reads it while the worker starts (ChunkSource). */
+  | { type: 'index'; index: CubeIndex }
   | { type: 'index-unavailable'; error: SourceErrorInfo }
+  /** The map is fetching these files for the worker (its first view's floor chunks, head-start.ts), */
+  | { type: 'head-start'; urls: string[] }
+  /** and here is one (null: its fetch failed). */
+  | { type: 'head-start-body'; url: string; body: ArrayBuffer | null }
   | { type: 'view'; view: ViewRequest }
   | { type: 'uploaded'; file: string }
   | { type: 'evicted'; files: string[] }
@@ -148,13 +152,10 @@ export interface NeededChunks {
 }
 
 export type FromWorker =
-  | { type: 'meta'; meta: CubeMeta }
   | ({ type: 'needed'; visited: number } & NeededChunks)
   | { type: 'status'; file: string; status: ChunkStatus }
   | { type: 'chunk'; chunk: Payload }
   | { type: 'error'; error: SourceErrorInfo }
-  // The index could not be loaded: nothing will follow.
-  | { type: 'index-failed'; error: SourceErrorInfo }
   | { type: 'features'; id: number; features: (FeatureInfo | null)[]; error?: string }
   | { type: 'attributes'; id: number; properties: (Record<string, unknown> | null)[]; error?: string }
   | { type: 'loaded-urls'; id: number; urls: string[] };

@@ -1,0 +1,55 @@
+// Below the floor's top, whether a view shows the floor chunks or the cube's (docs/FORMAT.md,
+// "Floor chunks"): one rule for the worker's scheduler and for the map's head start on the
+// first view (ChunkSource), which fetches the floor chunks on screen before the worker runs.
+import type { ChunkLeaf, CubeIndex, InnerNode } from '../../../format/cube-index.js';
+import { boxMeets, chunkPriority, queryIndex, type QueryBox, type QueryResult } from '../../../format/index-query.js';
+import type { ViewRequest } from './worker-protocol.js';
+
+/**
+ * The floor chunks a query needs, or null when the cube has none or the query reaches above
+ * their top. `loaded`: the sub-index files at hand.
+ */
+export function floorQuery(index: CubeIndex, q: QueryBox, loaded: (ref: string) => InnerNode | undefined): QueryResult | null {
+  const floor = index.floor;
+  if (!floor || q.zMax >= floor.top) return null;
+  return queryIndex(floor.root, q, loaded);
+}
+
+/**
+ * `floor` when the view shows the floor chunks, else null (the cube's on screen): the cube's
+ * win when they leave fewer bytes to fetch on screen (they are here already, say, after a zoom
+ * back in); while the cube's sub-index files are missing their cost is not known, and the floor
+ * wins. `toFetch(leaves)`: the bytes of those of `leaves` on screen still to fetch, Infinity
+ * when one of them has failed (offline, it may never have been fetched).
+ */
+export function floorChoice(floor: QueryResult | null, cube: QueryResult, toFetch: (leaves: readonly ChunkLeaf[]) => number): QueryResult | null {
+  if (!floor) return null;
+  const floorBytes = toFetch(floor.leaves);
+  if (floorBytes === Infinity) return null;
+  return cube.missing.length === 0 && toFetch(cube.leaves) < floorBytes ? null : floor;
+}
+
+/** Nearest to the centre and base z of a view with ground box `box` first. */
+export function leafPriority(leaf: { bbox: ChunkLeaf['bbox'] }, box: [number, number, number, number], v: { centerX: number; centerY: number; z: number; zMin: number; zMax: number }): number {
+  const halfDiag = Math.hypot(box[2] - box[0], box[3] - box[1]) / 2;
+  return chunkPriority(leaf.bbox, v.centerX, v.centerY, v.z, halfDiag, Math.max(1, v.zMax - v.zMin));
+}
+
+/**
+ * The files of the floor chunks a first view shows on screen, nearest first, as the scheduler
+ * would choose them with nothing fetched yet and only index.json at hand; none when the view
+ * shows the cube's chunks.
+ */
+export function firstFloorFiles(index: CubeIndex, view: ViewRequest): string[] {
+  const onScreen = { ground: view.visible, zMin: view.zMin, zMax: view.zMax };
+  const none = (): undefined => undefined;
+  const floor = floorQuery(index, onScreen, none);
+  const cube = queryIndex(index.root, { ground: view.margin, zMin: view.zMin, zMax: view.zMax }, none);
+  const onScreenBytes = (leaves: readonly ChunkLeaf[]): number => leaves.reduce((sum, l) => sum + (boxMeets(l.bbox, onScreen) ? l.bytes : 0), 0);
+  const shown = floorChoice(floor, cube, onScreenBytes);
+  if (!shown) return [];
+  return shown.leaves
+    .map((leaf) => ({ file: leaf.file, priority: leafPriority(leaf, view.visible, view) }))
+    .sort((a, b) => a.priority - b.priority)
+    .map((l) => l.file);
+}
