@@ -58,7 +58,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   afterEach(async () => {
     await checkAndClose(mp);
     mp = null;
-    Object.assign(server.faults, { chunkFailRate: 0, notFound: new Set(), unavailable: new Set(), delayMs: () => 0, appDelayMs: () => 0, corrupt: new Map(), gzipWithoutEncoding: false });
+    Object.assign(server.faults, { chunkFailRate: 0, notFound: new Set(), unavailable: new Set(), unavailableOnce: new Set(), delayMs: () => 0, appDelayMs: () => 0, corrupt: new Map(), gzipWithoutEncoding: false });
   });
 
   after(async () => {
@@ -119,9 +119,9 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     return m;
   };
 
-  async function open(bbox: Bbox, z: number, extra: Record<string, string | number> = {}): Promise<MapPage> {
+  async function open(bbox: Bbox, z: number, extra: Record<string, string | number> = {}, expect: RegExp[] = []): Promise<MapPage> {
     logStart = server.log.length;
-    mp = await openMap(browser, server.url, { source: 'cube/', bbox: bbox.join(','), z, supersampling: 1, ...extra });
+    mp = await openMap(browser, server.url, { source: 'cube/', bbox: bbox.join(','), z, supersampling: 1, ...extra }, { expect });
     return mp;
   }
 
@@ -215,6 +215,21 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
       assert.ok(asked[0]!.start < script.end - 500, `${l.file} asked for ${asked[0]!.start - script.start} ms after the worker's script, which came after ${script.end - script.start} ms`);
     }
     await assertMatchesSlicer(p, view, 0, 'at the floor, its chunks fetched by the map');
+  });
+
+  test('a floor chunk the map could not fetch for the worker (a 503) the worker fetches itself, and the map comes complete', async () => {
+    const worker = /^\/assets\/chunk-worker-[\w-]+\.js$/;
+    server.faults.appDelayMs = (path) => (worker.test(path) ? 500 : 0);
+    const [view] = pickPair((a) => floorOnScreen(a).length >= 2, (a) => [a]);
+    const failing = floorOnScreen(view)[0]!.file;
+    server.faults.unavailableOnce = new Set([failing]);
+    const p = await open(view, 0, {}, [/Failed to load resource: the server responded with a status of 503/]);
+    const errors = await recordErrors(p);
+    assert.equal(await waitIdle(p.page), true);
+    const asked = chunkRequests().filter((r) => fileOf(r) === failing);
+    assert.deepEqual(asked.map((r) => r.outcome), [503, 200], `${failing}: the map's request, then the worker's`);
+    assert.deepEqual(await errors(), [], 'nothing for the page to hear of');
+    await assertMatchesSlicer(p, view, 0, 'at the floor, one chunk fetched by the worker');
   });
 
   test('at the floor the cube\'s chunks come after the floor\'s, as the margin, and a zoom out draws from them without fetching more', async () => {

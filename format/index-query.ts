@@ -58,6 +58,12 @@ export function chunkPriority(b: Box3, cx: number, cy: number, z: number, halfDi
   return Math.hypot(dx, dy) / Math.max(halfDiagonal, 1e-9) + dz / Math.max(zScale, 1e-9);
 }
 
+/** chunkPriority for a view with ground box `box`, its centre and base z and its z range: nearest first. */
+export function viewPriority(b: Box3, box: readonly [number, number, number, number], v: { centerX: number; centerY: number; z: number; zMin: number; zMax: number }): number {
+  const halfDiag = Math.hypot(box[2] - box[0], box[3] - box[1]) / 2;
+  return chunkPriority(b, v.centerX, v.centerY, v.z, halfDiag, Math.max(1, v.zMax - v.zMin));
+}
+
 /** The line chunks a view needs: those whose box meets the view's, by the chunks' rule. */
 export function queryLineChunks(lines: readonly LineChunkLeaf[], q: QueryBox): LineChunkLeaf[] {
   return lines.filter((l) => boxMeets(l.bbox, q));

@@ -44,6 +44,8 @@ export interface OpenOptions {
   hash?: string;
   /** Called with the new page before it loads, e.g. to watch every response from the first. */
   onPage?: (page: Page) => void;
+  /** Console errors the page is expected to log from its first moment (as MapPage.expect). */
+  expect?: RegExp[];
 }
 
 /** Opens the engine's test page (or opts.page) with the given query parameters (source etc.). */
@@ -59,7 +61,7 @@ export async function openMap(browser: Browser, baseUrl: string, params: Record<
   if (opts.initScript) await page.addInitScript(opts.initScript);
   opts.onPage?.(page);
   const problems: string[] = [];
-  const expected: RegExp[] = [];
+  const expected: RegExp[] = [...(opts.expect ?? [])];
   page.on('console', (m) => {
     if (m.type() !== 'error') return;
     const where = m.location().url;

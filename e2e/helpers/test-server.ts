@@ -25,6 +25,8 @@ export interface Faults {
   notFound: Set<string>;
   /** Paths answered with 503, every time. */
   unavailable: Set<string>;
+  /** Paths answered with 503 the first time they are asked for. */
+  unavailableOnce: Set<string>;
   /** Delay before answering a cube request, ms (e.g. to abort it meanwhile). */
   delayMs: (file: string) => number;
   /** Delay before answering a request for the app's own files (path from the site's root, e.g. the worker's script), ms. */
@@ -66,7 +68,7 @@ export async function startTestServer(opts: { clientDir: string; cubeDir: string
   const clientPort = (await client.listen(0, '127.0.0.1')).port;
   const cubePort = (await cube.listen(0, '127.0.0.1')).port;
   const log: LoggedRequest[] = [];
-  const faults: Faults = { chunkFailRate: 0, seed: 1, notFound: new Set(), unavailable: new Set(), delayMs: () => 0, appDelayMs: () => 0, corrupt: new Map(), gzipWithoutEncoding: false };
+  const faults: Faults = { chunkFailRate: 0, seed: 1, notFound: new Set(), unavailable: new Set(), unavailableOnce: new Set(), delayMs: () => 0, appDelayMs: () => 0, corrupt: new Map(), gzipWithoutEncoding: false };
   let random = mulberry32(faults.seed);
   let seedUsed = faults.seed;
 
@@ -131,7 +133,7 @@ export async function startTestServer(opts: { clientDir: string; cubeDir: string
         res.end('404 not found\n');
         return;
       }
-      if (faults.unavailable.has(file)) {
+      if (faults.unavailable.has(file) || faults.unavailableOnce.delete(file)) {
         entry.outcome = 503;
         entry.end = Date.now();
         res.writeHead(503, { 'content-type': 'text/plain', 'cache-control': 'no-store' });

@@ -17,10 +17,10 @@
 //   (floorShown): the first map at the base scale takes a fifth of the bytes. The cube's
 //   sub-index files wait, as the margin does, until the floor chunks on screen are on the GPU.
 import type { ChunkLeaf, LineChunkLeaf } from '../../../format/cube-index.js';
-import { boxMeets, queryLineChunks, type QueryBox, type QueryResult } from '../../../format/index-query.js';
+import { boxMeets, queryLineChunks, viewPriority, type QueryBox, type QueryResult } from '../../../format/index-query.js';
 import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
 import { fetchLineChunk } from './line-chunk-fetch.js';
-import { floorChoice, leafPriority } from './floor-choice.js';
+import { floorChoice } from './floor-choice.js';
 import { FetchFailure, type RetryOptions } from './fetch-retry.js';
 import { indexError } from './index-error.js';
 import type { IndexTree } from './index-tree.js';
@@ -61,7 +61,7 @@ export class ChunkScheduler {
 
   constructor(
     private readonly tree: IndexTree,
-    private readonly opts: SourceOptions & Pick<RetryOptions, 'onLoaded'>,
+    private readonly opts: SourceOptions & Pick<RetryOptions, 'onLoaded' | 'headStart'>,
     private readonly post: Post,
   ) {}
 
@@ -96,12 +96,12 @@ export class ChunkScheduler {
     };
     const rank = view.visible;
     for (const leaf of floor?.leaves ?? []) {
-      want(leaf, leafPriority(leaf, rank, view));
+      want(leaf, viewPriority(leaf.bbox, rank, view));
       visible.push(leaf.file);
     }
     for (const leaf of [...cube.leaves, ...lineLeaves]) {
       const onScreen = (!floor || isLineLeaf(leaf)) && boxMeets(leaf.bbox, visibleQ);
-      want(leaf, leafPriority(leaf, rank, view) + (onScreen ? 0 : MARGIN_TIER));
+      want(leaf, viewPriority(leaf.bbox, rank, view) + (onScreen ? 0 : MARGIN_TIER));
       (onScreen ? visible : margin).push(leaf.file);
     }
     (view.ahead ?? []).forEach((a, i) => {
@@ -111,7 +111,7 @@ export class ChunkScheduler {
       for (const m of r.missing) missing.add(m);
       for (const leaf of [...r.leaves, ...this.lineLeaves(aq)]) {
         if (needed.has(leaf.file)) continue;
-        want(leaf, AHEAD_TIER + i * MARGIN_TIER + leafPriority(leaf, a.box, a));
+        want(leaf, AHEAD_TIER + i * MARGIN_TIER + viewPriority(leaf.bbox, a.box, a));
         ahead.push(leaf.file);
       }
     });

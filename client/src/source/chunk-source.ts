@@ -4,9 +4,9 @@
 import type { CubeIndex, CubeMeta } from '../../../format/cube-index.js';
 import { Evented } from '../events.js';
 import { createChunkWorker } from './create-worker.js';
-import { fetchBytes } from './fetch-retry.js';
 import { indexError } from './index-error.js';
-import { indexUrl } from './index-url.js';
+import { cubeFileUrl, indexUrl } from './index-url.js';
+import { HeadStartFetches } from './head-start.js';
 import { firstFloorFiles } from './floor-choice.js';
 import { readIndex } from './read-index.js';
 import type { ChunkStatus, Payload, FeatureInfo, FromWorker, NeededChunks, SourceErrorInfo, SourceOptions, ToWorker, ViewRequest } from './worker-protocol.js';
@@ -37,10 +37,10 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
   /** index.json, once read (the worker has its own copy). */
   private index: CubeIndex | null = null;
   private headStarted = false;
+  /** The first view's floor chunks, being fetched for the worker (headStart). */
+  private headStarts: HeadStartFetches | null = null;
   /** The map was removed: an index that comes late is not taken. */
   private destroyed = false;
-  /** Head start fetches whose body has not gone to the worker yet. */
-  private handOvers = 0;
 
   constructor(url: string, options: Partial<SourceOptions> = {}) {
     super();
@@ -80,32 +80,26 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
   }
 
   /**
-   * The first view's floor chunks, fetched here and handed to the worker: on a slow network its
-   * script (33 kB gzip) takes a round trip and more to come, and these need not wait for it. The
-   * worker is told before the view (messages keep their order), so it asks for none of them
-   * again; one that fails here it fetches itself, with its retries.
+   * The first view's floor chunks, fetched here and handed to the worker (head-start.ts): on a
+   * slow network its script (33 kB gzip) comes a round trip and more after index.json, and these
+   * need not wait for it. As many as the worker may request at once, nearest first; it is told
+   * before the view (messages keep their order), so it asks for none of them again.
    */
   private headStart(files: string[]): void {
-    if (files.length === 0) return;
-    const base = new URL('.', this.url);
-    const urls = files.map((f) => new URL(f, base).href);
+    const urls = files.slice(0, this.opts.concurrency).map((f) => cubeFileUrl(f, this.url));
+    if (urls.length === 0) return;
     this.send({ type: 'head-start', urls });
-    const once = { ...this.opts, retries: 0 };
-    this.handOvers = urls.length;
-    const handedOver = (): void => {
-      if (--this.handOvers === 0) this.fire('handed-over', undefined);
-    };
-    for (const url of urls) {
-      fetchBytes(url, once).then(
-        (body) => this.worker.postMessage({ type: 'head-start-body', url, body } satisfies ToWorker, [body]),
-        () => this.send({ type: 'head-start-body', url, body: null }),
-      ).finally(handedOver);
-    }
+    this.headStarts = new HeadStartFetches(
+      urls,
+      this.opts,
+      (url, body) => this.worker.postMessage({ type: 'head-start-body', url, body } satisfies ToWorker, body ? [body] : []),
+      () => this.fire('handed-over', undefined),
+    );
   }
 
   /** The map still fetches some of the first view's chunks for the worker (headStart). */
   get handingOver(): boolean {
-    return this.handOvers > 0;
+    return this.headStarts?.pending ?? false;
   }
 
   /** The chunk went to the GPU. */
@@ -145,6 +139,7 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
 
   destroy(): void {
     this.destroyed = true;
+    this.headStarts?.cancelAll();
     this.worker.terminate();
     for (const r of this.requests.values()) r.reject(new Error('the map was removed'));
     this.requests.clear();
@@ -175,6 +170,8 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
         this.fire('needed', msg);
         break;
       case 'status':
+        // A file the worker left behind (its view moved on) is not fetched for it any more.
+        if (msg.status === 'not-requested') this.headStarts?.cancel(cubeFileUrl(msg.file, this.url));
         this.statuses.set(msg.file, msg.status);
         this.fire('status', { file: msg.file, status: msg.status });
         break;

@@ -12,7 +12,7 @@ export interface RetryOptions {
   /** Told the URL of every body received whole (the worker lists them for offline caching; the scheduler frees the request's place). */
   onLoaded?: (url: string) => void;
   /** Bodies fetched elsewhere for this worker (head-start.ts): a URL among them is not asked for again. */
-  headStart?: Pick<HeadStart, 'take'>;
+  headStart?: Pick<HeadStart, 'take' | 'giveBack'>;
 }
 
 export type FetchFailureKind = 'http' | 'network' | 'abort';
@@ -66,7 +66,14 @@ const isAbort = (err: unknown): boolean => err instanceof Error && err.name === 
 export async function fetchBytes(url: string, opts: RetryOptions, signal?: AbortSignal): Promise<ArrayBuffer> {
   const early = opts.headStart?.take(url);
   if (early) {
-    const body = await untilAborted(early, url, signal);
+    let body: ArrayBuffer | null;
+    try {
+      body = await untilAborted(early, url, signal);
+    } catch (err) {
+      // Still coming: a later request for the URL waits for it, rather than asking again.
+      opts.headStart?.giveBack(url, early);
+      throw err;
+    }
     if (body) {
       opts.onLoaded?.(url);
       return body;
@@ -108,6 +115,6 @@ export async function fetchJson(url: string, opts: RetryOptions, signal?: AbortS
 }
 
 /** A body as JSON, gunzipped first when it is still gzip. */
-export async function jsonOf(body: ArrayBuffer): Promise<unknown> {
+async function jsonOf(body: ArrayBuffer): Promise<unknown> {
   return JSON.parse(new TextDecoder().decode(await gunzipIfNeeded(body))) as unknown;
 }

@@ -2,7 +2,7 @@
 // "Floor chunks"): one rule for the worker's scheduler and for the map's head start on the
 // first view (ChunkSource), which fetches the floor chunks on screen before the worker runs.
 import type { ChunkLeaf, CubeIndex, InnerNode } from '../../../format/cube-index.js';
-import { boxMeets, chunkPriority, queryIndex, type QueryBox, type QueryResult } from '../../../format/index-query.js';
+import { boxMeets, queryIndex, viewPriority, type QueryBox, type QueryResult } from '../../../format/index-query.js';
 import type { ViewRequest } from './worker-protocol.js';
 
 /**
@@ -29,12 +29,6 @@ export function floorChoice(floor: QueryResult | null, cube: QueryResult, toFetc
   return cube.missing.length === 0 && toFetch(cube.leaves) < floorBytes ? null : floor;
 }
 
-/** Nearest to the centre and base z of a view with ground box `box` first. */
-export function leafPriority(leaf: { bbox: ChunkLeaf['bbox'] }, box: [number, number, number, number], v: { centerX: number; centerY: number; z: number; zMin: number; zMax: number }): number {
-  const halfDiag = Math.hypot(box[2] - box[0], box[3] - box[1]) / 2;
-  return chunkPriority(leaf.bbox, v.centerX, v.centerY, v.z, halfDiag, Math.max(1, v.zMax - v.zMin));
-}
-
 /**
  * The files of the floor chunks a first view shows on screen, nearest first, as the scheduler
  * would choose them with nothing fetched yet and only index.json at hand; none when the view
@@ -49,7 +43,7 @@ export function firstFloorFiles(index: CubeIndex, view: ViewRequest): string[] {
   const shown = floorChoice(floor, cube, onScreenBytes);
   if (!shown) return [];
   return shown.leaves
-    .map((leaf) => ({ file: leaf.file, priority: leafPriority(leaf, view.visible, view) }))
+    .map((leaf) => ({ file: leaf.file, priority: viewPriority(leaf.bbox, view.visible, view) }))
     .sort((a, b) => a.priority - b.priority)
     .map((l) => l.file);
 }

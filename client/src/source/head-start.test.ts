@@ -1,13 +1,14 @@
 // The worker's side of the map's head start on the first view (head-start.ts, through
 // fetchBytes): a body the map fetched is used without asking the network, once; one the map
 // could not fetch is asked for by the worker itself, with its retries; an abort while waiting
-// ends the request at once. Against a fake fetch.
+// ends the request at once and keeps the body for the next. The map's half: each file once,
+// each body (or null) posted, a file the worker left behind cancelled. Against a fake fetch.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import { eventually, settle, settled } from '../../../testing/event-loop.js';
 import { body, installFakeFetch, status } from '../../../testing/fake-fetch.js';
 import { FetchFailure, fetchBytes, type RetryOptions } from './fetch-retry.js';
-import { HeadStart } from './head-start.js';
+import { HeadStart, HeadStartFetches } from './head-start.js';
 
 const A = 'https://maps.test/cube/b-a.bin', B = 'https://maps.test/cube/b-b.bin';
 const bytesOf = (b: ArrayBuffer): number[] => [...new Uint8Array(b)];
@@ -46,16 +47,50 @@ describe('the head start on the first view', () => {
     assert.equal(fetch.requests.length, 2, 'a 503, then the body');
   });
 
-  test('aborted while the map still fetches it: an abort at once, and nothing asked of the network', async (t) => {
+  test('aborted while the map still fetches it: an abort at once, nothing asked of the network, and the body kept for the next request', async (t) => {
     const fetch = installFakeFetch(t, () => body(new Uint8Array([1])));
     const headStart = new HeadStart();
     headStart.expect([A]);
     const controller = new AbortController();
-    const p = fetchBytes(A, { retries: 3, backoffMs: 0, maxBackoffMs: 0, headStart }, controller.signal);
+    const opts: RetryOptions = { retries: 3, backoffMs: 0, maxBackoffMs: 0, headStart };
+    const p = fetchBytes(A, opts, controller.signal);
     controller.abort();
     await assert.rejects(settled(p, 'the abort'), (err: unknown) => err instanceof FetchFailure && err.kind === 'abort');
-    headStart.arrived(A, new Uint8Array([1]).buffer); // late: no one waits
-    await eventually(() => true, 'a turn');
+    headStart.arrived(A, new Uint8Array([7]).buffer);
+    assert.deepEqual(bytesOf(await fetchBytes(A, opts)), [7], 'the view came back: the body the map fetched');
     assert.equal(fetch.requests.length, 0);
+  });
+});
+
+describe('the map\'s fetches for the worker', () => {
+  test('each file once, without retries; each body posted as it comes, null for one that failed; done once all are', async (t) => {
+    const fetch = installFakeFetch(t, (url) => (url === B ? status(503) : 'hold'));
+    const posted: [string, number[] | null][] = [];
+    let done = 0;
+    const fetches = new HeadStartFetches([A, B], { retries: 5, backoffMs: 0, maxBackoffMs: 0 }, (url, b) => posted.push([url, b && bytesOf(b)]), () => done++);
+    await eventually(() => posted.length === 1, 'B posted');
+    assert.deepEqual(posted, [[B, null]], 'B failed, not retried: the worker fetches it itself');
+    assert.equal(fetches.pending, true);
+    assert.equal(done, 0);
+    fetch.open()[0]!.answer(body(new Uint8Array([3])));
+    await eventually(() => done === 1, 'done');
+    assert.deepEqual(posted, [[B, null], [A, [3]]]);
+    assert.equal(fetches.pending, false);
+    assert.deepEqual(fetch.urls(), [A, B]);
+  });
+
+  test('a file the worker left behind is cancelled: its request aborted, null posted', async (t) => {
+    const fetch = installFakeFetch(t, () => 'hold');
+    const posted: [string, ArrayBuffer | null][] = [];
+    let done = 0;
+    const fetches = new HeadStartFetches([A, B], { retries: 0, backoffMs: 0, maxBackoffMs: 0 }, (url, b) => posted.push([url, b]), () => done++);
+    await eventually(() => fetch.open().length === 2, 'both asked for');
+    fetches.cancel(A);
+    assert.equal(fetch.requests[0]!.signal?.aborted, true);
+    await eventually(() => posted.length === 1, 'A posted');
+    assert.deepEqual(posted, [[A, null]]);
+    fetches.cancelAll();
+    await eventually(() => done === 1, 'done');
+    assert.deepEqual(posted, [[A, null], [B, null]]);
   });
 });

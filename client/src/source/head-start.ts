@@ -1,6 +1,54 @@
-// The bodies the map fetches for the worker before the worker runs: the floor chunks its first
-// view shows (ChunkSource's head start; on a slow network they come while the worker's script
-// still loads). A request for one of them waits for that body instead of asking again.
+// The head start on the first view: the map fetches the floor chunks its first view shows for
+// the worker, while the worker's script still loads (on a slow network it comes a round trip and
+// more after index.json, docs/CLIENT.md "Chunk loading"), and hands the bodies over. Both
+// halves of the exchange are here: the map's (HeadStartFetches) and the worker's (HeadStart),
+// which a request for one of those files waits on instead of asking the network again.
+import { fetchBytes, type RetryOptions } from './fetch-retry.js';
+
+/**
+ * The map's half: each file fetched once, at once (the worker, which retries, fetches one that
+ * fails itself), each body posted to the worker as it comes (null: its fetch failed or was
+ * cancelled); `done` once every one has been posted.
+ */
+export class HeadStartFetches {
+  private readonly controllers = new Map<string, AbortController>();
+
+  constructor(urls: readonly string[], retry: RetryOptions, post: (url: string, body: ArrayBuffer | null) => void, done: () => void) {
+    const once = { ...retry, retries: 0 };
+    for (const url of urls) {
+      const controller = new AbortController();
+      this.controllers.set(url, controller);
+      fetchBytes(url, once, controller.signal).then(
+        (body) => post(url, body),
+        () => post(url, null),
+      ).finally(() => {
+        this.controllers.delete(url);
+        if (this.controllers.size === 0) done();
+      });
+    }
+  }
+
+  /** Some body has not been posted yet. */
+  get pending(): boolean {
+    return this.controllers.size > 0;
+  }
+
+  /** The worker left the file behind (its view moved on): its fetch stops. */
+  cancel(url: string): void {
+    this.controllers.get(url)?.abort();
+  }
+
+  /** The map was removed. */
+  cancelAll(): void {
+    for (const c of this.controllers.values()) c.abort();
+  }
+}
+
+/**
+ * The worker's half: the bodies the map fetches for it, by URL. The map fetches at most as many
+ * as the worker may have requests at once (its `concurrency`), so those never taken (the first
+ * view moved on before the worker saw it) hold little.
+ */
 export class HeadStart {
   /** By URL: the body to come, until a request takes it. */
   private readonly bodies = new Map<string, Promise<ArrayBuffer | null>>();
@@ -26,5 +74,10 @@ export class HeadStart {
     const body = this.bodies.get(url);
     this.bodies.delete(url);
     return body;
+  }
+
+  /** A body taken by a request that was aborted before it came: the next request for the URL takes it. */
+  giveBack(url: string, body: Promise<ArrayBuffer | null>): void {
+    if (!this.bodies.has(url)) this.bodies.set(url, body);
   }
 }

@@ -4,6 +4,7 @@ import { parseSubIndex, type CubeIndex, type InnerNode } from '../../../format/c
 import { queryIndex, type QueryBox, type QueryResult } from '../../../format/index-query.js';
 import { fetchJson, type RetryOptions } from './fetch-retry.js';
 import { floorQuery } from './floor-choice.js';
+import { cubeFileUrl } from './index-url.js';
 import { readIndex } from './read-index.js';
 
 export class IndexTree {
@@ -12,7 +13,7 @@ export class IndexTree {
 
   private constructor(
     readonly index: CubeIndex,
-    private readonly baseUrl: string,
+    private readonly indexUrl: string,
     private readonly retry: RetryOptions,
   ) {}
 
@@ -22,11 +23,11 @@ export class IndexTree {
 
   /** The index of `indexUrl`, read elsewhere (the map reads it while the worker starts, ChunkSource). */
   static of(index: CubeIndex, indexUrl: string, retry: RetryOptions): IndexTree {
-    return new IndexTree(index, new URL('.', indexUrl).href, retry);
+    return new IndexTree(index, indexUrl, retry);
   }
 
   url(file: string): string {
-    return new URL(file, this.baseUrl).href;
+    return cubeFileUrl(file, this.indexUrl);
   }
 
   query(q: QueryBox): QueryResult {
