@@ -173,6 +173,11 @@ export class ChunkScheduler {
     return queryLineChunks(this.tree.index.lines ?? [], q);
   }
 
+  /** The chunks the view (with its margin and the views ahead) needs. */
+  get neededFiles(): ReadonlySet<string> {
+    return this.needed;
+  }
+
   uploaded(file: string): void {
     const e = this.entries.get(file);
     if (!e || e.status !== 'received') return;

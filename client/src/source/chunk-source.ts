@@ -82,11 +82,13 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
   /**
    * The first view's floor chunks, fetched here and handed to the worker (head-start.ts): on a
    * slow network its script (33 kB gzip) comes a round trip and more after index.json, and these
-   * need not wait for it. As many as the worker may request at once, nearest first; it is told
-   * before the view (messages keep their order), so it asks for none of them again.
+   * need not wait for it. All of them, nearest first: the browser queues them as the worker
+   * would, and nlcd_zion's first complete map on Slow 4G came in 2,492 ms, against 2,560 with the
+   * first six alone (medians of 7). The worker is told before the view (messages keep their
+   * order), so it asks for none of them again.
    */
   private headStart(files: string[]): void {
-    const urls = files.slice(0, this.opts.concurrency).map((f) => cubeFileUrl(f, this.url));
+    const urls = files.map((f) => cubeFileUrl(f, this.url));
     if (urls.length === 0) return;
     this.send({ type: 'head-start', urls });
     this.headStarts = new HeadStartFetches(

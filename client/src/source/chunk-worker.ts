@@ -34,6 +34,19 @@ let indexCame: (msg: Extract<ToWorker, { type: 'index' | 'index-unavailable' }>)
 // Every file received whole, in order: what a service worker must cache to show these views offline.
 const loadedUrls = new Set<string>();
 const headStart = new HeadStart();
+let tree: IndexTree | null = null;
+
+/** A view to the scheduler (kept until there is one); the bodies the map fetched for a view left behind are let go. */
+function show(view: ViewRequest): void {
+  const t = tree;
+  if (!scheduler || !t) {
+    pendingView = view;
+    return;
+  }
+  scheduler.setView(view);
+  const needed = new Set([...scheduler.neededFiles].map((f) => t.url(f)));
+  headStart.keepOnly((url) => needed.has(url));
+}
 
 scope.addEventListener('message', (ev) => {
   const msg = ev.data;
@@ -44,11 +57,13 @@ scope.addEventListener('message', (ev) => {
         indexCame = (m) => {
           if (m.type === 'index-unavailable') return reject(new Error(m.error.message));
           options.onLoaded(msg.url);
-          const tree = IndexTree.of(m.index, msg.url, options);
-          scheduler = new ChunkScheduler(tree, options, post);
-          pages = new FeaturePages(tree.index.meta.faces, tree.index.meta.attributes, (f) => tree.url(f), options);
-          if (pendingView) scheduler.setView(pendingView);
+          const t = IndexTree.of(m.index, msg.url, options);
+          tree = t;
+          scheduler = new ChunkScheduler(t, options, post);
+          pages = new FeaturePages(t.index.meta.faces, t.index.meta.attributes, (f) => t.url(f), options);
+          const waiting = pendingView;
           pendingView = null;
+          if (waiting) show(waiting);
           resolve();
         };
       });
@@ -66,8 +81,7 @@ scope.addEventListener('message', (ev) => {
       headStart.arrived(msg.url, msg.body);
       break;
     case 'view':
-      if (scheduler) scheduler.setView(msg.view);
-      else pendingView = msg.view;
+      show(msg.view);
       break;
     case 'uploaded':
       scheduler?.uploaded(msg.file);

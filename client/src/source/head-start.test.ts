@@ -60,6 +60,19 @@ describe('the head start on the first view', () => {
     assert.deepEqual(bytesOf(await fetchBytes(A, opts)), [7], 'the view came back: the body the map fetched');
     assert.equal(fetch.requests.length, 0);
   });
+
+  test('a body the worker\'s view no longer needs is let go: a later request asks the network', async (t) => {
+    const fetch = installFakeFetch(t, () => body(new Uint8Array([8])));
+    const headStart = new HeadStart();
+    headStart.expect([A, B]);
+    headStart.keepOnly((url) => url === A);
+    headStart.arrived(B, new Uint8Array([1]).buffer);
+    headStart.arrived(A, new Uint8Array([2]).buffer);
+    const opts: RetryOptions = { retries: 0, backoffMs: 0, maxBackoffMs: 0, headStart };
+    assert.deepEqual(bytesOf(await fetchBytes(A, opts)), [2]);
+    assert.deepEqual(bytesOf(await fetchBytes(B, opts)), [8]);
+    assert.deepEqual(fetch.urls(), [B]);
+  });
 });
 
 describe('the map\'s fetches for the worker', () => {

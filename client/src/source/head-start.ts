@@ -45,9 +45,8 @@ export class HeadStartFetches {
 }
 
 /**
- * The worker's half: the bodies the map fetches for it, by URL. The map fetches at most as many
- * as the worker may have requests at once (its `concurrency`), so those never taken (the first
- * view moved on before the worker saw it) hold little.
+ * The worker's half: the bodies the map fetches for it, by URL, until a request takes them or
+ * the worker's view no longer needs them (keepOnly).
  */
 export class HeadStart {
   /** By URL: the body to come, until a request takes it. */
@@ -74,6 +73,11 @@ export class HeadStart {
     const body = this.bodies.get(url);
     this.bodies.delete(url);
     return body;
+  }
+
+  /** Forgets the bodies not taken yet whose URL `keep` does not keep (the view that wanted them moved on). */
+  keepOnly(keep: (url: string) => boolean): void {
+    for (const url of [...this.bodies.keys()]) if (!keep(url)) this.bodies.delete(url);
   }
 
   /** A body taken by a request that was aborted before it came: the next request for the URL takes it. */
