@@ -6,6 +6,7 @@
 // are imported only then: the map reads index.json on its main thread, and its bundle (which
 // loads them as a file of their own) need not carry them for the few browsers that lack
 // DecompressionStream.
+
 /** Deflate's largest expansion: 258 bytes from one code of 2 bits, about 1032 to 1. */
 const MAX_DEFLATE_RATIO = 1032;
 /** The smallest gzip member: a 10-byte header, an empty deflate block of 2 bytes, the 8-byte trailer. */
