@@ -198,10 +198,12 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     assert.ok(contents.floorTop > 0 && contents.floorLeaves.length > 1, `${contents.floorLeaves.length} floor chunks below z ${contents.floorTop}`);
   });
 
+  /** The worker's script, as the test page's build names it. */
+  const worker = /^\/assets\/chunk-worker-[\w-]+\.js$/;
+
   test('at the floor the first view\'s floor chunks are asked for while the worker\'s script is still coming, each once, and the map equals the CPU slicer', async () => {
     // The worker's script comes a second late, as its 33 kB gzip would on a slow phone network:
     // the map reads index.json and fetches the first view's floor chunks for the worker meanwhile.
-    const worker = /^\/assets\/chunk-worker-[\w-]+\.js$/;
     server.faults.appDelayMs = (path) => (worker.test(path) ? 1000 : 0);
     const [view] = pickPair((a) => floorOnScreen(a).length >= 2, (a) => [a]);
     const p = await open(view, 0);
@@ -217,8 +219,28 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     await assertMatchesSlicer(p, view, 0, 'at the floor, its chunks fetched by the map');
   });
 
+  test('above the floor the sub-index files the first view reaches are asked for while the worker\'s script is still coming, each once', async () => {
+    server.faults.appDelayMs = (path) => (worker.test(path) ? 1000 : 0);
+    const z = 30;
+    assert.ok(z > contents.floorTop, `z ${z} above the floor's top ${contents.floorTop}`);
+    const reachedAtRoot = (a: Bbox): string[] => {
+      const q = { ground: growBbox(viewBbox(fitBbox(a, W, H)), MARGIN), zMin: z, zMax: z };
+      return contents.root.children.flatMap((n) => ('ref' in n && boxMeets(n.bbox, q) ? [n.ref] : []));
+    };
+    const [view] = pickPair((a) => reachedAtRoot(a).length >= 1, (a) => [a]);
+    const p = await open(view, z);
+    assert.equal(await waitIdle(p.page), true);
+    const script = server.log.slice(logStart).find((e) => worker.test(e.path));
+    assert.ok(script && script.outcome === 200, 'the worker\'s script was served');
+    for (const ref of reachedAtRoot(view)) {
+      const asked = server.log.slice(logStart).filter((e) => e.path === `/cube/${ref}`);
+      assert.equal(asked.length, 1, `${ref} fetched once`);
+      assert.ok(asked[0]!.start < script.end - 500, `${ref} asked for ${asked[0]!.start - script.start} ms after the worker's script, which came after ${script.end - script.start} ms`);
+    }
+    await assertMatchesSlicer(p, view, z, 'above the floor, its sub-index files fetched by the map');
+  });
+
   test('a floor chunk the map could not fetch for the worker (a 503) the worker fetches itself, and the map comes complete', async () => {
-    const worker = /^\/assets\/chunk-worker-[\w-]+\.js$/;
     server.faults.appDelayMs = (path) => (worker.test(path) ? 500 : 0);
     const [view] = pickPair((a) => floorOnScreen(a).length >= 2, (a) => [a]);
     const failing = floorOnScreen(view)[0]!.file;

@@ -11,7 +11,7 @@ import { eventually, settle } from '../../../testing/event-loop.js';
 import { installFakeFetch, status, type Answer, type FakeFetch } from '../../../testing/fake-fetch.js';
 import { handMadeCube, serveFiles, squareChunk, twoLevelCube, type ChunkSpec } from '../../../testing/hand-made-cube.js';
 import { ChunkScheduler } from './chunk-scheduler.js';
-import { firstFloorFiles } from './floor-choice.js';
+import { firstViewFiles } from './floor-choice.js';
 import { IndexTree } from './index-tree.js';
 import type { AheadView, ChunkStatus, FromWorker, NeededChunks, SourceErrorInfo, SourceOptions, ViewRequest } from './worker-protocol.js';
 
@@ -338,7 +338,7 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
     assert.equal(h.fetched().length, 4, 'nothing fetched twice');
   });
 
-  test('the map\'s head start on a first view names the floor chunks the scheduler shows, in its order; none at the floor\'s top', async (t) => {
+  test('the map\'s head start on a first view names the floor chunks the scheduler shows, in its order; above the floor, the sub-index file', async (t) => {
     // Three floor chunks along x; the view over x 12..30, its centre at 25: b-2 under it, then b-1.
     const floor = { top: 0.5, chunks: [0, 1, 2].map((i): ChunkSpec => ({ file: `b-${i}.bin`, bbox: [10 * i, 0, 0, 10 * i + 10, 10, 0.5] })) };
     const { files } = handMadeCube(row(3), floor, 'i-cube.json');
@@ -347,15 +347,15 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
     const h = await harness(t, files, { concurrency: 1 }, undefined, true);
     h.scheduler.setView(first);
     await eventually(() => h.received().length === 2, 'the floor chunks on screen');
-    assert.deepEqual(firstFloorFiles(index, first), ['b-2.bin', 'b-1.bin']);
+    assert.deepEqual(firstViewFiles(index, first), ['b-2.bin', 'b-1.bin']);
     assert.deepEqual(h.fetched().slice(0, 2), ['b-2.bin', 'b-1.bin'], 'the scheduler\'s first requests');
     assert.deepEqual(sorted(h.needed()[0]!.visible), ['b-1.bin', 'b-2.bin']);
     // The cube's chunks under the view come after them, as the margin: let them end here.
     await eventually(() => h.received().length === 4, 'the margin');
     await settle();
-    assert.deepEqual(firstFloorFiles(index, { ...first, zMax: 0.5 }), [], 'a view reaching the floor\'s top shows the cube\'s chunks');
+    assert.deepEqual(firstViewFiles(index, { ...first, zMax: 0.5 }), ['i-cube.json'], 'a view reaching the floor\'s top: the sub-index file that lists the cube\'s chunks');
     const noFloor = parseIndex(JSON.parse(new TextDecoder().decode(handMadeCube(row(3)).files.get('index.json'))));
-    assert.deepEqual(firstFloorFiles(noFloor, first), [], 'a cube without floor chunks');
+    assert.deepEqual(firstViewFiles(noFloor, first), ['c-2.bin', 'c-1.bin'], 'a cube without floor chunks: its chunks on screen, nearest first');
   });
 
   test('a margin of the cube\'s chunks waits for the floor chunk on screen', async (t) => {

@@ -7,7 +7,7 @@ import { createChunkWorker } from './create-worker.js';
 import { indexError } from './index-error.js';
 import { cubeFileUrl, indexUrl } from './index-url.js';
 import { HeadStartFetches } from './head-start.js';
-import { firstFloorFiles } from './floor-choice.js';
+import { firstViewFiles } from './floor-choice.js';
 import { readIndex } from './read-index.js';
 import type { ChunkStatus, Payload, FeatureInfo, FromWorker, NeededChunks, SourceErrorInfo, SourceOptions, ToWorker, ViewRequest } from './worker-protocol.js';
 
@@ -74,17 +74,18 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
   setView(view: ViewRequest): void {
     if (this.index && !this.headStarted) {
       this.headStarted = true;
-      this.headStart(firstFloorFiles(this.index, view));
+      this.headStart(firstViewFiles(this.index, view));
     }
     this.send({ type: 'view', view });
   }
 
   /**
-   * The first view's floor chunks, fetched here and handed to the worker (head-start.ts): on a
-   * slow network its script (33 kB gzip) comes a round trip and more after index.json, and these
-   * need not wait for it. All of them, nearest first: the browser queues them as the worker
-   * would, and nlcd_zion's first complete map on Slow 4G came in 2,492 ms, against 2,560 with the
-   * first six alone (medians of 7). The worker is told before the view (messages keep their
+   * What the first view asks for first (its floor chunks; above the floor, the sub-index files
+   * its query reaches), fetched here and handed to the worker (head-start.ts): on a slow network
+   * its script (33 kB gzip) comes a round trip and more after index.json, and these need not
+   * wait for it. All of them at once: the browser queues them as the worker would, and
+   * nlcd_zion's first complete map on Slow 4G came in 2,492 ms, against 2,560 with its first six
+   * floor chunks alone (medians of 7). The worker is told before the view (messages keep their
    * order), so it asks for none of them again.
    */
   private headStart(files: string[]): void {

@@ -1,6 +1,6 @@
 // Below the floor's top, whether a view shows the floor chunks or the cube's (docs/FORMAT.md,
 // "Floor chunks"): one rule for the worker's scheduler and for the map's head start on the
-// first view (ChunkSource), which fetches the floor chunks on screen before the worker runs.
+// first view (ChunkSource), which fetches what that view needs first before the worker runs.
 import type { ChunkLeaf, CubeIndex, InnerNode } from '../../../format/cube-index.js';
 import { boxMeets, queryIndex, viewPriority, type QueryBox, type QueryResult } from '../../../format/index-query.js';
 import type { ViewRequest } from './worker-protocol.js';
@@ -30,20 +30,23 @@ export function floorChoice(floor: QueryResult | null, cube: QueryResult, toFetc
 }
 
 /**
- * The files of the floor chunks a first view shows on screen, nearest first, as the scheduler
- * would choose them with nothing fetched yet and only index.json at hand; none when the view
- * shows the cube's chunks.
+ * The files a first view asks for first, as the scheduler would choose them with nothing fetched
+ * yet and only index.json at hand: the floor chunks it shows on screen, nearest first; above the
+ * floor, the sub-index files its query reaches (the build keeps the cube's tree in them when
+ * there are floor chunks), then the cube's chunks on screen that index.json itself lists.
  */
-export function firstFloorFiles(index: CubeIndex, view: ViewRequest): string[] {
+export function firstViewFiles(index: CubeIndex, view: ViewRequest): string[] {
   const onScreen = { ground: view.visible, zMin: view.zMin, zMax: view.zMax };
   const none = (): undefined => undefined;
   const floor = floorQuery(index, onScreen, none);
   const cube = queryIndex(index.root, { ground: view.margin, zMin: view.zMin, zMax: view.zMax }, none);
   const onScreenBytes = (leaves: readonly ChunkLeaf[]): number => leaves.reduce((sum, l) => sum + (boxMeets(l.bbox, onScreen) ? l.bytes : 0), 0);
   const shown = floorChoice(floor, cube, onScreenBytes);
-  if (!shown) return [];
-  return shown.leaves
-    .map((leaf) => ({ file: leaf.file, priority: viewPriority(leaf.bbox, view.visible, view) }))
-    .sort((a, b) => a.priority - b.priority)
-    .map((l) => l.file);
+  const nearestFirst = (leaves: readonly ChunkLeaf[]): string[] =>
+    leaves
+      .map((leaf) => ({ file: leaf.file, priority: viewPriority(leaf.bbox, view.visible, view) }))
+      .sort((a, b) => a.priority - b.priority)
+      .map((l) => l.file);
+  if (shown) return nearestFirst(shown.leaves);
+  return [...cube.missing, ...nearestFirst(cube.leaves.filter((l) => boxMeets(l.bbox, onScreen)))];
 }
