@@ -58,7 +58,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   afterEach(async () => {
     await checkAndClose(mp);
     mp = null;
-    Object.assign(server.faults, { chunkFailRate: 0, notFound: new Set(), unavailable: new Set(), unavailableOnce: new Set(), delayMs: () => 0, appDelayMs: () => 0, corrupt: new Map(), gzipWithoutEncoding: false });
+    Object.assign(server.faults, { chunkFailRate: 0, notFound: new Set(), unavailable: new Set(), unavailableOnce: new Set(), delayMs: () => 0, appDelayMs: () => 0, appNotFound: () => false, corrupt: new Map(), gzipWithoutEncoding: false });
   });
 
   after(async () => {
@@ -575,6 +575,18 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     const errors = await errorsSeen();
     assert.deepEqual(errors.map((e) => [e.kind, e.status, e.file]), [['http', 503, down.file]]);
     assert.equal(countBy(chunkRequests()).get(down.file), 4, 'the first attempt and 3 retries');
+  });
+
+  test('a worker script that cannot be loaded fails the map with an error that says so, and the map goes idle', async () => {
+    server.faults.appNotFound = (path) => worker.test(path);
+    const [view] = pickPair((a) => floorOnScreen(a).length >= 1, (a) => [a]);
+    const p = await open(view, 0, {}, [/Failed to load resource: the server responded with a status of 404/]);
+    // Polled by time, not by animation frames (which did not see it come here).
+    await p.page.waitForFunction("document.getElementById('info').textContent !== ''", undefined, { polling: 100 });
+    assert.equal((await p.page.textContent('#info')) ?? '', "worker error: the map's worker could not be started");
+    assert.equal(await waitIdle(p.page), false, 'idle, incomplete');
+    const alert = await p.page.textContent('.ssc-load-error');
+    assert.match(alert ?? '', /The map's worker script could not be loaded, so http:\/\/127\.0\.0\.1:\d+\/cube\/index\.json cannot be shown: the script must be served beside vario-map\.js/);
   });
 
   test('a missing index gives an error event', async () => {

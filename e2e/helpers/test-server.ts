@@ -31,6 +31,8 @@ export interface Faults {
   delayMs: (file: string) => number;
   /** Delay before answering a request for the app's own files (path from the site's root, e.g. the worker's script), ms. */
   appDelayMs: (path: string) => number;
+  /** The app's own files answered with 404 (path from the site's root). */
+  appNotFound: (path: string) => boolean;
   /** Cube files whose body is changed before it is sent. */
   corrupt: Map<string, (body: Buffer) => Buffer>;
   /** Chunks are sent as their .gz copy without a Content-Encoding header. */
@@ -68,7 +70,7 @@ export async function startTestServer(opts: { clientDir: string; cubeDir: string
   const clientPort = (await client.listen(0, '127.0.0.1')).port;
   const cubePort = (await cube.listen(0, '127.0.0.1')).port;
   const log: LoggedRequest[] = [];
-  const faults: Faults = { chunkFailRate: 0, seed: 1, notFound: new Set(), unavailable: new Set(), unavailableOnce: new Set(), delayMs: () => 0, appDelayMs: () => 0, corrupt: new Map(), gzipWithoutEncoding: false };
+  const faults: Faults = { chunkFailRate: 0, seed: 1, notFound: new Set(), unavailable: new Set(), unavailableOnce: new Set(), delayMs: () => 0, appDelayMs: () => 0, appNotFound: () => false, corrupt: new Map(), gzipWithoutEncoding: false };
   let random = mulberry32(faults.seed);
   let seedUsed = faults.seed;
 
@@ -116,6 +118,12 @@ export async function startTestServer(opts: { clientDir: string; cubeDir: string
       if (!res.writableFinished && entry.outcome === 'aborted') entry.end = Date.now();
     });
     if (!url.pathname.startsWith('/cube/')) {
+      if (faults.appNotFound(url.pathname)) {
+        entry.outcome = 404;
+        entry.end = Date.now();
+        res.writeHead(404, { 'content-type': 'text/plain', 'cache-control': 'no-store' }).end('not found');
+        return;
+      }
       const delay = faults.appDelayMs(url.pathname);
       if (delay > 0) void sleep(delay).then(() => res.destroyed || req.destroyed || forward(req, res, clientPort, url.pathname + url.search, entry));
       else forward(req, res, clientPort, url.pathname + url.search, entry);

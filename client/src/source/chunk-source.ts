@@ -41,13 +41,26 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
   private headStarts: HeadStartFetches | null = null;
   /** The map was removed: an index that comes late is not taken. */
   private destroyed = false;
+  /** The worker could not be started: nothing is fetched for it. */
+  private workerGone = false;
 
   constructor(url: string, options: Partial<SourceOptions> = {}) {
     super();
     this.url = indexUrl(url, location.href);
     this.worker = createChunkWorker();
     this.worker.addEventListener('message', (ev: MessageEvent<FromWorker>) => this.receive(ev.data));
-    this.worker.addEventListener('error', (ev) => this.fire('error', { kind: 'index', message: `chunk worker failed: ${ev.message}`, url: this.url }));
+    this.worker.addEventListener('error', (ev: Event) => {
+      // A worker whose script could not be had (missing beside the library, or refused by the
+      // page's Content-Security-Policy) fires a plain Event: nothing will be fetched or drawn.
+      // An exception inside a running worker comes as an ErrorEvent with its message.
+      const message = ev instanceof ErrorEvent && ev.message ? ev.message : null;
+      const error: SourceErrorInfo = { kind: 'worker', message: message ? `the map's worker failed: ${message}` : "the map's worker could not be started", url: this.url };
+      this.fire('error', error);
+      if (message !== null) return;
+      this.workerGone = true;
+      this.headStarts?.cancelAll();
+      this.fire('failed', error);
+    });
     this.opts = { ...defaultSourceOptions, ...options };
     this.send({ type: 'init', url: this.url, options: this.opts });
     // index.json is read here while the worker's own script loads, not by the worker after it:
@@ -72,7 +85,7 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
   }
 
   setView(view: ViewRequest): void {
-    if (this.index && !this.headStarted) {
+    if (this.index && !this.headStarted && !this.workerGone) {
       this.headStarted = true;
       this.headStart(firstViewFiles(this.index, view));
     }

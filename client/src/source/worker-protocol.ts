@@ -63,7 +63,8 @@ export type ToWorker =
 
 export interface SourceErrorInfo {
   /** 'style': the `style` option does not fit the cube (the map draws the cube's own). */
-  kind: 'http' | 'network' | 'corrupt' | 'index' | 'style';
+  /** worker: the map's worker could not be started (its url is the cube's index.json). */
+  kind: 'http' | 'network' | 'corrupt' | 'index' | 'style' | 'worker';
   message: string;
   url: string;
   status?: number;

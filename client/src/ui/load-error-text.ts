@@ -1,5 +1,6 @@
 // The words for a cube whose index could not be loaded: the URL and the cause a page's author
-// can act on (a wrong path, a server without CORS, a file that is not a cube).
+// can act on (a wrong path, a server without CORS, a file that is not a cube, a worker script
+// that cannot be loaded).
 import type { SourceErrorInfo } from '../source/worker-protocol.js';
 
 export function loadErrorText(e: SourceErrorInfo): string {
@@ -14,5 +15,7 @@ export function loadErrorText(e: SourceErrorInfo): string {
       return `${e.url} is not a cube (the index.json that ssc build writes): ${e.message}`;
     case 'style':
       return e.message;
+    case 'worker':
+      return `The map's worker script could not be loaded, so ${e.url} cannot be shown: the script must be served beside vario-map.js, and a Content-Security-Policy must allow it (worker-src).`;
   }
 }
