@@ -44,6 +44,8 @@ function show(view: ViewRequest): void {
     return;
   }
   scheduler.setView(view);
+  // Once every body has been taken (after the first view, as a rule) this costs nothing per view.
+  if (!headStart.holding) return;
   const needed = new Set([...scheduler.neededFiles].map((f) => t.url(f)));
   headStart.keepOnly((url) => needed.has(url));
 }

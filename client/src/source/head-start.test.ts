@@ -65,6 +65,7 @@ describe('the head start on the first view', () => {
     const fetch = installFakeFetch(t, () => body(new Uint8Array([8])));
     const headStart = new HeadStart();
     headStart.expect([A, B]);
+    assert.equal(headStart.holding, true);
     headStart.keepOnly((url) => url === A);
     headStart.arrived(B, new Uint8Array([1]).buffer);
     headStart.arrived(A, new Uint8Array([2]).buffer);
@@ -72,6 +73,7 @@ describe('the head start on the first view', () => {
     assert.deepEqual(bytesOf(await fetchBytes(A, opts)), [2]);
     assert.deepEqual(bytesOf(await fetchBytes(B, opts)), [8]);
     assert.deepEqual(fetch.urls(), [B]);
+    assert.equal(headStart.holding, false, 'every body taken or let go');
   });
 });
 

@@ -75,6 +75,11 @@ export class HeadStart {
     return body;
   }
 
+  /** Some body has not been taken yet: only then is there anything for keepOnly to let go. */
+  get holding(): boolean {
+    return this.bodies.size > 0;
+  }
+
   /** Forgets the bodies not taken yet whose URL `keep` does not keep (the view that wanted them moved on). */
   keepOnly(keep: (url: string) => boolean): void {
     for (const url of [...this.bodies.keys()]) if (!keep(url)) this.bodies.delete(url);
