@@ -50,12 +50,12 @@ export class CubeReader {
     return this.query(EVERYWHERE, root);
   }
 
-  /** Synchronous query over what is loaded (after loadAll of the same tree). */
   /** The node of a sub-index file read so far. */
   loadedSub(ref: string): InnerNode | undefined {
     return this.subs.get(ref);
   }
 
+  /** Synchronous query over what is loaded (after loadAll of the same tree). */
   queryLoaded(q: QueryBox, root: InnerNode = this.index.root): ChunkLeaf[] {
     return queryIndex(root, q, (ref) => this.subs.get(ref)).leaves;
   }
