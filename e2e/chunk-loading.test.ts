@@ -25,7 +25,7 @@ import { compareIds, cpuSlice, type BuiltCube, type CubeContents } from './helpe
 import { checkAndClose, setUpTestBed, tearDownTestBed } from './helpers/test-bed.js';
 import { eventually } from '../testing/event-loop.js';
 import { readIds, waitIdle } from './helpers/map-page.js';
-import type { LoggedRequest, TestServer } from './helpers/test-server.js';
+import { noFaults, type LoggedRequest, type TestServer } from './helpers/test-server.js';
 
 const W = 640, H = 480;
 const MARGIN = 0.25; // the map's default prefetch margin
@@ -58,7 +58,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   afterEach(async () => {
     await checkAndClose(mp);
     mp = null;
-    Object.assign(server.faults, { chunkFailRate: 0, notFound: new Set(), unavailable: new Set(), unavailableOnce: new Set(), delayMs: () => 0, appDelayMs: () => 0, appNotFound: () => false, corrupt: new Map(), gzipWithoutEncoding: false });
+    Object.assign(server.faults, noFaults());
   });
 
   after(async () => {

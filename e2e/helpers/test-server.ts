@@ -63,6 +63,11 @@ function mulberry32(seed: number): () => number {
 
 const sleep = (ms: number): Promise<void> => new Promise((r) => setTimeout(r, ms));
 
+/** A server that misbehaves in no way: the faults a test starts from, and goes back to after. */
+export function noFaults(): Faults {
+  return { chunkFailRate: 0, seed: 1, notFound: new Set(), unavailable: new Set(), unavailableOnce: new Set(), delayMs: () => 0, appDelayMs: () => 0, appNotFound: () => false, corrupt: new Map(), gzipWithoutEncoding: false };
+}
+
 export async function startTestServer(opts: { clientDir: string; cubeDir: string }): Promise<TestServer> {
   const errors: unknown[] = [];
   const client: StaticServer = createStaticServer({ root: opts.clientDir, onError: (e) => errors.push(e) });
@@ -70,7 +75,7 @@ export async function startTestServer(opts: { clientDir: string; cubeDir: string
   const clientPort = (await client.listen(0, '127.0.0.1')).port;
   const cubePort = (await cube.listen(0, '127.0.0.1')).port;
   const log: LoggedRequest[] = [];
-  const faults: Faults = { chunkFailRate: 0, seed: 1, notFound: new Set(), unavailable: new Set(), unavailableOnce: new Set(), delayMs: () => 0, appDelayMs: () => 0, appNotFound: () => false, corrupt: new Map(), gzipWithoutEncoding: false };
+  const faults = noFaults();
   let random = mulberry32(faults.seed);
   let seedUsed = faults.seed;
 
@@ -117,13 +122,15 @@ export async function startTestServer(opts: { clientDir: string; cubeDir: string
     res.on('close', () => {
       if (!res.writableFinished && entry.outcome === 'aborted') entry.end = Date.now();
     });
+    /** Answers with an error status, logged. */
+    const refuse = (status: 404 | 503): void => {
+      entry.outcome = status;
+      entry.end = Date.now();
+      res.writeHead(status, { 'content-type': 'text/plain', 'cache-control': 'no-store' });
+      res.end(status === 404 ? '404 not found\n' : '503 try again\n');
+    };
     if (!url.pathname.startsWith('/cube/')) {
-      if (faults.appNotFound(url.pathname)) {
-        entry.outcome = 404;
-        entry.end = Date.now();
-        res.writeHead(404, { 'content-type': 'text/plain', 'cache-control': 'no-store' }).end('not found');
-        return;
-      }
+      if (faults.appNotFound(url.pathname)) return refuse(404);
       const delay = faults.appDelayMs(url.pathname);
       if (delay > 0) void sleep(delay).then(() => res.destroyed || req.destroyed || forward(req, res, clientPort, url.pathname + url.search, entry));
       else forward(req, res, clientPort, url.pathname + url.search, entry);
@@ -134,20 +141,8 @@ export async function startTestServer(opts: { clientDir: string; cubeDir: string
       const delay = faults.delayMs(file);
       if (delay > 0) await sleep(delay);
       if (res.destroyed || req.destroyed) return; // the browser gave up meanwhile
-      if (faults.notFound.has(file)) {
-        entry.outcome = 404;
-        entry.end = Date.now();
-        res.writeHead(404, { 'content-type': 'text/plain', 'cache-control': 'no-store' });
-        res.end('404 not found\n');
-        return;
-      }
-      if (faults.unavailable.has(file) || faults.unavailableOnce.delete(file)) {
-        entry.outcome = 503;
-        entry.end = Date.now();
-        res.writeHead(503, { 'content-type': 'text/plain', 'cache-control': 'no-store' });
-        res.end('503 try again\n');
-        return;
-      }
+      if (faults.notFound.has(file)) return refuse(404);
+      if (faults.unavailable.has(file) || faults.unavailableOnce.delete(file)) return refuse(503);
       if (/^[cb]-[0-9a-f]+\.bin$/.test(file) && faults.chunkFailRate > 0) {
         if (seedUsed !== faults.seed) {
           seedUsed = faults.seed;
@@ -156,10 +151,7 @@ export async function startTestServer(opts: { clientDir: string; cubeDir: string
         const r = random();
         if (r < faults.chunkFailRate) {
           if (r < faults.chunkFailRate / 2) {
-            entry.outcome = 503;
-            entry.end = Date.now();
-            res.writeHead(503, { 'content-type': 'text/plain', 'cache-control': 'no-store' });
-            res.end('503 try again\n');
+            refuse(503);
           } else {
             entry.outcome = 'network';
             entry.end = Date.now();
