@@ -579,12 +579,16 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
 
   test('a worker script that cannot be loaded fails the map with an error that says so, and the map goes idle', async () => {
     server.faults.appNotFound = (path) => worker.test(path);
+    // index.json comes late, so that the worker has failed before it (as it did once in CI).
+    server.faults.delayMs = (file) => (file === 'index.json' ? 500 : 0);
     const [view] = pickPair((a) => floorOnScreen(a).length >= 1, (a) => [a]);
     const p = await open(view, 0, {}, [/Failed to load resource: the server responded with a status of 404/]);
     // Polled by time, not by animation frames (which did not see it come here).
     await p.page.waitForFunction("document.getElementById('info').textContent !== ''", undefined, { polling: 100 });
     assert.equal((await p.page.textContent('#info')) ?? '', "worker error: the map's worker could not be started");
-    assert.equal(await waitIdle(p.page), false, 'idle, incomplete');
+    // whenIdle itself, not waitIdle, which first waits for the map's metadata: when the worker
+    // fails before index.json has come, the map never loads the CRS that 'meta' waits for.
+    assert.equal(await p.page.evaluate(async () => (await map.whenIdle()).complete), false, 'idle, incomplete');
     const alert = await p.page.textContent('.ssc-load-error');
     assert.match(alert ?? '', /The map's worker script could not be loaded, so http:\/\/127\.0\.0\.1:\d+\/cube\/index\.json cannot be shown: the script must be served beside vario-map\.js/);
   });
