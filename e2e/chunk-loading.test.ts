@@ -586,9 +586,10 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     // Polled by time, not by animation frames (which did not see it come here).
     await p.page.waitForFunction("document.getElementById('info').textContent !== ''", undefined, { polling: 100 });
     assert.equal((await p.page.textContent('#info')) ?? '', "worker error: the map's worker could not be started");
-    // whenIdle itself, not waitIdle, which first waits for the map's metadata: when the worker
-    // fails before index.json has come, the map never loads the CRS that 'meta' waits for.
-    assert.equal(await p.page.evaluate(async () => (await map.whenIdle()).complete), false, 'idle, incomplete');
+    // waitIdle waits for the metadata first: it comes although the worker failed before the
+    // index did (the CRS that 'meta' waits for is loaded when no first map will come).
+    assert.equal(await waitIdle(p.page), false, 'idle, incomplete');
+    assert.deepEqual(await p.page.evaluate(() => map.getMetadata()?.extent), contents.meta.extent);
     const alert = await p.page.textContent('.ssc-load-error');
     assert.match(alert ?? '', /The map's worker script could not be loaded, so http:\/\/127\.0\.0\.1:\d+\/cube\/index\.json cannot be shown: the script must be served beside vario-map\.js/);
   });

@@ -641,8 +641,9 @@ export class VarioMap extends Evented<VarioMapEvents> {
         });
     };
     if (this.hash || this.pending.some((p) => p.lngLat)) return start();
-    // Without WebGL2 no first map comes to wait for.
-    if (!this.engine.draws()) {
+    // Without WebGL2, or with a worker that failed before the index came, no first map or idle
+    // comes to wait for.
+    if (!this.engine.draws() || this.engine.hasFailed()) {
       void start();
       return null;
     }

@@ -318,6 +318,11 @@ export class MapEngine extends Evented<EngineEvents> {
     return this.loop !== null;
   }
 
+  /** The source has failed for good (no index, no worker): no first map will come. */
+  hasFailed(): boolean {
+    return this.failed;
+  }
+
   /** Every chunk the view shows is on the GPU: the map is complete. */
   loaded(): boolean {
     return this.loop?.loaded() ?? false;
