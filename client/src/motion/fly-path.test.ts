@@ -1,7 +1,8 @@
 // The flight path: van Wijk and Nuij's formulas, worked out here, not read back.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { flyPath } from './fly-path.js';
+import { interpolateZoom } from 'd3-interpolate';
+import { flyPath, zoomPath } from './fly-path.js';
 import { resolutionAtScale } from '../geometry/view.js';
 
 const close = (a: number, b: number, tol: number, what = ''): void => assert.ok(Math.abs(a - b) <= tol, `${what} ${a} vs ${b}`);
@@ -37,5 +38,26 @@ describe('the flight path (van Wijk and Nuij, rho 1.42)', () => {
     const p = flyPath({ x: 5, y: 5, scale: 1000 }, { x: 5, y: 5, scale: 8000 }, width, mm, 1.42);
     close(p.durationMs(1), (1000 * Math.log(8)) / 1.42, 1e-6);
     close(p.at(0.5).scale, Math.sqrt(8) * 1000, 1e-6, 'geometric in scale');
+  });
+
+  test("a pan with a zoom follows d3-interpolate's interpolateZoom, and so does a zoom in place", () => {
+    // @types/d3-interpolate puts rho() on the interpolator; d3 has it on the factory.
+    const d3 = (interpolateZoom as typeof interpolateZoom & { rho(r: number): typeof interpolateZoom }).rho(1.42);
+    const cases: [number, number, number, number, number, number][] = [
+      [181000, 456900, 230, 183500, 455000, 4100],
+      [0, 0, 5000, -300, 40, 90],
+      [10, 20, 300, 10, 20, 2400],
+    ];
+    for (const [x0, y0, w0, x1, y1, w1] of cases) {
+      const ours = zoomPath(x0, y0, w0, x1, y1, w1, 1.42);
+      const theirs = d3([x0, y0, w0], [x1, y1, w1]);
+      close(ours.length, (theirs.duration * Math.SQRT2) / (1000 * 1.42), 1e-9, 'length');
+      for (let i = 0; i <= 20; i++) {
+        const [x, y, wd] = ours.at(i / 20), [ex, ey, ew] = theirs(i / 20);
+        close(x, ex, 1e-6 * Math.max(1, Math.abs(ex)), `x at ${i / 20}`);
+        close(y, ey, 1e-6 * Math.max(1, Math.abs(ey)), `y at ${i / 20}`);
+        close(wd, ew, 1e-9 * ew, `width at ${i / 20}`);
+      }
+    }
   });
 });
