@@ -29,7 +29,15 @@ export default defineConfig(({ mode }) => {
       copyPublicDir: false,
       // proj4, imported after a cube's index has arrived (geo/crs-transform.ts), is a file of its
       // own beside the worker, named for what it is.
-      rolldownOptions: { output: { chunkFileNames: (c: { moduleIds: string[] }) => (c.moduleIds.some((id) => id.includes('/node_modules/proj4/')) ? 'assets/proj4-[hash].js' : 'assets/[name]-[hash].js') } },
+      // Lowercase hex hashes in the names, as the app's, which servers recognise as immutable
+      // (server/cache-control.ts): a page loaded again takes the worker and proj4 from its cache
+      // without asking.
+      rolldownOptions: {
+        output: {
+          hashCharacters: 'hex',
+          chunkFileNames: (c: { moduleIds: string[] }) => (c.moduleIds.some((id) => id.includes('/node_modules/proj4/')) ? 'assets/proj4-[hash].js' : 'assets/[name]-[hash].js'),
+        },
+      },
       lib: {
         entry,
         name: 'vario',
@@ -40,7 +48,7 @@ export default defineConfig(({ mode }) => {
     },
     // The worker is one file, any lazy import inlined: a page's bundler takes the prebuilt
     // worker over as a single asset and does not follow such an import, which would fail.
-    worker: { format: umd ? 'iife' : 'es', rolldownOptions: { output: { codeSplitting: false } } },
+    worker: { format: umd ? 'iife' : 'es', rolldownOptions: { output: { codeSplitting: false, hashCharacters: 'hex' } } },
     plugins: [
       glslMinifyPlugin(),
       {

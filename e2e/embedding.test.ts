@@ -2,8 +2,11 @@
 // (UMD) build with its inlined worker, and the ES module build with its worker file; and
 // remove(), which must leave no worker, no GPU context and no listener behind.
 import assert from 'node:assert/strict';
+import { readdir } from 'node:fs/promises';
+import path from 'node:path';
 import { describe, test } from 'node:test';
 import type { Page } from 'playwright-core';
+import { CachePolicy, IMMUTABLE } from '../server/cache-control.js';
 import { openMap } from './helpers/browser.js';
 import { lngLatToRd, rdToLngLat } from './helpers/geo.js';
 import { LIB_PAGE_HEAD, useLibSite } from './helpers/lib-site.js';
@@ -137,6 +140,11 @@ describe('the library builds in plain pages (bgt_otterlo_400m)', () => {
     assert.match(urls[0]!, /\/lib\/assets\/chunk-worker-[\w-]+\.js$/);
     assert.ok((await mapShare(page)) > 0.5, 'the map is drawn');
     await wheelZooms(page);
+    // Its files are named by their content in a form the servers know (server/cache-control.ts,
+    // nginx.conf.template), so a browser keeps them without asking again.
+    const files = (await readdir(path.join(bed.site.dir, 'lib/assets'))).filter((f) => f.endsWith('.js'));
+    assert.ok(files.length >= 3, `the worker, proj4 and the gzip fallback: ${files}`);
+    for (const f of files) assert.equal(new CachePolicy().headerFor(f), IMMUTABLE, f);
   });
 
   describe('proj4 is fetched once the index is in, not with the library', () => {
