@@ -33,6 +33,10 @@ export default defineConfig(({ mode }) => {
       // (server/cache-control.ts): a page loaded again takes the worker and proj4 from its cache
       // without asking.
       rolldownOptions: {
+        // The lazily loaded modules (proj4, a GeoJSON layer's geometry) share a few small ones
+        // with the rest: those stay in vario-map.js, which may then export them to those files
+        // too, instead of going into a file of their own that vario-map.js would wait for.
+        preserveEntrySignatures: 'allow-extension',
         output: {
           hashCharacters: 'hex',
           chunkFileNames: (c: { moduleIds: string[] }) => (c.moduleIds.some((id) => id.includes('/node_modules/proj4/')) ? 'assets/proj4-[hash].js' : 'assets/[name]-[hash].js'),

@@ -147,6 +147,29 @@ describe('the library builds in plain pages (bgt_otterlo_400m)', () => {
     for (const f of files) assert.equal(new CachePolicy().headerFor(f), IMMUTABLE, f);
   });
 
+  test("the ES module build fetches a GeoJSON layer's code with the first layer, and the map is idle only once that layer is drawn", async () => {
+    const { page } = await open('module.html');
+    await idle(page);
+    const geometryFiles = (): string[] => bed.site.server.log.filter((e) => /^\/lib\/assets\/layer-geometry-[0-9a-f]+\.js$/.test(e.path)).map((e) => e.path);
+    assert.deepEqual(geometryFiles(), [], 'a map without layers does not fetch it');
+    // The file comes late, so that the map would have drawn and gone idle without the layer.
+    bed.site.server.faults.appDelayMs = (file) => (file.includes('/layer-geometry-') ? 500 : 0);
+    const magenta = await page.evaluate(async () => {
+      const w = globalThis as unknown as VarioWindow & { location: { href: string } };
+      const { GeoJsonLayer } = (await import(new URL('lib/vario-map.js', w.location.href).href)) as { GeoJsonLayer: new (o: object) => { addTo(m: unknown): unknown } };
+      // A square over the middle of the view.
+      const ring = ([[200, 150], [440, 150], [440, 330], [200, 330], [200, 150]] as [number, number][]).map((p) => {
+        const ll = w.map.unproject(p);
+        return [ll.lng, ll.lat];
+      });
+      new GeoJsonLayer({ data: { type: 'Polygon', coordinates: [ring] }, paint: { fillColor: '#ff00ff', fillOpacity: 1, lineWidth: 0 } }).addTo(w.map);
+      return (await w.map.whenIdle()).complete;
+    }).finally(() => (bed.site.server.faults.appDelayMs = () => 0));
+    assert.equal(magenta, true);
+    assert.deepEqual(pixel(await screenshot(page), 320, 240), hexColour('#ff00ff'), 'drawn by the time the map is idle');
+    assert.equal(geometryFiles().length, 1, `fetched once: ${geometryFiles()}`);
+  });
+
   describe('proj4 is fetched once the index is in, not with the library', () => {
     type Noted = { type: 'complete' | 'meta' | 'load' | 'jump complete'; at: number; metadata: boolean; lngLat: [number, number] | string };
 

@@ -86,6 +86,8 @@ export class FrameLoop {
   private partialTimer: ReturnType<typeof setTimeout> | 0 = 0;
   private blendingWasOn = false;
   private idleFired = false;
+  /** Things still coming that the map waits for before it is idle (holdIdle). */
+  private holds = 0;
   /** The chunks the image on screen was drawn from, and the view it shows. */
   private shown: { seq: number; frame: number; files: Set<string> } | null = null;
   /** The last view reported complete. */
@@ -140,6 +142,17 @@ export class FrameLoop {
   overlaysChanged(): void {
     this.overlaysDue = true;
     this.schedule();
+  }
+
+  /** Something the map is to show is still coming (an overlay's geometry): no 'idle' before it has. */
+  holdIdle(coming: Promise<void>): void {
+    this.holds++;
+    this.idleFired = false;
+    const done = (): void => {
+      this.holds--;
+      this.schedule();
+    };
+    coming.then(done, done);
   }
 
   /** The GPU lost its chunks (a lost context): the map is not idle until they are back. */
@@ -314,7 +327,7 @@ export class FrameLoop {
     const accumulating = complete && this.accumulated < this.settings.supersampling && !blendingToEnd;
     if (this.residency.hasPending || accumulating || blendingToEnd) {
       this.schedule();
-    } else if (!this.idleFired && this.residency.settled(this.viewSeq)) {
+    } else if (!this.idleFired && this.holds === 0 && this.residency.settled(this.viewSeq)) {
       // Settled: everything is drawn, or what is missing will not come (failed chunks).
       this.idleFired = true;
       this.sink.idle(complete);

@@ -4,8 +4,8 @@
 // line's and the rule's ramps at that z (format/line-ramp.ts), its ends where their glides have
 // taken them at that z (format/line-glide.ts). Of several, the one drawn last
 // (on top) wins: fills after casings, chunks in the order drawn, segments in order.
-import { distanceToSegment } from '../overlay/overlay-hit.js';
 import { lineWidthShare } from '../../../format/line-ramp.js';
+import { pointSegmentDistance } from '../../../format/point-segment.js';
 import { PIXEL_SIZE_MM } from '../../../format/pixel-size.js';
 import { pixelToGround, type ViewGeometry } from '../geometry/view.js';
 import type { GpuLineChunk } from '../render/gpu-line-chunk.js';
@@ -24,7 +24,7 @@ export function lineAt(chunks: readonly GpuLineChunk[], rules: readonly LineRule
   let best: LineHit | null = null;
   let bestFill = false;
   for (const c of chunks) {
-    const p: [number, number] = [gx - c.originX, gy - c.originY];
+    const px = gx - c.originX, py = gy - c.originY;
     for (let k = 0; k < c.segmentCount; k++) {
       const rule = rules[c.segmentRule[k]!];
       if (!rule || !c.segmentAliveAt(k, z)) continue;
@@ -34,7 +34,7 @@ export function lineAt(chunks: readonly GpuLineChunk[], rules: readonly LineRule
       const half = (Math.max(fill, casing) / 2) * pxPerMm;
       if (half <= 0) continue;
       const [ax, ay, bx, by] = c.segmentAt(k, z);
-      const d = distanceToSegment(p, [ax, ay], [bx, by]) / view.resolution;
+      const d = pointSegmentDistance(px, py, ax, ay, bx, by) / view.resolution;
       if (d > half) continue;
       // A fill is drawn over every casing; among fills (or among casings), the later on top.
       const isFill = d <= (fill / 2) * pxPerMm;

@@ -267,6 +267,11 @@ export class MapEngine extends Evented<EngineEvents> {
     this.showFeatureState(face);
   }
 
+  /** Something the map is to show is still coming (an overlay's geometry): no 'idle' before it has. */
+  holdIdle(coming: Promise<void>): void {
+    this.loop?.holdIdle(coming);
+  }
+
   /** The overlay layers drawn over the map, bottom first: shown with the finished map at the next frame. */
   setOverlays(layers: readonly OverlayDrawable[]): void {
     this.renderer?.setOverlays(layers);

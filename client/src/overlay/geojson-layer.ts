@@ -11,8 +11,7 @@ import type { OverlayPaintParams } from '../render/overlay-pass.js';
 import type { VarioMap } from '../vario-map.js';
 import { DEFAULT_GEOJSON_PAINT, mergePaint, paintParams, type GeoJsonPaint } from './geojson-paint.js';
 import { emptyParts, GeoJsonError, mapParts, readGeoJson, type GeoJsonData, type GeoJsonFeature, type Parts, type ReadFeature, type XY } from './geojson-read.js';
-import { HitIndex } from './overlay-hit.js';
-import { buildMesh, type OverlayMesh } from './overlay-mesh.js';
+import type { LayerGeometry } from './layer-geometry.js';
 import { OverlayStack, type PointerPlace, type StackedLayer } from './overlay-stack.js';
 
 export interface GeoJsonLayerOptions {
@@ -41,7 +40,10 @@ export interface GeoJsonLayerEvents {
   mouseenter: GeoJsonLayerEvent;
   mousemove: GeoJsonLayerEvent;
   mouseleave: GeoJsonLayerEvent;
-  /** The data could not be projected when the cube became known (setData throws instead once it is). */
+  /**
+   * The data could not be projected when the cube became known (setData throws instead once it
+   * is), or the layer's code (loaded with the page's first layer) could not be loaded.
+   */
   error: { error: Error };
 }
 
@@ -52,8 +54,27 @@ interface Source {
   given: GeoJsonData;
   read: ReadFeature[];
   lngLat: boolean;
-  /** Null until projected on a map whose cube is known. */
-  projected: { mesh: OverlayMesh; hits: HitIndex } | null;
+  /** Null until projected on a map whose cube is known (and the geometry code has loaded). */
+  projected: LayerGeometry | null;
+}
+
+type GeometryModule = typeof import('./layer-geometry.js');
+
+/** The geometry code, once loaded: layers project at once from then on. */
+let geometryModule: GeometryModule | null = null;
+let geometryLoading: Promise<GeometryModule> | null = null;
+
+/** The geometry code, loaded once for every layer of the page. */
+function loadGeometry(): Promise<GeometryModule> {
+  geometryLoading ??= import('./layer-geometry.js').then(
+    (m) => (geometryModule = m),
+    (err: unknown) => {
+      // A later layer tries again (the network may be back).
+      geometryLoading = null;
+      throw err;
+    },
+  );
+  return geometryLoading;
 }
 
 export class GeoJsonLayer extends Evented<GeoJsonLayerEvents> {
@@ -185,7 +206,21 @@ export class GeoJsonLayer extends Evented<GeoJsonLayerEvents> {
       }
     });
     if (problems.length > 0) throw new GeoJsonError(`${what} (the cube's CRS is ${meta.crs ?? 'not named'})`, problems);
-    source.projected = { mesh: buildMesh(parts), hits: new HitIndex(parts) };
+    if (geometryModule) {
+      source.projected = geometryModule.layerGeometry(parts);
+      return;
+    }
+    // The first layer of the page: the map waits for the geometry code before it goes idle, and
+    // draws the layer when it has come, unless the layer has new data or left the map by then.
+    const loaded = loadGeometry()
+      .then((m) => {
+        if (this.source !== source || this.stack !== stack) return;
+        source.projected = m.layerGeometry(parts);
+        stack.changed();
+      })
+      // The browser's message names the file that did not come.
+      .catch((err: unknown) => this.report(new Error(`${what}: ${err instanceof Error ? err.message : String(err)}`)));
+    stack.holdIdle(loaded);
   }
 
   private readonly onMeta = (meta: CubeMeta): void => {
@@ -193,13 +228,16 @@ export class GeoJsonLayer extends Evented<GeoJsonLayerEvents> {
     try {
       this.project(this.source, meta, this.stack, 'GeoJsonLayer');
     } catch (err) {
-      const error = err instanceof Error ? err : new Error(String(err));
-      // As MapLibre's Evented: an error nobody listens for goes to the console.
-      if (this.listens('error')) this.fire('error', { error });
-      else console.error(error);
+      this.report(err instanceof Error ? err : new Error(String(err)));
     }
     this.stack?.changed();
   };
+
+  private report(error: Error): void {
+    // As MapLibre's Evented: an error nobody listens for goes to the console.
+    if (this.listens('error')) this.fire('error', { error });
+    else console.error(error);
+  }
 
   private detach(): void {
     this.map = null;

@@ -5,7 +5,8 @@ import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import type { Parts, XY } from './geojson-read.js';
 import { distanceToSegment } from './overlay-hit.js';
-import { buildMesh, quadCount, QUAD_FLOATS, QUAD_VERTICES } from './overlay-mesh.js';
+import { buildMesh } from './overlay-mesh.js';
+import { quadCount, QUAD_FLOATS, QUAD_VERTICES } from './overlay-quads.js';
 
 const parts = (p: Partial<Parts>): Parts => ({ points: [], lines: [], polygons: [], ...p });
 

@@ -90,6 +90,11 @@ export class OverlayStack {
     engineOf(this.map).setOverlays(this.layers.map((l) => l.drawable()));
   }
 
+  /** A layer's geometry is still coming: the map is not idle before it has. */
+  holdIdle(coming: Promise<void>): void {
+    engineOf(this.map).holdIdle(coming);
+  }
+
   /** Longitude/latitude to the cube's CRS; a CrsError when the cube has none (or is not known yet). */
   toProjected(): CrsTransform {
     const meta = this.map.getMetadata();

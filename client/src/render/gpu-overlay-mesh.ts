@@ -1,7 +1,7 @@
 // An overlay layer's mesh on the GPU (uploaded once per setData): the polygon triangles and
 // the three sets of quads (lines, polygon rings, points), each a vertex array with its own
 // index buffer.
-import { QUAD_FLOATS, QUAD_VERTICES, type OverlayMesh } from '../overlay/overlay-mesh.js';
+import { QUAD_FLOATS, QUAD_VERTICES, type OverlayMesh } from '../overlay/overlay-quads.js';
 
 export interface DrawnPart {
   vao: WebGLVertexArrayObject;

@@ -17,7 +17,7 @@ import fillVert from '../../shaders/overlay-fill.vert?raw';
 import quadFrag from '../../shaders/overlay-quad.frag?raw';
 import quadVert from '../../shaders/overlay-quad.vert?raw';
 import { viewBbox, type ViewGeometry } from '../geometry/view.js';
-import type { OverlayMesh } from '../overlay/overlay-mesh.js';
+import type { OverlayMesh } from '../overlay/overlay-quads.js';
 import { GpuOverlayMesh, type DrawnPart } from './gpu-overlay-mesh.js';
 import { Program } from './program.js';
 import type { Rgba } from './style-texture.js';
