@@ -165,7 +165,10 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     assert.deepEqual(twice, [], 'no chunk requested twice');
     const union = new Set(views.flatMap((v) => needed(v, z).all.map((l) => l.file)));
     const visible = new Set(views.flatMap((v) => needed(v, z).visible.map((l) => l.file)));
-    for (const f of counts.keys()) assert.ok(union.has(f), `${f} was fetched but no view needed it`);
+    // Besides, the first view just above the floor's top draws the floor on screen under itself
+    // while its own chunks come (its interim floor).
+    const interim = files(floorOnScreen(views[0]!));
+    for (const f of counts.keys()) assert.ok(union.has(f) || interim.has(f), `${f} was fetched but no view needed it`);
     for (const f of visible) assert.ok(counts.has(f), `${f} was on screen but never fetched`);
     assert.ok(visible.size >= 3 && visible.size < contents.leaves.length / 2, `${visible.size} chunks on screen: a zoomed-in view`);
     const statuses = await p.page.evaluate(() => [...engine.chunkStatuses()]);
@@ -182,6 +185,33 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
 
   /** The floor chunks a view of `bbox` at the base scale shows. */
   const floorOnScreen = (bbox: Bbox): ChunkLeaf[] => contents.floorLeaves.filter((l) => boxMeets(l.bbox, { ground: viewBbox(fitBbox(bbox, W, H)), zMin: 0, zMax: 0 }));
+
+  test("just above the floor's top a first view draws the floor on screen under itself while its own chunks come: that picture is the floor's, the complete one its own", async () => {
+    // The cube's chunks come late; the floor's do not.
+    server.faults.delayMs = (f) => (/^c-/.test(f) ? 1500 : 0);
+    const z = 2;
+    assert.ok(z > contents.floorTop);
+    const [view] = pickPair((a) => floorOnScreen(a).length >= 2, (a) => [a]);
+    const p = await open(view, z);
+    const floor = [...files(floorOnScreen(view))];
+    // The first picture drawn with the floor on the GPU (an incomplete picture may wait a little).
+    await p.page.evaluate(async (fs) => {
+      for (;;) {
+        await map.once('render');
+        if (fs.every((f) => engine.chunkStatuses().get(f) === 'gpu')) return;
+      }
+    }, floor);
+    await assertMatchesSlicer(p, view, 0, 'the interim picture: the floor');
+    const statuses = new Map(await p.page.evaluate(() => [...engine.chunkStatuses()]));
+    const own = needed(view, z).visible;
+    assert.ok(own.some((l) => statuses.get(l.file) !== 'gpu'), 'read while some of the view\'s own chunks were still coming');
+    assert.equal(await waitIdle(p.page), true);
+    await assertMatchesSlicer(p, view, z, 'complete');
+    const order = chunkRequests().map(fileOf);
+    const firstCube = order.findIndex((f) => f.startsWith('c-'));
+    assert.deepEqual(new Set(order.slice(0, firstCube)), new Set(floor), 'the floor on screen, before any of the cube\'s chunks');
+    assert.equal(order.filter((f) => f.startsWith('b-')).length, floor.length, 'each floor chunk once, and no other');
+  });
 
   test('at the floor the first complete map needs the floor chunks alone, and equals the CPU slicer', async () => {
     // The cube's own chunks are all missing: what the map shows comes from the floor chunks.
@@ -295,17 +325,19 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     const v = fitBbox(bbox, W, H);
     const n = needed(bbox, z);
     const onScreen = new Set(n.visible.map((l) => l.file));
-    const leafOf = new Map(contents.leaves.map((l) => [l.file, l]));
+    const interim = files(floorOnScreen(bbox));
+    const leafOf = new Map([...contents.leaves, ...contents.floorLeaves].map((l) => [l.file, l]));
     // One request at a time, so the server sees them in the order the map chose.
     const order = chunkRequests().map(fileOf);
     assert.ok(order.length >= 5);
-    // On screen first; then by the ground distance from the view centre to the chunk's box
-    // (every chunk needed meets the flat slice's z, so z does not order them).
+    // The floor on screen first, if fetched (the first view's interim floor, just above the
+    // floor's top); then the view's own on screen; then by the ground distance from the view
+    // centre to the chunk's box (every chunk needed meets the flat slice's z, so z does not order them).
     const distance = (f: string): number => {
       const b = leafOf.get(f)!.bbox;
       return Math.hypot(Math.max(b[0] - v.centerX, 0, v.centerX - b[3]), Math.max(b[1] - v.centerY, 0, v.centerY - b[4]));
     };
-    const rank = (f: string): [number, number] => [onScreen.has(f) ? 0 : 1, distance(f)];
+    const rank = (f: string): [number, number] => [interim.has(f) ? -1 : onScreen.has(f) ? 0 : 1, distance(f)];
     for (let i = 1; i < order.length; i++) {
       const a = rank(order[i - 1]!), b = rank(order[i]!);
       assert.ok(a[0] < b[0] || (a[0] === b[0] && a[1] <= b[1] + 1e-12), `request ${i}: ${order[i - 1]} (${a}) before ${order[i]} (${b})`);

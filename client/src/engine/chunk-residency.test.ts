@@ -17,7 +17,7 @@ const chunk = (file: string, bytes = 100, bbox = BOX): ChunkPayload => ({
   blocks: { cellBox: new Float32Array(0), cellBlocks: Uint32Array.of(0), zLow: new Float32Array(0), first: Uint32Array.of(0) }, verified: true,
 });
 
-const answer = (seq: number, visible: string[], margin: string[] = [], o: Partial<NeededChunks> = {}): NeededChunks => ({ seq, visible, margin, ahead: [], indexComplete: true, queryMs: 1, ...o });
+const answer = (seq: number, visible: string[], margin: string[] = [], o: Partial<NeededChunks> = {}): NeededChunks => ({ seq, visible, margin, ahead: [], interim: [], indexComplete: true, queryMs: 1, ...o });
 
 const query: ViewQuery = { view: { centerX: 5, centerY: 5, resolution: 1, width: 10, height: 10 }, visible: [0, 0, 10, 10], margin: [-2, -2, 12, 12], zMin: 0, zMax: 50, z: 10 };
 const drawn = { ground: query.visible, zMin: 0, zMax: 50 };

@@ -46,11 +46,15 @@ export function queryView(mapView: MapView, view: ViewGeometry, marginFactor: nu
   return { view, visible, margin, zMin, zMax, z };
 }
 
+const EMPTY: ReadonlySet<string> = new Set();
+
 export class ChunkResidency {
   private needed: NeededChunks | null = null;
   private visibleSet = new Set<string>();
   /** Kept on the GPU beyond the budget besides those on screen: margin and ahead. */
   private keptSet = new Set<string>();
+  /** The interim floor: drawn under the view until every chunk it shows is on the GPU. */
+  private interimSet = new Set<string>();
   private readonly pending: Payload[] = [];
   private ahead: Camera[] = [];
   private aheadChanged = false;
@@ -74,7 +78,8 @@ export class ChunkResidency {
     if (this.needed && n.seq < this.needed.seq) return;
     this.needed = n;
     this.visibleSet = new Set(n.visible);
-    this.keptSet = new Set([...n.margin, ...n.ahead]);
+    this.interimSet = new Set(n.interim);
+    this.keptSet = new Set([...n.margin, ...n.ahead, ...n.interim]);
     this.queryMs = n.queryMs;
   }
 
@@ -109,7 +114,7 @@ export class ChunkResidency {
     this.source.setView({ seq, visible: q.visible, margin: q.margin, zMin: q.zMin, zMax: q.zMax, centerX: q.view.centerX, centerY: q.view.centerY, z: q.z, ahead });
   }
 
-  /** Uploads chunks that arrived, within the per-frame byte budget; true when any that went up meets `drawn`. */
+  /** Uploads chunks that arrived, within the per-frame byte budget; true when any that went up meets `drawn` or is of the interim floor. */
   upload(frameNo: number, seq: number, drawn: QueryBox): boolean {
     let bytes = 0;
     let changed = false;
@@ -126,7 +131,7 @@ export class ChunkResidency {
       this.source.uploaded(c.file);
       this.uploaded(c.file);
       bytes += payloadBytes(c);
-      if (boxMeets(c.bbox, drawn)) changed = true;
+      if (boxMeets(c.bbox, drawn) || this.interimSet.has(c.file)) changed = true;
     }
     this.source.evicted(dropped);
     return changed;
@@ -155,6 +160,14 @@ export class ChunkResidency {
    */
   shownChunks(seq: number): ReadonlySet<string> | null {
     return this.shows(seq, this.renderer.store) ? this.visibleSet : null;
+  }
+
+  /**
+   * The interim floor of view `seq` (docs/CLIENT.md, "The first map"): floor chunks on the GPU
+   * drawn under the view, whatever its z, until every chunk it shows is there.
+   */
+  interimChunks(seq: number): ReadonlySet<string> {
+    return this.needed?.seq === seq ? this.interimSet : EMPTY;
   }
 
   /** The worker answered view `seq` and nothing it needs is still to come (failed chunks will not). */

@@ -251,11 +251,16 @@ export class FrameLoop {
     if (this.residency.upload(this.frameNo, this.viewSeq, drawn)) this.accumulated = 0;
     this.residency.evict();
     const shown = this.residency.shownChunks(this.viewSeq);
+    // Until then, a first view just above the floor's top draws the floor under itself: its
+    // triangles lie at z 0, under the slice, where the view's own chunks cover them as they come.
+    const interim = shown ? null : this.residency.interimChunks(this.viewSeq);
+    const under = { ground: q.visible, zMin: 0, zMax: 0 };
     const chunks: GpuChunk[] = [];
     const lineChunks: GpuLineChunk[] = [];
     const files = new Set<string>();
     for (const c of r.store.values()) {
-      if (!boxMeets(c.bbox, drawn) || (shown && !shown.has(c.file))) continue;
+      const meets = boxMeets(c.bbox, drawn) || (interim?.has(c.file) === true && boxMeets(c.bbox, under));
+      if (!meets || (shown && !shown.has(c.file))) continue;
       files.add(c.file);
       c.lastUsed = this.frameNo;
       if (c.kind !== 'lines') chunks.push(c);

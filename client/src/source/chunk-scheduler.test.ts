@@ -6,12 +6,13 @@
 // fetched again, failed).
 import assert from 'node:assert/strict';
 import { describe, test, type TestContext } from 'node:test';
-import { parseIndex, type Box3 } from '../../../format/cube-index.js';
+import { parseIndex, type Box3, type ChunkLeaf } from '../../../format/cube-index.js';
+import { EVERYWHERE, queryIndex } from '../../../format/index-query.js';
 import { eventually, settle } from '../../../testing/event-loop.js';
 import { installFakeFetch, status, type Answer, type FakeFetch } from '../../../testing/fake-fetch.js';
 import { handMadeCube, serveFiles, squareChunk, twoLevelCube, type ChunkSpec } from '../../../testing/hand-made-cube.js';
 import { ChunkScheduler } from './chunk-scheduler.js';
-import { firstViewFiles } from './floor-choice.js';
+import { firstViewFiles, INTERIM_SHARE, interimFloor } from './floor-choice.js';
 import { IndexTree } from './index-tree.js';
 import type { AheadView, ChunkStatus, FromWorker, NeededChunks, SourceErrorInfo, SourceOptions, ViewRequest } from './worker-protocol.js';
 
@@ -321,6 +322,8 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
   // z 0.5; with `subIndex`, the cube's chunks listed in that sub-index file (as the build writes it).
   const cube = (subIndex?: string): Map<string, Uint8Array> => handMadeCube(row(3), { top: 0.5, chunks: [{ file: 'c-floor.bin', bbox: [0, 0, 0, 30, 10, 0.5] }] }, subIndex).files;
   const at = (seq: number, zMax: number): ViewRequest => ({ ...view(seq, 0, 30, { centerX: 15 }), zMin: 0, zMax });
+  // Beyond twice the base scale (z 83 in the hand-made cube's scale table): no interim floor.
+  const high = (seq: number): ViewRequest => ({ ...view(seq, 0, 30, { centerX: 15 }), zMin: 90, zMax: 90, z: 90 });
   const CUBE = ['c-0.bin', 'c-1.bin', 'c-2.bin'];
 
   test('a view below the floor top shows the floor chunk, fetched first, with the cube\'s chunks as its margin; a view reaching the top, the cube\'s', async (t) => {
@@ -353,7 +356,8 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
     // The cube's chunks under the view come after them, as the margin: let them end here.
     await eventually(() => h.received().length === 4, 'the margin');
     await settle();
-    assert.deepEqual(firstViewFiles(index, { ...first, zMax: 0.5 }), ['i-cube.json'], 'a view reaching the floor\'s top: the sub-index file that lists the cube\'s chunks');
+    assert.deepEqual(firstViewFiles(index, { ...first, zMax: 0.5 }), ['b-2.bin', 'b-1.bin', 'i-cube.json'], 'a view reaching the floor\'s top: its floor on screen (the interim floor), then the sub-index file that lists the cube\'s chunks');
+    assert.deepEqual(firstViewFiles(index, { ...first, zMin: 90, zMax: 90, z: 90 }), ['i-cube.json'], 'a view beyond twice the base scale: the sub-index file alone');
     const noFloor = parseIndex(JSON.parse(new TextDecoder().decode(handMadeCube(row(3)).files.get('index.json'))));
     assert.deepEqual(firstViewFiles(noFloor, first), ['c-2.bin', 'c-1.bin'], 'a cube without floor chunks: its chunks on screen, nearest first');
   });
@@ -400,14 +404,14 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
   test('a view above the floor asks for the cube\'s sub-index file at once', async (t) => {
     const files = cube('i-cube.json');
     const h = await harness(t, files, { concurrency: 4 }, () => 'hold');
-    h.scheduler.setView(at(1, 50));
+    h.scheduler.setView(high(1));
     await eventually(() => h.fetched().length === 1, 'a request');
     assert.deepEqual(h.fetched(), ['i-cube.json']);
   });
 
   test('back at the floor with the cube\'s chunks here, the view takes them and fetches nothing', async (t) => {
     const h = await harness(t, cube(), {}, undefined, true);
-    h.scheduler.setView(at(1, 50));
+    h.scheduler.setView(high(1));
     await eventually(() => h.received().length === 3, 'the cube\'s chunks');
     await settle();
     h.scheduler.setView(at(2, 0));
@@ -429,5 +433,39 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
     h.scheduler.setView(at(2, 0));
     await eventually(() => h.received().length === 6, 'the cube\'s chunks again');
     assert.equal(h.times('c-floor.bin'), 1);
+  });
+
+  test('a first view just above the floor\'s top fetches its floor on screen first, as its interim floor, then its own chunks; once those have been on the GPU, no view has one', async (t) => {
+    const h = await harness(t, cube('i-cube.json'), { concurrency: 1 }, undefined, true);
+    h.scheduler.setView(at(1, 1));
+    await eventually(() => h.received().length === 4, 'the floor chunk and the cube\'s');
+    await settle();
+    assert.deepEqual(sorted(h.fetched().slice(0, 2)), ['c-floor.bin', 'i-cube.json'], 'the floor chunk before any of the cube\'s, beside the sub-index file that lists them');
+    assert.deepEqual(sorted(h.fetched().slice(2)), CUBE);
+    const n = h.needed().at(-1)!;
+    assert.deepEqual([n.interim, sorted(n.visible)], [['c-floor.bin'], CUBE], 'the floor is the interim, the cube\'s chunks on screen');
+    await eventually(() => CUBE.every((f) => h.statuses(f).includes('gpu')), 'the cube\'s chunks on the GPU');
+    h.scheduler.setView(at(2, 2));
+    await settle();
+    assert.deepEqual(h.needed().at(-1)!.interim, [], 'the view\'s own chunks have been on the GPU');
+    assert.equal(h.fetched().length, 5, 'nothing fetched twice: four chunks and the sub-index file');
+  });
+
+  test('no interim floor for a view beyond twice the base scale, or when its floor is more than half the cube\'s bytes on screen', async (t) => {
+    const h = await harness(t, cube(), { concurrency: 1 }, () => 'hold');
+    h.scheduler.setView(high(1));
+    assert.deepEqual(h.needed().at(-1)!.interim, []);
+    // The cube's three chunks on screen, the floor's one: with two of the cube's here, the floor
+    // is more than half of what is left to fetch.
+    const index = parseIndex(JSON.parse(new TextDecoder().decode(cube().get('index.json'))));
+    const floorLeaf = queryIndex(index.floor!.root, EVERYWHERE, () => undefined).leaves;
+    const cubeQuery = queryIndex(index.root, EVERYWHERE, () => undefined);
+    const bytes = (leaves: readonly ChunkLeaf[]): number => leaves.reduce((s, l) => s + l.bytes, 0);
+    assert.ok(bytes(floorLeaf) <= INTERIM_SHARE * bytes(cubeQuery.leaves), `the floor (${bytes(floorLeaf)} bytes) is at most half the cube's (${bytes(cubeQuery.leaves)})`);
+    const v = at(1, 1);
+    assert.deepEqual(interimFloor(index, v, queryIndex(index.floor!.root, EVERYWHERE, () => undefined), cubeQuery, bytes).map((l) => l.file), ['c-floor.bin']);
+    const lastOnly = (leaves: readonly ChunkLeaf[]): number => bytes(leaves.filter((l) => l.file !== 'c-0.bin' && l.file !== 'c-1.bin'));
+    assert.ok(bytes(floorLeaf) > INTERIM_SHARE * lastOnly(cubeQuery.leaves));
+    assert.deepEqual(interimFloor(index, v, queryIndex(index.floor!.root, EVERYWHERE, () => undefined), cubeQuery, lastOnly), [], 'two of the cube\'s three chunks here');
   });
 });

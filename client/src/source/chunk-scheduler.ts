@@ -15,12 +15,15 @@
 //   path must be fetched ahead;
 // - below the floor's top the floor chunks go on screen, and the cube's chunks are the margin
 //   (floorShown): the first map at the base scale takes a fifth of the bytes. The cube's
-//   sub-index files wait, as the margin does, until the floor chunks on screen are on the GPU.
+//   sub-index files wait, as the margin does, until the floor chunks on screen are on the GPU;
+// - just above the floor's top, until a view's chunks on screen have all been on the GPU once,
+//   the floor chunks on screen go first, drawn under the view meanwhile (interimFloor): a
+//   complete picture of the base scale for a fifth of the bytes, refined as the view's own come.
 import type { ChunkLeaf, LineChunkLeaf } from '../../../format/cube-index.js';
 import { boxMeets, queryLineChunks, viewPriority, type QueryBox, type QueryResult } from '../../../format/index-query.js';
 import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
 import { fetchLineChunk } from './line-chunk-fetch.js';
-import { floorChoice } from './floor-choice.js';
+import { floorChoice, interimFloor } from './floor-choice.js';
 import { FetchFailure, type RetryOptions } from './fetch-retry.js';
 import { indexError } from './index-error.js';
 import type { IndexTree } from './index-tree.js';
@@ -43,6 +46,8 @@ interface Entry {
 export type Post = (msg: FromWorker, transfer?: ArrayBuffer[]) => void;
 
 const MARGIN_TIER = 1e6;
+/** The interim floor's chunks rank from -INTERIM_TIER: before the view's own. */
+const INTERIM_TIER = 1e6;
 /** Chunks of the i-th view ahead rank from AHEAD_TIER + i * MARGIN_TIER. */
 const AHEAD_TIER = 1e8;
 
@@ -58,6 +63,10 @@ export class ChunkScheduler {
   private restTimer: ReturnType<typeof setTimeout> | null = null;
   /** The cube's sub-index files a view at the floor reaches: loaded once its floor chunks on screen are on the GPU (pump). */
   private marginSubs: string[] = [];
+  /** The view's chunks on screen (without the interim floor). */
+  private visibleFiles: string[] = [];
+  /** A view's chunks on screen have all been on the GPU: no interim floor from then on. */
+  private firstShown = false;
 
   constructor(
     private readonly tree: IndexTree,
@@ -95,6 +104,12 @@ export class ChunkScheduler {
       needed.add(leaf.file);
     };
     const rank = view.visible;
+    // Just above the floor's top, a first view's floor on screen, drawn under it meanwhile.
+    // The floor's triangles lie at z 0, under every slice: its query below its top.
+    const under = floor || this.firstShown ? null : this.tree.floorQuery({ ground: view.visible, zMin: 0, zMax: 0 });
+    const interim = under ? interimFloor(this.tree.index, view, under, cube, (leaves) => this.bytesToFetch(leaves, visibleQ)) : [];
+    if (interim.length > 0) for (const m of under!.missing) missing.add(m);
+    for (const leaf of interim) want(leaf, viewPriority(leaf.bbox, rank, view) - INTERIM_TIER);
     for (const leaf of floor?.leaves ?? []) {
       want(leaf, viewPriority(leaf.bbox, rank, view));
       visible.push(leaf.file);
@@ -116,6 +131,7 @@ export class ChunkScheduler {
       }
     });
     this.needed = needed;
+    this.visibleFiles = visible;
     for (const [file, e] of this.entries) {
       if (needed.has(file)) continue;
       if (e.status === 'requested') {
@@ -127,7 +143,7 @@ export class ChunkScheduler {
         this.setStatus(e, 'not-requested');
       }
     }
-    this.post({ type: 'needed', seq: view.seq, visible, margin, ahead, indexComplete: (floor ?? cube).missing.length === 0, queryMs, visited: cube.visited + (floor?.visited ?? 0) });
+    this.post({ type: 'needed', seq: view.seq, visible, margin, ahead, interim: interim.map((l) => l.file), indexComplete: (floor ?? cube).missing.length === 0, queryMs, visited: cube.visited + (floor?.visited ?? 0) });
     this.loadSubs([...missing]);
     this.pump();
   }
@@ -182,6 +198,7 @@ export class ChunkScheduler {
     const e = this.entries.get(file);
     if (!e || e.status !== 'received') return;
     this.setStatus(e, 'gpu');
+    if (!this.firstShown && this.visibleFiles.every((f) => this.entries.get(f)?.status === 'gpu')) this.firstShown = true;
     // Once the last on-screen chunk is up, the margin may start.
     if (e.priority < MARGIN_TIER) this.pump();
   }

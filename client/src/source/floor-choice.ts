@@ -1,9 +1,24 @@
 // Below the floor's top, whether a view shows the floor chunks or the cube's (docs/FORMAT.md,
-// "Floor chunks"): one rule for the worker's scheduler and for the map's head start on the
-// first view (ChunkSource), which fetches what that view needs first before the worker runs.
+// "Floor chunks"); just above it, whether a first view draws the floor under itself while its
+// own chunks come (interimFloor). One rule for the worker's scheduler and for the map's head
+// start on the first view (ChunkSource), which fetches what that view needs first before the
+// worker runs.
 import type { ChunkLeaf, CubeIndex, InnerNode } from '../../../format/cube-index.js';
 import { boxMeets, queryIndex, viewPriority, type QueryBox, type QueryResult } from '../../../format/index-query.js';
+import { zAtScale } from '../../../format/scale.js';
 import type { ViewRequest } from './worker-protocol.js';
+
+/**
+ * A first view up to this many times the base scale may draw the floor under itself until its
+ * own chunks have come (interimFloor): its ground is at most 4 times a base-scale view's.
+ */
+export const INTERIM_SCALE = 2;
+
+/**
+ * The floor's on screen must be at most this share of the cube's bytes on screen for the
+ * interim floor to pay: it delays the view's own chunks by its bytes.
+ */
+export const INTERIM_SHARE = 0.5;
 
 /**
  * The floor chunks a query needs, or null when the cube has none or the query reaches above
@@ -33,7 +48,8 @@ export function floorChoice(floor: QueryResult | null, cube: QueryResult, toFetc
  * The files a first view asks for first, as the scheduler would choose them with nothing fetched
  * yet and only index.json at hand: the floor chunks it shows on screen, nearest first; above the
  * floor, the sub-index files its query reaches (the build keeps the cube's tree in them when
- * there are floor chunks), then the cube's chunks on screen that index.json itself lists.
+ * there are floor chunks), after its interim floor (interimFloor) if any, then the cube's
+ * chunks on screen that index.json itself lists.
  */
 export function firstViewFiles(index: CubeIndex, view: ViewRequest): string[] {
   const onScreen = { ground: view.visible, zMin: view.zMin, zMax: view.zMax };
@@ -48,5 +64,27 @@ export function firstViewFiles(index: CubeIndex, view: ViewRequest): string[] {
       .sort((a, b) => a.priority - b.priority)
       .map((l) => l.file);
   if (shown) return nearestFirst(shown.leaves);
-  return [...cube.missing, ...nearestFirst(cube.leaves.filter((l) => boxMeets(l.bbox, onScreen)))];
+  const under = floorQuery(index, { ground: view.visible, zMin: 0, zMax: 0 }, none);
+  const interim = interimFloor(index, view, under, cube, onScreenBytes);
+  return [...nearestFirst(interim), ...cube.missing, ...nearestFirst(cube.leaves.filter((l) => boxMeets(l.bbox, onScreen)))];
+}
+
+/**
+ * Above the floor's top, the floor chunks on screen (`under`: the floor's query at z 0 over the
+ * view's ground) that a first view draws under its own chunks until they have all come
+ * (docs/CLIENT.md, "The first map"): a complete picture of the base scale, refined as the
+ * view's own chunks arrive. Just above the
+ * base scale the cube's chunks on screen are 4 to 5 times the floor's bytes (bgt_otterlo_1800m
+ * at 1:1,020: 164 against 39 kB). Empty when the view shows the floor itself, lies above
+ * INTERIM_SCALE times the base scale, or when the floor's bytes on screen are more than
+ * INTERIM_SHARE of the cube's, once those are known (while the cube's sub-index files are
+ * missing, they are taken to be more). `toFetch` as floorChoice's.
+ */
+export function interimFloor(index: CubeIndex, view: ViewRequest, under: QueryResult | null, cube: QueryResult, toFetch: (leaves: readonly ChunkLeaf[]) => number): ChunkLeaf[] {
+  const floor = index.floor;
+  if (!floor || !under || view.zMax < floor.top || view.z > zAtScale(index.meta, INTERIM_SCALE * index.meta.baseScale)) return [];
+  const floorBytes = toFetch(under.leaves);
+  if (floorBytes === Infinity) return [];
+  if (cube.missing.length === 0 && floorBytes > INTERIM_SHARE * toFetch(cube.leaves)) return [];
+  return under.leaves;
 }

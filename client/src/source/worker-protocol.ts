@@ -147,6 +147,11 @@ export interface NeededChunks {
   margin: string[];
   /** Chunks of the views ahead that the view itself does not need, in fetch order. */
   ahead: string[];
+  /**
+   * Floor chunks drawn under a first view just above the floor's top until every chunk it shows
+   * is on the GPU (interimFloor in floor-choice.ts); usually none.
+   */
+  interim: string[];
   /** False while sub-index files the view reaches are still loading. */
   indexComplete: boolean;
   queryMs: number;
