@@ -87,6 +87,20 @@ describe('chunk residency', () => {
     assert.deepEqual(h.evicted, ['gone']);
   });
 
+  test('an interim floor chunk is kept and changes the picture though it lies below the view\'s z range; it is not part of what the view shows', () => {
+    const h = harness();
+    h.residency.answer(answer(1, ['a'], [], { interim: ['floor'] }));
+    h.residency.arrived(chunk('floor', 100, [0, 0, 0, 10, 10, 0.05]));
+    assert.equal(h.residency.upload(1, 1, { ground: query.visible, zMin: 20, zMax: 30 }), true, 'the floor goes under the picture');
+    assert.deepEqual([...h.onGpu], ['floor'], 'kept, not dropped');
+    assert.deepEqual([...h.residency.interimChunks(1)], ['floor']);
+    assert.deepEqual([...h.residency.interimChunks(2)], [], 'for the view the answer is for');
+    assert.equal(h.residency.loaded(1), false, 'the view\'s own chunk is still to come');
+    h.residency.arrived(chunk('a'));
+    h.residency.upload(2, 1, drawn);
+    assert.deepEqual([...(h.residency.shownChunks(1) ?? [])], ['a'], 'complete without the floor');
+  });
+
   test('loaded and settled are for the view the answer is for', () => {
     const h = harness();
     h.residency.answer(answer(1, ['a', 'b']));
