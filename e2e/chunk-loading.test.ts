@@ -194,12 +194,11 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     const [view] = pickPair((a) => floorOnScreen(a).length >= 2, (a) => [a]);
     const p = await open(view, z);
     const floor = [...files(floorOnScreen(view))];
-    // The first picture drawn with the floor on the GPU (an incomplete picture may wait a little).
+    // A picture drawn with the floor on the GPU: an incomplete one is drawn at most 250 ms
+    // (PARTIAL_FRAME_MS) after its chunks went up, or it was drawn already.
     await p.page.evaluate(async (fs) => {
-      for (;;) {
-        await map.once('render');
-        if (fs.every((f) => engine.chunkStatuses().get(f) === 'gpu')) return;
-      }
+      while (!fs.every((f) => engine.chunkStatuses().get(f) === 'gpu')) await map.once('render');
+      await Promise.race([map.once('render'), new Promise((resolve) => setTimeout(resolve, 400))]);
     }, floor);
     await assertMatchesSlicer(p, view, 0, 'the interim picture: the floor');
     const statuses = new Map(await p.page.evaluate(() => [...engine.chunkStatuses()]));

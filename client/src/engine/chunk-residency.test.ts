@@ -94,7 +94,8 @@ describe('chunk residency', () => {
     assert.equal(h.residency.upload(1, 1, { ground: query.visible, zMin: 20, zMax: 30 }), true, 'the floor goes under the picture');
     assert.deepEqual([...h.onGpu], ['floor'], 'kept, not dropped');
     assert.deepEqual([...h.residency.interimChunks(1)], ['floor']);
-    assert.deepEqual([...h.residency.interimChunks(2)], [], 'for the view the answer is for');
+    assert.deepEqual([...h.residency.interimChunks(2)], ['floor'], 'the last answer\'s, for a view not answered yet');
+    assert.deepEqual([...h.residency.interimChunks(0)], [], 'not for an older view');
     assert.equal(h.residency.loaded(1), false, 'the view\'s own chunk is still to come');
     h.residency.arrived(chunk('a'));
     h.residency.upload(2, 1, drawn);

@@ -163,11 +163,13 @@ export class ChunkResidency {
   }
 
   /**
-   * The interim floor of view `seq` (docs/CLIENT.md, "The first map"): floor chunks on the GPU
-   * drawn under the view, whatever its z, until every chunk it shows is there.
+   * The interim floor (docs/CLIENT.md, "The first map just above the base scale"): floor chunks
+   * drawn under view `seq`, whatever its z, until every chunk it shows is there. The last answer's
+   * for a view it has not answered yet (a gesture's views are answered a frame or two late): the
+   * frame loop draws those meeting the view's ground. A new set for each answer.
    */
   interimChunks(seq: number): ReadonlySet<string> {
-    return this.needed?.seq === seq ? this.interimSet : EMPTY;
+    return this.needed && this.needed.seq <= seq ? this.interimSet : EMPTY;
   }
 
   /** The worker answered view `seq` and nothing it needs is still to come (failed chunks will not). */

@@ -12,6 +12,7 @@ import type { Renderer } from '../render/renderer.js';
 import { jitter, weight } from '../render/supersampling.js';
 import { queryView, type ChunkResidency, type ViewQuery } from './chunk-residency.js';
 import type { MapCanvas } from './map-canvas.js';
+import { underView } from '../source/floor-choice.js';
 
 /** Blending in the 'moving' mode stays on this long after the slice last moved (ms). */
 const MOVING_MS = 300;
@@ -86,6 +87,8 @@ export class FrameLoop {
   private partialTimer: ReturnType<typeof setTimeout> | 0 = 0;
   private blendingWasOn = false;
   private idleFired = false;
+  /** The interim floor the last frame drew under the view (null: none; ChunkResidency.interimChunks). */
+  private interimDrawn: ReadonlySet<string> | null = null;
   /** Things still coming that the map waits for before it is idle (holdIdle). */
   private holds = 0;
   /** The chunks the image on screen was drawn from, and the view it shows. */
@@ -254,7 +257,10 @@ export class FrameLoop {
     // Until then, a first view just above the floor's top draws the floor under itself: its
     // triangles lie at z 0, under the slice, where the view's own chunks cover them as they come.
     const interim = shown ? null : this.residency.interimChunks(this.viewSeq);
-    const under = { ground: q.visible, zMin: 0, zMax: 0 };
+    // A picture drawn with another interim floor is not accumulated into.
+    if (interim !== this.interimDrawn) this.accumulated = 0;
+    this.interimDrawn = interim;
+    const under = underView(q.visible);
     const chunks: GpuChunk[] = [];
     const lineChunks: GpuLineChunk[] = [];
     const files = new Set<string>();

@@ -7,12 +7,12 @@
 import assert from 'node:assert/strict';
 import { describe, test, type TestContext } from 'node:test';
 import { parseIndex, type Box3, type ChunkLeaf } from '../../../format/cube-index.js';
-import { EVERYWHERE, queryIndex } from '../../../format/index-query.js';
+import { boxMeets, queryIndex, type QueryBox } from '../../../format/index-query.js';
 import { eventually, settle } from '../../../testing/event-loop.js';
 import { installFakeFetch, status, type Answer, type FakeFetch } from '../../../testing/fake-fetch.js';
 import { handMadeCube, serveFiles, squareChunk, twoLevelCube, type ChunkSpec } from '../../../testing/hand-made-cube.js';
 import { ChunkScheduler } from './chunk-scheduler.js';
-import { firstViewFiles, INTERIM_SHARE, interimFloor } from './floor-choice.js';
+import { firstViewFiles, INTERIM_SHARE, interimFloor, underView } from './floor-choice.js';
 import { IndexTree } from './index-tree.js';
 import type { AheadView, ChunkStatus, FromWorker, NeededChunks, SourceErrorInfo, SourceOptions, ViewRequest } from './worker-protocol.js';
 
@@ -451,21 +451,33 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
     assert.equal(h.fetched().length, 5, 'nothing fetched twice: four chunks and the sub-index file');
   });
 
-  test('no interim floor for a view beyond twice the base scale, or when its floor is more than half the cube\'s bytes on screen', async (t) => {
+  test('the interim floor stays while the view\'s sub-index file is still coming, though the floor is on the GPU', async (t) => {
+    const files = cube('i-cube.json');
+    const serve = serveFiles(BASE, files);
+    const h = await harness(t, files, { concurrency: 4 }, (url) => (url.endsWith('i-cube.json') ? 'hold' : serve(url)), true);
+    h.scheduler.setView(at(1, 1));
+    await eventually(() => h.statuses('c-floor.bin').includes('gpu'), 'the floor on the GPU');
+    h.answerOldest();
+    await eventually(() => h.needed().at(-1)!.visible.length === 3, 'the view asked again with the cube\'s chunks');
+    assert.deepEqual(h.needed().at(-1)!.interim, ['c-floor.bin'], 'none of the view\'s own chunks had been on screen');
+  });
+
+  test('no interim floor for a view beyond twice the base scale, or when its floor is more than half the cube\'s bytes on screen still to fetch', async (t) => {
     const h = await harness(t, cube(), { concurrency: 1 }, () => 'hold');
     h.scheduler.setView(high(1));
     assert.deepEqual(h.needed().at(-1)!.interim, []);
-    // The cube's three chunks on screen, the floor's one: with two of the cube's here, the floor
-    // is more than half of what is left to fetch.
+    // A flat slice just above the floor's top, the cube's three chunks on screen and the floor's
+    // one: with two of the cube's here, the floor is more than half of what is left to fetch.
     const index = parseIndex(JSON.parse(new TextDecoder().decode(cube().get('index.json'))));
-    const floorLeaf = queryIndex(index.floor!.root, EVERYWHERE, () => undefined).leaves;
-    const cubeQuery = queryIndex(index.root, EVERYWHERE, () => undefined);
-    const bytes = (leaves: readonly ChunkLeaf[]): number => leaves.reduce((s, l) => s + l.bytes, 0);
-    assert.ok(bytes(floorLeaf) <= INTERIM_SHARE * bytes(cubeQuery.leaves), `the floor (${bytes(floorLeaf)} bytes) is at most half the cube's (${bytes(cubeQuery.leaves)})`);
-    const v = at(1, 1);
-    assert.deepEqual(interimFloor(index, v, queryIndex(index.floor!.root, EVERYWHERE, () => undefined), cubeQuery, bytes).map((l) => l.file), ['c-floor.bin']);
-    const lastOnly = (leaves: readonly ChunkLeaf[]): number => bytes(leaves.filter((l) => l.file !== 'c-0.bin' && l.file !== 'c-1.bin'));
-    assert.ok(bytes(floorLeaf) > INTERIM_SHARE * lastOnly(cubeQuery.leaves));
-    assert.deepEqual(interimFloor(index, v, queryIndex(index.floor!.root, EVERYWHERE, () => undefined), cubeQuery, lastOnly), [], 'two of the cube\'s three chunks here');
+    const v: ViewRequest = { ...at(1, 1), zMin: 1, zMax: 1, z: 1 };
+    const under = queryIndex(index.floor!.root, underView(v.visible), () => undefined);
+    const cubeQuery = queryIndex(index.root, { ground: v.margin, zMin: v.zMin, zMax: v.zMax }, () => undefined);
+    const bytes = (leaves: readonly ChunkLeaf[], box: QueryBox): number => leaves.reduce((s, l) => s + (boxMeets(l.bbox, box) ? l.bytes : 0), 0);
+    const floorBytes = bytes(under.leaves, underView(v.visible)), cubeBytes = bytes(cubeQuery.leaves, { ground: v.visible, zMin: 1, zMax: 1 });
+    assert.ok(floorBytes > 0 && floorBytes <= INTERIM_SHARE * cubeBytes, `the floor (${floorBytes} bytes) is at most half the cube's (${cubeBytes})`);
+    assert.deepEqual(interimFloor(index, v, under, cubeQuery, bytes).map((l) => l.file), ['c-floor.bin']);
+    const lastOnly = (leaves: readonly ChunkLeaf[], box: QueryBox): number => bytes(leaves.filter((l) => l.file !== 'c-0.bin' && l.file !== 'c-1.bin'), box);
+    assert.ok(floorBytes > INTERIM_SHARE * lastOnly(cubeQuery.leaves, { ground: v.visible, zMin: 1, zMax: 1 }));
+    assert.deepEqual(interimFloor(index, v, under, cubeQuery, lastOnly), [], 'two of the cube\'s three chunks here');
   });
 });

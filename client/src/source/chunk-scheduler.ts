@@ -23,7 +23,7 @@ import type { ChunkLeaf, LineChunkLeaf } from '../../../format/cube-index.js';
 import { boxMeets, queryLineChunks, viewPriority, type QueryBox, type QueryResult } from '../../../format/index-query.js';
 import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
 import { fetchLineChunk } from './line-chunk-fetch.js';
-import { floorChoice, interimFloor } from './floor-choice.js';
+import { floorChoice, interimApplies, interimFloor, underView } from './floor-choice.js';
 import { FetchFailure, type RetryOptions } from './fetch-retry.js';
 import { indexError } from './index-error.js';
 import type { IndexTree } from './index-tree.js';
@@ -63,8 +63,8 @@ export class ChunkScheduler {
   private restTimer: ReturnType<typeof setTimeout> | null = null;
   /** The cube's sub-index files a view at the floor reaches: loaded once its floor chunks on screen are on the GPU (pump). */
   private marginSubs: string[] = [];
-  /** The view's chunks on screen (without the interim floor). */
-  private visibleFiles: string[] = [];
+  /** The view's chunks on screen (without the interim floor); null while its list is not whole. */
+  private visibleFiles: string[] | null = null;
   /** A view's chunks on screen have all been on the GPU: no interim floor from then on. */
   private firstShown = false;
 
@@ -104,11 +104,11 @@ export class ChunkScheduler {
       needed.add(leaf.file);
     };
     const rank = view.visible;
-    // Just above the floor's top, a first view's floor on screen, drawn under it meanwhile.
-    // The floor's triangles lie at z 0, under every slice: its query below its top.
-    const under = floor || this.firstShown ? null : this.tree.floorQuery({ ground: view.visible, zMin: 0, zMax: 0 });
-    const interim = under ? interimFloor(this.tree.index, view, under, cube, (leaves) => this.bytesToFetch(leaves, visibleQ)) : [];
-    if (interim.length > 0) for (const m of under!.missing) missing.add(m);
+    // Just above the floor's top, a first view's floor on screen, drawn under it meanwhile (its
+    // sub-index files, in a cube large enough to have some, loaded with the cube's).
+    const under = floor || this.firstShown || !interimApplies(this.tree.index, view) ? null : this.tree.floorQuery(underView(view.visible));
+    const interim = interimFloor(this.tree.index, view, under, cube, (leaves, box) => this.bytesToFetch(leaves, box));
+    for (const m of under?.missing ?? []) missing.add(m);
     for (const leaf of interim) want(leaf, viewPriority(leaf.bbox, rank, view) - INTERIM_TIER);
     for (const leaf of floor?.leaves ?? []) {
       want(leaf, viewPriority(leaf.bbox, rank, view));
@@ -131,7 +131,8 @@ export class ChunkScheduler {
       }
     });
     this.needed = needed;
-    this.visibleFiles = visible;
+    // Until the view's sub-index files have come, its list on screen is not whole.
+    this.visibleFiles = (floor ?? cube).missing.length === 0 ? visible : null;
     for (const [file, e] of this.entries) {
       if (needed.has(file)) continue;
       if (e.status === 'requested') {
@@ -198,7 +199,8 @@ export class ChunkScheduler {
     const e = this.entries.get(file);
     if (!e || e.status !== 'received') return;
     this.setStatus(e, 'gpu');
-    if (!this.firstShown && this.visibleFiles.every((f) => this.entries.get(f)?.status === 'gpu')) this.firstShown = true;
+    const v = this.visibleFiles;
+    if (!this.firstShown && v && v.length > 0 && v.every((f) => this.entries.get(f)?.status === 'gpu')) this.firstShown = true;
     // Once the last on-screen chunk is up, the margin may start.
     if (e.priority < MARGIN_TIER) this.pump();
   }

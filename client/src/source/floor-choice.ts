@@ -56,35 +56,48 @@ export function firstViewFiles(index: CubeIndex, view: ViewRequest): string[] {
   const none = (): undefined => undefined;
   const floor = floorQuery(index, onScreen, none);
   const cube = queryIndex(index.root, { ground: view.margin, zMin: view.zMin, zMax: view.zMax }, none);
-  const onScreenBytes = (leaves: readonly ChunkLeaf[]): number => leaves.reduce((sum, l) => sum + (boxMeets(l.bbox, onScreen) ? l.bytes : 0), 0);
-  const shown = floorChoice(floor, cube, onScreenBytes);
+  const bytesIn = (leaves: readonly ChunkLeaf[], box: QueryBox): number => leaves.reduce((sum, l) => sum + (boxMeets(l.bbox, box) ? l.bytes : 0), 0);
+  const shown = floorChoice(floor, cube, (leaves) => bytesIn(leaves, onScreen));
   const nearestFirst = (leaves: readonly ChunkLeaf[]): string[] =>
     leaves
       .map((leaf) => ({ file: leaf.file, priority: viewPriority(leaf.bbox, view.visible, view) }))
       .sort((a, b) => a.priority - b.priority)
       .map((l) => l.file);
   if (shown) return nearestFirst(shown.leaves);
-  const under = floorQuery(index, { ground: view.visible, zMin: 0, zMax: 0 }, none);
-  const interim = interimFloor(index, view, under, cube, onScreenBytes);
+  const interim = interimFloor(index, view, floorQuery(index, underView(view.visible), none), cube, bytesIn);
   return [...nearestFirst(interim), ...cube.missing, ...nearestFirst(cube.leaves.filter((l) => boxMeets(l.bbox, onScreen)))];
 }
 
+/** The box of the floor under a view's ground: its triangles lie at z 0, under every slice. */
+export function underView(ground: QueryBox['ground']): QueryBox {
+  return { ground, zMin: 0, zMax: 0 };
+}
+
 /**
- * Above the floor's top, the floor chunks on screen (`under`: the floor's query at z 0 over the
- * view's ground) that a first view draws under its own chunks until they have all come
- * (docs/CLIENT.md, "The first map"): a complete picture of the base scale, refined as the
- * view's own chunks arrive. Just above the
- * base scale the cube's chunks on screen are 4 to 5 times the floor's bytes (bgt_otterlo_1800m
- * at 1:1,020: 164 against 39 kB). Empty when the view shows the floor itself, lies above
- * INTERIM_SCALE times the base scale, or when the floor's bytes on screen are more than
- * INTERIM_SHARE of the cube's, once those are known (while the cube's sub-index files are
- * missing, they are taken to be more). `toFetch` as floorChoice's.
+ * Whether a view may draw the floor under itself while its own chunks come (interimFloor): the
+ * cube has floor chunks, the view reaches above their top, and it is at most INTERIM_SCALE times
+ * the base scale.
  */
-export function interimFloor(index: CubeIndex, view: ViewRequest, under: QueryResult | null, cube: QueryResult, toFetch: (leaves: readonly ChunkLeaf[]) => number): ChunkLeaf[] {
+export function interimApplies(index: CubeIndex, view: ViewRequest): boolean {
   const floor = index.floor;
-  if (!floor || !under || view.zMax < floor.top || view.z > zAtScale(index.meta, INTERIM_SCALE * index.meta.baseScale)) return [];
-  const floorBytes = toFetch(under.leaves);
+  return floor !== undefined && view.zMax >= floor.top && view.z <= zAtScale(index.meta, INTERIM_SCALE * index.meta.baseScale);
+}
+
+/**
+ * Above the floor's top, the floor chunks on screen (`under`: the floor's query in
+ * underView(view's ground)) that a first view draws under its own chunks until they have all
+ * come (docs/CLIENT.md, "The first map just above the base scale"): a complete picture of the
+ * base scale, refined as the view's own chunks arrive. Just above the base scale the cube's
+ * chunks on screen are 4 to 5 times the floor's bytes (bgt_otterlo_1800m at 1:1,020: 164
+ * against 39 kB). Empty unless interimApplies, or when the floor's bytes on screen are more
+ * than INTERIM_SHARE of the cube's, once those are known (while the cube's sub-index files are
+ * missing, they are taken to be more). `toFetch(leaves, box)`: the bytes of those of `leaves`
+ * meeting `box` still to fetch, Infinity when one of them has failed.
+ */
+export function interimFloor(index: CubeIndex, view: ViewRequest, under: QueryResult | null, cube: QueryResult, toFetch: (leaves: readonly ChunkLeaf[], box: QueryBox) => number): ChunkLeaf[] {
+  if (!under || !interimApplies(index, view)) return [];
+  const floorBytes = toFetch(under.leaves, underView(view.visible));
   if (floorBytes === Infinity) return [];
-  if (cube.missing.length === 0 && floorBytes > INTERIM_SHARE * toFetch(cube.leaves)) return [];
+  if (cube.missing.length === 0 && floorBytes > INTERIM_SHARE * toFetch(cube.leaves, { ground: view.visible, zMin: view.zMin, zMax: view.zMax })) return [];
   return under.leaves;
 }
