@@ -34,8 +34,9 @@ export default defineConfig(({ mode }) => {
       // without asking.
       rolldownOptions: {
         // The lazily loaded modules (proj4, a GeoJSON layer's geometry) share a few small ones
-        // with the rest: those stay in vario-map.js, which may then export them to those files
-        // too, instead of going into a file of their own that vario-map.js would wait for.
+        // with the rest: those stay in vario-map.js, which then exports them to those files under
+        // short internal names beside its public ones, instead of going into a file of their own
+        // that vario-map.js would wait for.
         preserveEntrySignatures: 'allow-extension',
         output: {
           hashCharacters: 'hex',

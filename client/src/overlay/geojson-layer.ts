@@ -218,8 +218,11 @@ export class GeoJsonLayer extends Evented<GeoJsonLayerEvents> {
         source.projected = m.layerGeometry(parts);
         stack.changed();
       })
-      // The browser's message names the file that did not come.
-      .catch((err: unknown) => this.report(new Error(`${what}: ${err instanceof Error ? err.message : String(err)}`)));
+      // The browser's message names the file that did not come. A layer that has new data or
+      // left the map meanwhile reports its own attempt, if any.
+      .catch((err: unknown) => {
+        if (this.source === source && this.stack === stack) this.report(new Error(`${what}: ${err instanceof Error ? err.message : String(err)}`));
+      });
     stack.holdIdle(loaded);
   }
 

@@ -1,6 +1,6 @@
 // What a GeoJSON layer makes of its projected data: the mesh the GPU draws and the index its
 // pointer events search. Loaded with the first layer that needs it (geojson-layer.ts), so that a
-// map without GeoJSON layers does not carry earcut, flatbush and this code (7 kB gzip).
+// map without GeoJSON layers does not carry earcut, Flatbush and this code (8 kB gzip).
 import type { Parts } from './geojson-read.js';
 import { HitIndex } from './overlay-hit.js';
 import { buildMesh } from './overlay-mesh.js';
