@@ -625,6 +625,18 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     assert.match(alert ?? '', /The map's worker script could not be loaded, so http:\/\/127\.0\.0\.1:\d+\/cube\/index\.json cannot be shown: the script must be served beside vario-map\.js/);
   });
 
+  test('a map whose worker and index both fail shows one load error, the first', async () => {
+    server.faults.appNotFound = (path) => worker.test(path);
+    logStart = server.log.length;
+    mp = await openMap(browser, server.url, { source: 'no-such-cube/' }, { expect: [/Failed to load resource: the server responded with a status of 404/] });
+    await mp.page.evaluate(() => map.whenIdle());
+    // Both failures have had their turn (the index's 404 and the worker's): one box.
+    await mp.page.waitForFunction("document.querySelectorAll('.ssc-load-error').length > 0", undefined, { polling: 100 });
+    await new Promise((resolve) => setTimeout(resolve, 500));
+    assert.equal(await mp.page.locator('.ssc-load-error').count(), 1);
+    assert.equal(server.log.slice(logStart).filter((e) => worker.test(e.path) || e.path === '/no-such-cube/index.json').length, 2, 'the worker and the index each asked for');
+  });
+
   test('a missing index gives an error event', async () => {
     logStart = server.log.length;
     mp = await openMap(browser, server.url, { source: 'no-such-cube/' });

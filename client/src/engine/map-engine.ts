@@ -158,6 +158,9 @@ export class MapEngine extends Evented<EngineEvents> {
       this.loop?.schedule();
     });
     this.source.on('failed', (e) => {
+      // The first failure says why the map cannot be shown (no index, no worker); a second,
+      // when both fail, would stack another box over it.
+      if (this.failed) return;
       this.failed = true;
       showLoadError(container, e);
       // Nothing more will be fetched or drawn: a page waiting for the map learns it is over.
