@@ -27,6 +27,14 @@ export interface FirstMap {
   at: number;
 }
 
+/** The page's start view from its URL (`?start=` and the view as JSON, startQuery), if given. */
+const startParam = "JSON.parse(new URLSearchParams(location.search).get('start') ?? 'null') ";
+
+/** The query that opens a session page at `view` instead of its own start. */
+export function startQuery(view: ProjectedView | LngLatView): string {
+  return `?start=${encodeURIComponent(JSON.stringify(view))}`;
+}
+
 const head = (title: string, css: string): string => `<!doctype html>
 <html lang="en">
 <head>
@@ -43,13 +51,14 @@ const epoch = () => performance.timeOrigin + performance.now();
 `;
 
 /**
- * The vario map, opening at `start`. One supersampling frame: 'idle' then comes with the first
+ * The vario map, opening at `start` (or the URL's, startQuery). One supersampling frame: 'idle' then comes with the first
  * complete frame, as MapLibre's does (it does not accumulate). No scale limits, so that both
  * maps go wherever the session goes.
  */
 function varioPage(start: ProjectedView): string {
   return `${head('vario map', 'lib/vario-map.css')}import { VarioMap } from './lib/vario-map.js';
-const map = new VarioMap({ container: 'map', source: 'cube/', centerProjected: ${JSON.stringify(start.center)}, scaleDenominator: ${start.scale}, supersampling: 1, minScale: 1e-9, maxScale: Infinity });
+const start = ${startParam}?? ${JSON.stringify(start)};
+const map = new VarioMap({ container: 'map', source: 'cube/', centerProjected: start.center, scaleDenominator: start.scale, supersampling: 1, minScale: 1e-9, maxScale: Infinity });
 let triangles = null;
 map.on('render', (e) => { triangles = e.triangles; });
 window.bench = {
@@ -87,7 +96,7 @@ function mapLibreStyle(style: TileStyle, tiles: Tiles): unknown {
 }
 
 /**
- * MapLibre, opening at `start`, with its triangles counted at the WebGL calls: every
+ * MapLibre, opening at `start` (or the URL's, startQuery), with its triangles counted at the WebGL calls: every
  * drawElements/drawArrays of TRIANGLES between two 'render' events is one frame's.
  */
 function mapLibrePage(start: LngLatView, style: unknown): string {
@@ -100,7 +109,8 @@ for (const C of [WebGLRenderingContext, WebGL2RenderingContext]) {
 const { Map } = await import('./maplibre/maplibre-gl.mjs');
 // Tile URLs must be absolute; a URL object would escape the braces.
 const style = JSON.parse(${JSON.stringify(JSON.stringify(style))}.replace('TILES_URL', location.origin + '/tiles/{z}/{x}/{y}.pbf'));
-const map = new Map({ container: 'map', style, center: ${JSON.stringify(start.center)}, zoom: ${start.zoom}, fadeDuration: 0, minZoom: 0, maxZoom: 24 });
+const start = ${startParam}?? ${JSON.stringify(start)};
+const map = new Map({ container: 'map', style, center: start.center, zoom: start.zoom, fadeDuration: 0, minZoom: 0, maxZoom: 24 });
 let mark = 0, triangles = null;
 map.on('render', () => { triangles = drawn - mark; mark = drawn; });
 map.on('error', (e) => console.error('maplibre: ' + (e.error?.message ?? e)));

@@ -1,4 +1,4 @@
-// npm run bench:session [-- <dataset filter>] [runs=N] [frames=N]: one scripted session, the
+// npm run bench:session [-- <dataset filter>] [runs=N] [frames=N] [starts=F,...]: one scripted session, the
 // same for both maps, in headless Chromium at 1280x720: the vario map (the public ES build and
 // a cube built fresh by ssc build) against MapLibre GL JS showing tippecanoe vector tiles of
 // the same data (issue 13). Both sites come from the project's static server on 127.0.0.1,
@@ -12,7 +12,11 @@
 // user's zoom: the vario map's redraw once the slice has stopped (blending off) is not waited for.
 // Each run also opens each map once more on a slow network (Chromium's own throttling, as
 // Lighthouse's "Slow 4G": 1.6 Mbit/s down, 150 ms more per request) and times its first map:
-// there the bytes and requests before the first map, code and data, count as on a phone.
+// there the bytes and requests before the first map, code and data, count as on a phone. It does
+// so again with the map opened at the start's scale times each of `starts` (1.414 and 4; `starts=`
+// for none), at the same centre: a first view above the base scale takes the cube's own chunks
+// (or, up to twice the base scale, first the floor's: the interim floor), where MapLibre takes
+// tiles of a lower zoom.
 // Prints, per dataset, the medians over `runs` runs (3) and their ratio, the vario map's data
 // bytes by kind of file, and what the session's views need of the surface chunks
 // (triangles-in-view.ts: a floor for the chunk encoding as it is); `csv=<file>` also
@@ -35,7 +39,7 @@ import { benchArgs, datasets, median, root, type Dataset } from './datasets.js';
 import { gzipSiblings } from './gzip-siblings.js';
 import { logResponses, type Sent } from './response-log.js';
 import { toMapLibreView, type LngLatView, type ProjectedView } from './scale-zoom.js';
-import { writeSessionPages, type FirstMap, type FrameResult } from './session-pages.js';
+import { startQuery, writeSessionPages, type FirstMap, type FrameResult } from './session-pages.js';
 import { printTable } from './table.js';
 import { scriptedSession, SESSION_HEIGHT as HEIGHT, SESSION_WIDTH as WIDTH } from './session-script.js';
 import { sessionNeeds } from './triangles-in-view.js';
@@ -56,6 +60,8 @@ interface RunResult {
   slowBytesBeforeFirst: number;
   /** The responses the page had whole before that first map: ms from the navigation's start, bytes, path. */
   slowResponses: { ms: number; bytes: number; path: string }[];
+  /** The same first map opened at each of the other start scales (`starts=`), in their order. */
+  slowFirstAt: { ms: number; bytes: number }[];
   bytesBeforeFirst: number;
   /** Data bytes sent up to each frame's completion. */
   bytesSoFar: number[];
@@ -124,7 +130,7 @@ async function openToFirstMap(browser: Browser, url: string, log: Sent[], networ
 }
 
 /** Opens `page` in a fresh context (an empty cache), runs the session, and sums up the server's log. */
-async function runPage(browser: Browser, url: string, views: (ProjectedView | LngLatView)[], log: Sent[], isData: (p: string) => boolean): Promise<RunResult> {
+async function runPage(browser: Browser, url: string, views: (ProjectedView | LngLatView)[], starts: (ProjectedView | LngLatView)[], log: Sent[], isData: (p: string) => boolean): Promise<RunResult> {
   const { context, page, first, problems } = await openToFirstMap(browser, url, log);
   try {
     const frames = await page.evaluate(async (vs) => {
@@ -150,7 +156,13 @@ async function runPage(browser: Browser, url: string, views: (ProjectedView | Ln
       byKindBeforeFirst: dataByKind(first.at),
     };
     // After the session's sums: it empties the log.
-    return { ...session, ...(await firstOnSlowNetwork(browser, url, log)) };
+    const slow = await firstOnSlowNetwork(browser, url, log);
+    const slowFirstAt: RunResult['slowFirstAt'] = [];
+    for (const v of starts) {
+      const at = await firstOnSlowNetwork(browser, url + startQuery(v), log);
+      slowFirstAt.push({ ms: at.slowFirstMs, bytes: at.slowBytesBeforeFirst });
+    }
+    return { ...session, ...slow, slowFirstAt };
   } finally {
     await context.close();
   }
@@ -185,7 +197,7 @@ async function firstOnSlowNetwork(browser: Browser, url: string, log: Sent[]): P
 const mb = (b: number): string => `${(b / 1e6).toFixed(2)} MB`;
 const ratio = (a: number, b: number): string => `${(a / b).toFixed(2)}x`;
 
-async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFrames: number, csv: string[], waterfall: boolean): Promise<void> {
+async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFrames: number, startFactors: number[], csv: string[], waterfall: boolean): Promise<void> {
   const tmp = await mkdtemp(path.join(tmpdir(), 'ssc-bench-session-'));
   try {
     const site = path.join(tmp, 'site');
@@ -198,6 +210,8 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
     if (classProperty === null) throw new Error(`${d.style}: the style has no classProperty to colour the tiles by`);
     const toLngLat = toMapLibreView(meta.proj4, WIDTH, meta.pixelSizeMm);
     const s = scriptedSession(meta, zoomOutFrames);
+    // The other first views: the session's start, zoomed out by each factor.
+    const starts: ProjectedView[] = startFactors.map((f) => ({ center: s.start.center, scale: s.start.scale * f }));
     // MapLibre draws a 512-px vector source's tiles of floor(zoom): the tiles span the zooms
     // the session shows, the highest holding the full detail.
     const zooms = [s.start, ...s.frames.map((f) => f.view)].map((v) => toLngLat(v).zoom);
@@ -224,7 +238,7 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
         for (const which of r % 2 === 0 ? (['vario', 'maplibre'] as const) : (['maplibre', 'vario'] as const)) {
           const views = which === 'vario' ? s.frames.map((f) => f.view) : s.frames.map((f) => toLngLat(f.view));
           const prefix = which === 'vario' ? '/cube/' : '/tiles/';
-          const res = await runPage(browser, `${server.url}${which}.html`, views, log, (p) => p.startsWith(prefix));
+          const res = await runPage(browser, `${server.url}${which}.html`, views, which === 'vario' ? starts : starts.map(toLngLat), log, (p) => p.startsWith(prefix));
           results[which].push(res);
           process.stderr.write(`  ${d.name} run ${r + 1} ${which}: first map ${res.firstMs.toFixed(0)} ms, ${mb(res.bytesSoFar[res.bytesSoFar.length - 1]!)}, frame median ${median(res.frames.map((f) => f.ms)).toFixed(0)} ms\n`);
         }
@@ -285,6 +299,17 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
       rows.push([p, String(idx.length), med(v.ms), med(m.ms), med(v.tri), med(m.tri), (v.bytes[last]! / 1e6).toFixed(2), (m.bytes[last]! / 1e6).toFixed(2)]);
     }
     printTable(rows);
+    if (starts.length > 0) {
+      const at = (rs: RunResult[], k: number, f: (a: { ms: number; bytes: number }) => number): number => median(rs.map((r) => f(r.slowFirstAt[k]!)));
+      printTable([
+        ['first complete map on a slow network, opened at', 'vario map', 'MapLibre + tippecanoe', 'ratio', 'vario bytes before it', 'MapLibre bytes before it', 'ratio'],
+        ...starts.map((st, k) => {
+          const vm = at(results.vario, k, (a) => a.ms), mm = at(results.maplibre, k, (a) => a.ms);
+          const vb = at(results.vario, k, (a) => a.bytes), mbb = at(results.maplibre, k, (a) => a.bytes);
+          return [`1:${Math.round(st.scale).toLocaleString('en')} (${startFactors[k]}x the start)`, `${(vm / 1000).toFixed(2)} s`, `${(mm / 1000).toFixed(2)} s`, ratio(vm, mm), mb(vb), mb(mbb), ratio(vb, mbb)];
+        }),
+      ]);
+    }
     const kinds = CUBE_FILE_KINDS.map(([, k]) => k).concat('other');
     const byKind = (f: (r: RunResult) => Map<string, number>): string =>
       kinds.map((k) => [k, median(results.vario.map((r) => f(r).get(k) ?? 0))] as const).filter(([, b]) => b > 0).map(([k, b]) => `${k} ${mb(b)}`).join(', ');
@@ -320,12 +345,15 @@ async function main(): Promise<void> {
   const frames = Number(args.find((a) => a.startsWith('frames='))?.slice(7) ?? 120);
   if (!Number.isInteger(frames) || frames < 1) throw new Error('frames= takes a whole number >= 1');
   const csvFile = args.find((a) => a.startsWith('csv='))?.slice(4);
+  const startsArg = args.find((a) => a.startsWith('starts='))?.slice(7) ?? '1.414,4';
+  const startFactors = startsArg === '' ? [] : startsArg.split(',').map(Number);
+  if (startFactors.some((f) => !(f > 0))) throw new Error(`starts=${startsArg}: a comma-separated list of factors > 0 (of the start's scale), or nothing`);
   const sets = datasets(filter?.includes('=') || filter === 'waterfall' ? undefined : filter, ['bgt_otterlo_1800m', 'nlcd_zion']);
   process.stderr.write(`${version}\n`);
   const csv = ['dataset,frame,phase,scale,vario bytes so far,maplibre bytes so far,vario ms,maplibre ms,vario triangles,maplibre triangles'];
   const browser = await launchChromium();
   try {
-    for (const d of sets) await runDataset(browser, d, runs, frames, csv, args.includes('waterfall'));
+    for (const d of sets) await runDataset(browser, d, runs, frames, startFactors, csv, args.includes('waterfall'));
   } finally {
     await browser.close();
   }
