@@ -4,7 +4,7 @@ import { parseArgs } from 'node:util';
 import { InputError } from '../io/errors.js';
 import { checkOutputPath, fsReason, isFsError } from '../io/output-path.js';
 import { generalizeFile } from '../pipeline.js';
-import { buildCube, DEFAULT_CHUNK_BYTES, FLOOR_CHUNK_FACTOR } from '../ssc/build-cube.js';
+import { buildCube, DEFAULT_CHUNK_BYTES, FLOOR_CHUNK_FACTOR, LINE_CHUNK_FACTOR } from '../ssc/build-cube.js';
 import { readTgap, TGAP_MAGIC } from '../../format/tgap.js';
 import type { Tgap } from '../../format/tgap-model.js';
 import { generalizeOptionSpecs, parseNumber, pipelineOptions, UsageError } from './args.js';
@@ -15,7 +15,7 @@ export const usage = `ssc build <input|file.tgap> --out <dir> [options]
   input: polygons in any format ssc generalize reads (GeoJSON, TopoJSON, GeoPackage, Shapefile,
   FlatGeobuf), or a tGAP that ssc generalize wrote
   --style <style.json>      for polygon input: classes, colours, weights (see ssc generalize)
-  --chunk-bytes <n>         target chunk size (default ${DEFAULT_CHUNK_BYTES}; floor chunks ${FLOOR_CHUNK_FACTOR} times it)
+  --chunk-bytes <n>         target chunk size (default ${DEFAULT_CHUNK_BYTES}; floor chunks ${FLOOR_CHUNK_FACTOR} times it, line chunks ${LINE_CHUNK_FACTOR} times it)
   --sub-index-bytes <n>     largest index file before subtrees move to sub-index files (default 131072;
                             with floor chunks the cube's tree below its root always does)
   --no-precompress          do not write the .gz and .br copies

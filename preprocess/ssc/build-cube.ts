@@ -48,6 +48,16 @@ export const DEFAULT_CHUNK_BYTES = 64 * 1024;
  * floor chunk files, boundaries, are a quarter to a third smaller.)
  */
 export const FLOOR_CHUNK_FACTOR = 2;
+/**
+ * Line chunks are planned at this share of the chunk size: a line lives over much of the z
+ * range, so a line chunk of the surface chunks' size spans a quarter of bgt_otterlo_1800m's
+ * ground from nearly z 0 to the top, and any view above its first lines took all 6 (123 kB
+ * gzip). At a quarter there are 24 (125 kB in all): the session takes 104 kB of them, a first
+ * view at 1:1,414 47 kB and at 1:4,000 63 kB (83 before); its first complete map on Slow 4G came
+ * at 4,025 ms instead of 4,358 at 1:1,414, and at 4,141 instead of 4,109 at 1:4,000 (medians of
+ * 5 loads, alternated). An eighth took the session 108 kB and the first view 30 kB, in as long.
+ */
+export const LINE_CHUNK_FACTOR = 0.25;
 
 export interface BuildOptions {
   chunkBytes?: number;
@@ -144,7 +154,7 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const lineStyle = parseStyle(t.meta.style, `${t.meta.source}: the tGAP's style`);
   const lines = lineStyle.lineRules.length > 0 ? cubeLines(t, lineStyle) : null;
   const lineLeaves: LineChunkLeaf[] = [];
-  for (const ch of lines ? lineChunks(lines, view, grid) : []) {
+  for (const ch of lines ? lineChunks(lines, { ...view, targetBytes: LINE_CHUNK_FACTOR * view.targetBytes }, grid) : []) {
     lineLeaves.push({ bbox: ch.bbox, file: put('l', ch.bytes), bytes: ch.bytes.length, lines: ch.lines });
   }
   if (lines) log(`lines: ${lines.length} in ${lineLeaves.length} chunks`);
