@@ -27,8 +27,8 @@ export interface FirstMap {
   at: number;
 }
 
-/** The page's start view from its URL (`?start=` and the view as JSON, startQuery), if given. */
-const startParam = "JSON.parse(new URLSearchParams(location.search).get('start') ?? 'null') ";
+/** A page script's expression for its start view: the URL's (startQuery), else `fallback`. */
+const startOr = (fallback: ProjectedView | LngLatView): string => `JSON.parse(new URLSearchParams(location.search).get('start') ?? 'null') ?? ${JSON.stringify(fallback)}`;
 
 /** The query that opens a session page at `view` instead of its own start. */
 export function startQuery(view: ProjectedView | LngLatView): string {
@@ -57,7 +57,7 @@ const epoch = () => performance.timeOrigin + performance.now();
  */
 function varioPage(start: ProjectedView): string {
   return `${head('vario map', 'lib/vario-map.css')}import { VarioMap } from './lib/vario-map.js';
-const start = ${startParam}?? ${JSON.stringify(start)};
+const start = ${startOr(start)};
 const map = new VarioMap({ container: 'map', source: 'cube/', centerProjected: start.center, scaleDenominator: start.scale, supersampling: 1, minScale: 1e-9, maxScale: Infinity });
 let triangles = null;
 map.on('render', (e) => { triangles = e.triangles; });
@@ -109,7 +109,7 @@ for (const C of [WebGLRenderingContext, WebGL2RenderingContext]) {
 const { Map } = await import('./maplibre/maplibre-gl.mjs');
 // Tile URLs must be absolute; a URL object would escape the braces.
 const style = JSON.parse(${JSON.stringify(JSON.stringify(style))}.replace('TILES_URL', location.origin + '/tiles/{z}/{x}/{y}.pbf'));
-const start = ${startParam}?? ${JSON.stringify(start)};
+const start = ${startOr(start)};
 const map = new Map({ container: 'map', style, center: start.center, zoom: start.zoom, fadeDuration: 0, minZoom: 0, maxZoom: 24 });
 let mark = 0, triangles = null;
 map.on('render', () => { triangles = drawn - mark; mark = drawn; });

@@ -132,6 +132,7 @@ async function openToFirstMap(browser: Browser, url: string, log: Sent[], networ
 /** Opens `page` in a fresh context (an empty cache), runs the session, and sums up the server's log. */
 async function runPage(browser: Browser, url: string, views: (ProjectedView | LngLatView)[], starts: (ProjectedView | LngLatView)[], log: Sent[], isData: (p: string) => boolean): Promise<RunResult> {
   const { context, page, first, problems } = await openToFirstMap(browser, url, log);
+  let session: Omit<RunResult, 'slowFirstMs' | 'slowBytesBeforeFirst' | 'slowResponses' | 'slowFirstAt'>;
   try {
     const frames = await page.evaluate(async (vs) => {
       const out: FrameResult[] = [];
@@ -146,7 +147,7 @@ async function runPage(browser: Browser, url: string, views: (ProjectedView | Ln
       return m;
     };
     const dataUpTo = (at: number): number => [...dataByKind(at).values()].reduce((s, b) => s + b, 0);
-    const session = {
+    session = {
       firstMs: first.ms,
       bytesBeforeFirst: dataUpTo(first.at),
       bytesSoFar: frames.map((f) => dataUpTo(f.at)),
@@ -155,17 +156,18 @@ async function runPage(browser: Browser, url: string, views: (ProjectedView | Ln
       byKind: dataByKind(end),
       byKindBeforeFirst: dataByKind(first.at),
     };
-    // After the session's sums: it empties the log.
-    const slow = await firstOnSlowNetwork(browser, url, log);
-    const slowFirstAt: RunResult['slowFirstAt'] = [];
-    for (const v of starts) {
-      const at = await firstOnSlowNetwork(browser, url + startQuery(v), log);
-      slowFirstAt.push({ ms: at.slowFirstMs, bytes: at.slowBytesBeforeFirst });
-    }
-    return { ...session, ...slow, slowFirstAt };
   } finally {
     await context.close();
   }
+  // After the session's sums (they empty the log) and with its page closed, so that nothing of
+  // it runs beside them.
+  const slow = await firstOnSlowNetwork(browser, url, log);
+  const slowFirstAt: RunResult['slowFirstAt'] = [];
+  for (const v of starts) {
+    const other = await firstOnSlowNetwork(browser, url + startQuery(v), log);
+    slowFirstAt.push({ ms: other.slowFirstMs, bytes: other.slowBytesBeforeFirst });
+  }
+  return { ...session, ...slow, slowFirstAt };
 }
 
 /** The page opened in a fresh context on SLOW_NETWORK, to its first complete map. */
@@ -214,7 +216,7 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
     const starts: ProjectedView[] = startFactors.map((f) => ({ center: s.start.center, scale: s.start.scale * f }));
     // MapLibre draws a 512-px vector source's tiles of floor(zoom): the tiles span the zooms
     // the session shows, the highest holding the full detail.
-    const zooms = [s.start, ...s.frames.map((f) => f.view)].map((v) => toLngLat(v).zoom);
+    const zooms = [s.start, ...starts, ...s.frames.map((f) => f.view)].map((v) => toLngLat(v).zoom);
     const geojson = path.join(tmp, `${d.name}.wgs84.geojson`);
     await writeWgs84GeoJson(d.file, classProperty, geojson);
     process.stderr.write(`tiling ${d.name}... `);
@@ -300,13 +302,13 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
     }
     printTable(rows);
     if (starts.length > 0) {
-      const at = (rs: RunResult[], k: number, f: (a: { ms: number; bytes: number }) => number): number => median(rs.map((r) => f(r.slowFirstAt[k]!)));
+      const medianAt = (rs: RunResult[], k: number, f: (a: { ms: number; bytes: number }) => number): number => median(rs.map((r) => f(r.slowFirstAt[k]!)));
       printTable([
         ['first complete map on a slow network, opened at', 'vario map', 'MapLibre + tippecanoe', 'ratio', 'vario bytes before it', 'MapLibre bytes before it', 'ratio'],
         ...starts.map((st, k) => {
-          const vm = at(results.vario, k, (a) => a.ms), mm = at(results.maplibre, k, (a) => a.ms);
-          const vb = at(results.vario, k, (a) => a.bytes), mbb = at(results.maplibre, k, (a) => a.bytes);
-          return [`1:${Math.round(st.scale).toLocaleString('en')} (${startFactors[k]}x the start)`, `${(vm / 1000).toFixed(2)} s`, `${(mm / 1000).toFixed(2)} s`, ratio(vm, mm), mb(vb), mb(mbb), ratio(vb, mbb)];
+          const varioMs = medianAt(results.vario, k, (a) => a.ms), mapLibreMs = medianAt(results.maplibre, k, (a) => a.ms);
+          const varioBytes = medianAt(results.vario, k, (a) => a.bytes), mapLibreBytes = medianAt(results.maplibre, k, (a) => a.bytes);
+          return [`1:${Math.round(st.scale).toLocaleString('en')} (${startFactors[k]}x the start)`, `${(varioMs / 1000).toFixed(2)} s`, `${(mapLibreMs / 1000).toFixed(2)} s`, ratio(varioMs, mapLibreMs), mb(varioBytes), mb(mapLibreBytes), ratio(varioBytes, mapLibreBytes)];
         }),
       ]);
     }

@@ -51,9 +51,9 @@ export const FLOOR_CHUNK_FACTOR = 2;
 /**
  * Line chunks are planned at this share of the chunk size: a line lives over much of the z
  * range, so a line chunk of the surface chunks' size spans a quarter of bgt_otterlo_1800m's
- * ground from nearly z 0 to the top, and any view above its first lines took all 6 (123 kB
- * gzip). At a quarter there are 24 (125 kB in all): the session takes 104 kB of them, a first
- * view at 1:1,414 47 kB and at 1:4,000 63 kB (83 before); its first complete map on Slow 4G came
+ * ground from nearly z 0 to the top: a first view at 1:1,414 took all 6 (123 kB gzip), one at
+ * 1:4,000 83 kB. At a quarter there are 24 (125 kB in all): the session takes 104 kB of them
+ * (123 before), those first views 47 and 63 kB; the first complete map on Slow 4G came
  * at 4,025 ms instead of 4,358 at 1:1,414, and at 4,141 instead of 4,109 at 1:4,000 (medians of
  * 5 loads, alternated). An eighth took the session 108 kB and the first view 30 kB, in as long.
  */
