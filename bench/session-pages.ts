@@ -51,9 +51,9 @@ const epoch = () => performance.timeOrigin + performance.now();
 `;
 
 /**
- * The vario map, opening at `start` (or the URL's, startQuery). One supersampling frame: 'idle' then comes with the first
- * complete frame, as MapLibre's does (it does not accumulate). No scale limits, so that both
- * maps go wherever the session goes.
+ * The vario map, opening at `start` (or the URL's, startQuery). One supersampling frame: 'idle'
+ * then comes with the first complete frame, as MapLibre's does (it does not accumulate). No
+ * scale limits, so that both maps go wherever the session goes.
  */
 function varioPage(start: ProjectedView): string {
   return `${head('vario map', 'lib/vario-map.css')}import { VarioMap } from './lib/vario-map.js';
@@ -96,8 +96,9 @@ function mapLibreStyle(style: TileStyle, tiles: Tiles): unknown {
 }
 
 /**
- * MapLibre, opening at `start` (or the URL's, startQuery), with its triangles counted at the WebGL calls: every
- * drawElements/drawArrays of TRIANGLES between two 'render' events is one frame's.
+ * MapLibre, opening at `start` (or the URL's, startQuery), with its triangles counted at the
+ * WebGL calls: every drawElements/drawArrays of TRIANGLES between two 'render' events is one
+ * frame's.
  */
 function mapLibrePage(start: LngLatView, style: unknown): string {
   return `${head('MapLibre', 'maplibre/maplibre-gl.css')}let drawn = 0;

@@ -1,7 +1,7 @@
-// npm run bench:session [-- <dataset filter>] [runs=N] [frames=N] [starts=F,...]: one scripted session, the
-// same for both maps, in headless Chromium at 1280x720: the vario map (the public ES build and
-// a cube built fresh by ssc build) against MapLibre GL JS showing tippecanoe vector tiles of
-// the same data (issue 13). Both sites come from the project's static server on 127.0.0.1,
+// npm run bench:session [-- <dataset filter>] [runs=N] [frames=N] [starts=F,...]: one scripted
+// session, the same for both maps, in headless Chromium at 1280x720: the vario map (the public
+// ES build and a cube built fresh by ssc build) against MapLibre GL JS showing tippecanoe vector
+// tiles of the same data (issue 13). Both sites come from the project's static server on 127.0.0.1,
 // every file gzip-encoded as a CDN would send it. The session: open at the base scale (1:1,000
 // for bgt_otterlo_1800m, the style's baseScale for nlcd_zion), zoom out to the full extent in
 // `frames` frames (120; geometric in scale), pan a quarter of the data's width in frames/6,
@@ -159,8 +159,8 @@ async function runPage(browser: Browser, url: string, views: (ProjectedView | Ln
   } finally {
     await context.close();
   }
-  // After the session's sums (they empty the log) and with its page closed, so that nothing of
-  // it runs beside them.
+  // The slow first maps empty the log, so they come after the session's sums; and after its page
+  // is closed, so that nothing of it runs beside them.
   const slow = await firstOnSlowNetwork(browser, url, log);
   const slowFirstAt: RunResult['slowFirstAt'] = [];
   for (const v of starts) {
