@@ -96,10 +96,10 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
    * What the first view asks for first (its floor chunks; above the floor, its interim floor
    * and the sub-index files its query reaches: firstViewFiles), fetched here and handed to the
    * worker (head-start.ts): on a slow network its script (33 kB gzip) comes a round trip and
-   * more after index.json, and these need not wait for it. All of them at once: the browser queues them as the worker would, and
-   * nlcd_zion's first complete map on Slow 4G came in 2,492 ms, against 2,560 with its first six
-   * floor chunks alone (medians of 7). The worker is told before the view (messages keep their
-   * order), so it asks for none of them again.
+   * more after index.json, and these need not wait for it. All of them at once: the browser
+   * queues them as the worker would, and nlcd_zion's first complete map on Slow 4G came in
+   * 2,492 ms, against 2,560 with its first six floor chunks alone (medians of 7). The worker is
+   * told before the view (messages keep their order), so it asks for none of them again.
    */
   private headStart(files: string[]): void {
     const urls = files.map((f) => cubeFileUrl(f, this.url));
