@@ -188,8 +188,9 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   const floorOnScreen = (bbox: Bbox): ChunkLeaf[] => contents.floorLeaves.filter((l) => boxMeets(l.bbox, { ground: viewBbox(fitBbox(bbox, W, H)), zMin: 0, zMax: 0 }));
 
   test("just above the floor's top a first view draws the floor on screen under itself while its own chunks come: that picture is the floor's, the complete one its own", async () => {
-    // The cube's chunks come late; the floor's do not.
-    server.faults.delayMs = (f) => (/^c-/.test(f) ? 1500 : 0);
+    // The cube's chunks come late, long after the floor's: on a slow machine the floor's picture
+    // took over 1.5 s to be drawn and read.
+    server.faults.delayMs = (f) => (/^c-/.test(f) ? 5000 : 0);
     const z = 2;
     assert.ok(z > contents.floorTop);
     const [view] = pickPair((a) => floorOnScreen(a).length >= 2, (a) => [a]);
