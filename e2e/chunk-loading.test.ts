@@ -188,33 +188,38 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   const floorOnScreen = (bbox: Bbox): ChunkLeaf[] => contents.floorLeaves.filter((l) => boxMeets(l.bbox, { ground: viewBbox(fitBbox(bbox, W, H)), zMin: 0, zMax: 0 }));
 
   test("just above the floor's top a first view draws the floor on screen under itself while its own chunks come: that picture is the floor's, the complete one its own", async () => {
-    // The cube's chunks come late, long after the floor's: on a slow machine the floor's picture
-    // took over 1.5 s to be drawn and read.
-    server.faults.delayMs = (f) => (/^c-/.test(f) ? 5000 : 0);
-    const z = 2;
-    assert.ok(z > contents.floorTop);
-    const [view] = pickPair((a) => floorOnScreen(a).length >= 2, (a) => [a]);
-    const p = await open(view, z);
-    const floor = [...files(floorOnScreen(view))];
-    // A picture drawn with the floor on the GPU: an incomplete one is drawn at most 250 ms
-    // (PARTIAL_FRAME_MS) after its chunks went up, or it was drawn already.
-    await p.page.evaluate(async (fs) => {
-      while (!fs.every((f) => engine.chunkStatuses().get(f) === 'gpu')) await map.once('render');
-      await Promise.race([map.once('render'), new Promise((resolve) => setTimeout(resolve, 400))]);
-    }, floor);
-    // The picture and the chunks' statuses as they are now; the CPU slicer may take longer than
-    // the cube's chunks take to come.
-    const interimIds = await readIds(p.page);
-    const statuses = new Map(await p.page.evaluate(() => [...engine.chunkStatuses()]));
-    const own = needed(view, z).visible;
-    assert.ok(own.some((l) => statuses.get(l.file) !== 'gpu'), 'read while some of the view\'s own chunks were still coming');
-    await assertMatchesSlicer(p, view, 0, 'the interim picture: the floor', interimIds);
-    assert.equal(await waitIdle(p.page), true);
-    await assertMatchesSlicer(p, view, z, 'complete');
-    const order = chunkRequests().map(fileOf);
-    const firstCube = order.findIndex((f) => f.startsWith('c-'));
-    assert.deepEqual(new Set(order.slice(0, firstCube)), new Set(floor), 'the floor on screen, before any of the cube\'s chunks');
-    assert.equal(order.filter((f) => f.startsWith('b-')).length, floor.length, 'each floor chunk once, and no other');
+    // The cube's chunks are held back until the floor's picture has been read.
+    let release = (): void => {};
+    const held = new Promise<void>((resolve) => (release = resolve));
+    server.faults.heldUntil = (f) => (/^c-/.test(f) ? held : undefined);
+    try {
+      const z = 2;
+      assert.ok(z > contents.floorTop);
+      const [view] = pickPair((a) => floorOnScreen(a).length >= 2, (a) => [a]);
+      const p = await open(view, z);
+      const floor = [...files(floorOnScreen(view))];
+      // A picture drawn with the floor on the GPU: an incomplete one is drawn at most 250 ms
+      // (PARTIAL_FRAME_MS) after its chunks went up, or it was drawn already.
+      await p.page.evaluate(async (fs) => {
+        while (!fs.every((f) => engine.chunkStatuses().get(f) === 'gpu')) await map.once('render');
+        await Promise.race([map.once('render'), new Promise((resolve) => setTimeout(resolve, 400))]);
+      }, floor);
+      // The picture and the chunks' statuses as they are now, before the cube's chunks may come.
+      const interimIds = await readIds(p.page);
+      const statuses = new Map(await p.page.evaluate(() => [...engine.chunkStatuses()]));
+      release();
+      const own = needed(view, z).visible;
+      assert.ok(own.some((l) => statuses.get(l.file) !== 'gpu'), 'read while some of the view\'s own chunks were still coming');
+      await assertMatchesSlicer(p, view, 0, 'the interim picture: the floor', interimIds);
+      assert.equal(await waitIdle(p.page), true);
+      await assertMatchesSlicer(p, view, z, 'complete');
+      const order = chunkRequests().map(fileOf);
+      const firstCube = order.findIndex((f) => f.startsWith('c-'));
+      assert.deepEqual(new Set(order.slice(0, firstCube)), new Set(floor), 'the floor on screen, before any of the cube\'s chunks');
+      assert.equal(order.filter((f) => f.startsWith('b-')).length, floor.length, 'each floor chunk once, and no other');
+    } finally {
+      release();
+    }
   });
 
   test('at the floor the first complete map needs the floor chunks alone, and equals the CPU slicer', async () => {

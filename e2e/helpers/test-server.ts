@@ -29,6 +29,8 @@ export interface Faults {
   unavailableOnce: Set<string>;
   /** Delay before answering a cube request, ms (e.g. to abort it meanwhile). */
   delayMs: (file: string) => number;
+  /** A cube request waits, after its delay, until the promise given for its file settles (a gate the test opens). */
+  heldUntil: (file: string) => Promise<void> | undefined;
   /** Delay before answering a request for the app's own files (path from the site's root, e.g. the worker's script), ms. */
   appDelayMs: (path: string) => number;
   /** The app's own files answered with 404 (path from the site's root). */
@@ -65,7 +67,7 @@ const sleep = (ms: number): Promise<void> => new Promise((r) => setTimeout(r, ms
 
 /** A server that misbehaves in no way: the faults a test starts from, and goes back to after. */
 export function noFaults(): Faults {
-  return { chunkFailRate: 0, seed: 1, notFound: new Set(), unavailable: new Set(), unavailableOnce: new Set(), delayMs: () => 0, appDelayMs: () => 0, appNotFound: () => false, corrupt: new Map(), gzipWithoutEncoding: false };
+  return { chunkFailRate: 0, seed: 1, notFound: new Set(), unavailable: new Set(), unavailableOnce: new Set(), delayMs: () => 0, heldUntil: () => undefined, appDelayMs: () => 0, appNotFound: () => false, corrupt: new Map(), gzipWithoutEncoding: false };
 }
 
 export async function startTestServer(opts: { clientDir: string; cubeDir: string }): Promise<TestServer> {
@@ -140,6 +142,8 @@ export async function startTestServer(opts: { clientDir: string; cubeDir: string
     void (async () => {
       const delay = faults.delayMs(file);
       if (delay > 0) await sleep(delay);
+      const gate = faults.heldUntil(file);
+      if (gate) await gate;
       if (res.destroyed || req.destroyed) return; // the browser gave up meanwhile
       if (faults.notFound.has(file)) return refuse(404);
       if (faults.unavailable.has(file) || faults.unavailableOnce.delete(file)) return refuse(503);
