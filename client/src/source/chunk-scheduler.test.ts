@@ -191,6 +191,29 @@ describe('the chunk scheduler', () => {
     assert.deepEqual(h.fetched().slice(1), ['c-1.bin', 'c-2.bin']);
   });
 
+  test('where views came slower than the rest (a slow device\'s frames), the margin waits one and a half times their pace', async (t) => {
+    // Gaps long against a timer firing late on a busy machine.
+    const rest = 300;
+    const gap = 700;
+    const h = await harness(t, handMadeCube(row(4)).files, { concurrency: 4, marginRestMs: rest }, undefined, true);
+    // On screen: c-0 (x 0..9.5). A first view has no pace: its margin (to x 29: c-1, c-2) comes
+    // after the minimum rest.
+    h.scheduler.setView(view(1, 0, 9.5, { centerX: 5, margin: [0, 29] }));
+    await eventually(() => h.fetched().length === 3, 'the first view\'s margin');
+    // Then a zoom's views, a gap apart; the last one's margin reaches x 39 (c-3).
+    let last = 0;
+    for (let seq = 2; seq <= 4; seq++) {
+      await new Promise((r) => setTimeout(r, gap));
+      last = performance.now();
+      h.scheduler.setView(view(seq, 0, 9.5 - seq / 10, { centerX: 5, margin: [0, seq === 4 ? 39 : 29] }));
+    }
+    await new Promise((r) => setTimeout(r, 2 * rest));
+    assert.deepEqual(h.fetched(), ['c-0.bin', 'c-1.bin', 'c-2.bin'], 'rested twice the minimum, less than the pace');
+    await eventually(() => h.fetched().length === 4, 'the margin requested');
+    assert.ok(performance.now() - last >= 1.5 * gap - 1, 'not before one and a half gaps');
+    assert.equal(h.fetched()[3], 'c-3.bin');
+  });
+
   test('the margin waits until every chunk on screen is on the GPU, even with requests to spare; a flight\'s path does not wait', async (t) => {
     const h = await harness(t, handMadeCube(row(7)).files, { concurrency: 4 }, () => 'hold');
     // On screen: c-0 and c-1 (x 0..19.5); the margin (to x 50) holds c-2, c-3, c-4; a view ahead c-6.

@@ -14,7 +14,9 @@ export interface SourceOptions {
   maxBackoffMs: number;
   /**
    * The prefetch margin is fetched once the view has rested this long (ms): during a zoom or a
-   * pan each view's margin is soon left behind, and would only take bandwidth and data.
+   * pan each view's margin is soon left behind, and would only take bandwidth and data. Longer
+   * where views have been coming slower than that (a slow device's frames): one and a half times
+   * their pace (ViewCadence).
    */
   marginRestMs: number;
 }
