@@ -293,6 +293,18 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     await assertMatchesSlicer(p, view, 0, 'at the floor, one chunk fetched by the worker');
   });
 
+  test('a floor chunk the server refuses (a 404) when the map fetches it for the worker is not asked for again: the view draws from the cube\'s chunks', async () => {
+    server.faults.appDelayMs = (path) => (worker.test(path) ? 500 : 0);
+    const [view] = pickPair((a) => floorOnScreen(a).length >= 2, (a) => [a]);
+    const missing = floorOnScreen(view)[0]!.file;
+    server.faults.notFound.add(missing);
+    const p = await open(view, 0, {}, [/Failed to load resource: the server responded with a status of 404/]);
+    assert.equal(await waitIdle(p.page), true);
+    const asked = chunkRequests().filter((r) => fileOf(r) === missing);
+    assert.deepEqual(asked.map((r) => r.outcome), [404], `${missing}: the map's request alone`);
+    await assertMatchesSlicer(p, view, 0, 'at the floor, one floor chunk missing');
+  });
+
   test('at the floor the cube\'s chunks come after the floor\'s, as the margin, and a zoom out draws from them without fetching more', async () => {
     const [view] = pickPair((a) => needed(a, 0).visible.length >= 3, (a) => [a]);
     const p = await open(view, 0);

@@ -80,7 +80,7 @@ scope.addEventListener('message', (ev) => {
       headStart.expect(msg.urls);
       break;
     case 'head-start-body':
-      headStart.arrived(msg.url, msg.body);
+      headStart.arrived(msg.url, msg.result);
       break;
     case 'view':
       show(msg.view);

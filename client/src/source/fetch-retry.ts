@@ -66,17 +66,18 @@ const isAbort = (err: unknown): boolean => err instanceof Error && err.name === 
 export async function fetchBytes(url: string, opts: RetryOptions, signal?: AbortSignal): Promise<ArrayBuffer> {
   const early = opts.headStart?.take(url);
   if (early) {
-    let body: ArrayBuffer | null;
+    let result: ArrayBuffer | number | null;
     try {
-      body = await untilAborted(early, url, signal);
+      result = await untilAborted(early, url, signal);
     } catch (err) {
       // Still coming: a later request for the URL waits for it, rather than asking again.
       opts.headStart?.giveBack(url, early);
       throw err;
     }
-    if (body) {
+    if (typeof result === 'number') throw new FetchFailure(`HTTP ${result} for ${url}`, 'http', url, result);
+    if (result) {
       opts.onLoaded?.(url);
-      return body;
+      return result;
     }
   }
   let attempt = 0;

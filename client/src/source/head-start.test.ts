@@ -1,17 +1,20 @@
 // The worker's side of the map's head start on the first view (head-start.ts, through
 // fetchBytes): a body the map fetched is used without asking the network, once; one the map
 // could not fetch is asked for by the worker itself, with its retries; an abort while waiting
-// ends the request at once and keeps the body for the next. The map's half: each file once,
-// each body (or null) posted, a file the worker left behind cancelled. Against a fake fetch.
+// ends the request at once and keeps the body for the next; one the server refused (4xx) fails
+// without asking again. The map's half: each file once, each body (a 4xx's status, or null)
+// posted, a file the worker left behind cancelled. Against a fake fetch.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import { eventually, settle, settled } from '../../../testing/event-loop.js';
 import { body, installFakeFetch, status } from '../../../testing/fake-fetch.js';
 import { FetchFailure, fetchBytes, type RetryOptions } from './fetch-retry.js';
-import { HeadStart, HeadStartFetches } from './head-start.js';
+import { HeadStart, HeadStartFetches, type HeadStartResult } from './head-start.js';
 
-const A = 'https://maps.test/cube/b-a.bin', B = 'https://maps.test/cube/b-b.bin';
+const A = 'https://maps.test/cube/b-a.bin', B = 'https://maps.test/cube/b-b.bin', C = 'https://maps.test/cube/b-c.bin';
 const bytesOf = (b: ArrayBuffer): number[] => [...new Uint8Array(b)];
+/** A posted result, with a body as its bytes. */
+const shown = (r: HeadStartResult): number[] | number | null => (r instanceof ArrayBuffer ? bytesOf(r) : r);
 
 describe('the head start on the first view', () => {
   test('a body the map fetched is taken without asking the network, and counted as loaded; a second request asks the network', async (t) => {
@@ -47,6 +50,16 @@ describe('the head start on the first view', () => {
     assert.equal(fetch.requests.length, 2, 'a 503, then the body');
   });
 
+  test('one the server refused (4xx) fails as the worker\'s own request would, without asking again', async (t) => {
+    const fetch = installFakeFetch(t, () => body(new Uint8Array([5])));
+    const headStart = new HeadStart();
+    headStart.expect([A]);
+    const p = fetchBytes(A, { retries: 3, backoffMs: 0, maxBackoffMs: 0, headStart });
+    headStart.arrived(A, 404);
+    await assert.rejects(settled(p, 'the failure'), (err: unknown) => err instanceof FetchFailure && err.kind === 'http' && err.status === 404 && err.message.includes(A));
+    assert.equal(fetch.requests.length, 0, 'not asked of the network');
+  });
+
   test('aborted while the map still fetches it: an abort at once, nothing asked of the network, and the body kept for the next request', async (t) => {
     const fetch = installFakeFetch(t, () => body(new Uint8Array([1])));
     const headStart = new HeadStart();
@@ -78,27 +91,27 @@ describe('the head start on the first view', () => {
 });
 
 describe('the map\'s fetches for the worker', () => {
-  test('each file once, without retries; each body posted as it comes, null for one that failed; done once all are', async (t) => {
-    const fetch = installFakeFetch(t, (url) => (url === B ? status(503) : 'hold'));
-    const posted: [string, number[] | null][] = [];
+  test('each file once, without retries; each body posted as it comes, a 4xx\'s status, null for another failure; done once all are', async (t) => {
+    const fetch = installFakeFetch(t, (url) => (url === B ? status(503) : url === C ? status(404) : 'hold'));
+    const posted: [string, number[] | number | null][] = [];
     let done = 0;
-    const fetches = new HeadStartFetches([A, B], { retries: 5, backoffMs: 0, maxBackoffMs: 0 }, (url, b) => posted.push([url, b && bytesOf(b)]), () => done++);
-    await eventually(() => posted.length === 1, 'B posted');
-    assert.deepEqual(posted, [[B, null]], 'B failed, not retried: the worker fetches it itself');
+    const fetches = new HeadStartFetches([A, B, C], { retries: 5, backoffMs: 0, maxBackoffMs: 0 }, (url, r) => posted.push([url, shown(r)]), () => done++);
+    await eventually(() => posted.length === 2, 'B and C posted');
+    assert.deepEqual(new Map(posted), new Map([[B, null], [C, 404]]), 'B failed, not retried: the worker fetches it itself; C was refused');
     assert.equal(fetches.pending, true);
     assert.equal(done, 0);
     fetch.open()[0]!.answer(body(new Uint8Array([3])));
     await eventually(() => done === 1, 'done');
-    assert.deepEqual(posted, [[B, null], [A, [3]]]);
+    assert.deepEqual(posted[2], [A, [3]]);
     assert.equal(fetches.pending, false);
-    assert.deepEqual(fetch.urls(), [A, B]);
+    assert.deepEqual(fetch.urls(), [A, B, C]);
   });
 
   test('a file the worker left behind is cancelled: its request aborted, null posted', async (t) => {
     const fetch = installFakeFetch(t, () => 'hold');
-    const posted: [string, ArrayBuffer | null][] = [];
+    const posted: [string, HeadStartResult][] = [];
     let done = 0;
-    const fetches = new HeadStartFetches([A, B], { retries: 0, backoffMs: 0, maxBackoffMs: 0 }, (url, b) => posted.push([url, b]), () => done++);
+    const fetches = new HeadStartFetches([A, B], { retries: 0, backoffMs: 0, maxBackoffMs: 0 }, (url, r) => posted.push([url, r]), () => done++);
     await eventually(() => fetch.open().length === 2, 'both asked for');
     fetches.cancel(A);
     assert.equal(fetch.requests[0]!.signal?.aborted, true);

@@ -3,24 +3,31 @@
 // more after index.json, docs/CLIENT.md "Chunk loading"), and hands the bodies over. Both
 // halves of the exchange are here: the map's (HeadStartFetches) and the worker's (HeadStart),
 // which a request for one of those files waits on instead of asking the network again.
-import { fetchBytes, type RetryOptions } from './fetch-retry.js';
+import { FetchFailure, fetchBytes, type RetryOptions } from './fetch-retry.js';
+
+/**
+ * What became of the map's fetch of a file: its body; the status of a client error (4xx), which
+ * will not change, so the worker fails the file without asking again; or null, any other failure
+ * (5xx, network, cancelled), which the worker's own request, with its retries, takes over.
+ */
+export type HeadStartResult = ArrayBuffer | number | null;
 
 /**
  * The map's half: each file fetched once, at once (the worker, which retries, fetches one that
- * fails itself), each body posted to the worker as it comes (null: its fetch failed or was
- * cancelled); `done` once every one has been posted.
+ * fails itself), each result posted to the worker as it comes; `done` once every one has been
+ * posted.
  */
 export class HeadStartFetches {
   private readonly controllers = new Map<string, AbortController>();
 
-  constructor(urls: readonly string[], retry: RetryOptions, post: (url: string, body: ArrayBuffer | null) => void, done: () => void) {
+  constructor(urls: readonly string[], retry: RetryOptions, post: (url: string, result: HeadStartResult) => void, done: () => void) {
     const once = { ...retry, retries: 0 };
     for (const url of urls) {
       const controller = new AbortController();
       this.controllers.set(url, controller);
       fetchBytes(url, once, controller.signal).then(
         (body) => post(url, body),
-        () => post(url, null),
+        (err: unknown) => post(url, err instanceof FetchFailure && err.kind === 'http' && err.status !== undefined && err.status < 500 ? err.status : null),
       ).finally(() => {
         this.controllers.delete(url);
         if (this.controllers.size === 0) done();
@@ -49,27 +56,27 @@ export class HeadStartFetches {
  * the worker's view no longer needs them (keepOnly).
  */
 export class HeadStart {
-  /** By URL: the body to come, until a request takes it. */
-  private readonly bodies = new Map<string, Promise<ArrayBuffer | null>>();
-  /** By URL: how to hand the body over, until it comes (taken or not). */
-  private readonly settles = new Map<string, (body: ArrayBuffer | null) => void>();
+  /** By URL: the result to come, until a request takes it. */
+  private readonly bodies = new Map<string, Promise<HeadStartResult>>();
+  /** By URL: how to hand the result over, until it comes (taken or not). */
+  private readonly settles = new Map<string, (result: HeadStartResult) => void>();
 
   /** The map is fetching these URLs. */
   expect(urls: readonly string[]): void {
     for (const url of urls) {
       if (this.bodies.has(url) || this.settles.has(url)) continue;
-      this.bodies.set(url, new Promise<ArrayBuffer | null>((resolve) => this.settles.set(url, resolve)));
+      this.bodies.set(url, new Promise<HeadStartResult>((resolve) => this.settles.set(url, resolve)));
     }
   }
 
-  /** The body of an expected URL came; null: the map's fetch failed, and the worker's own request (with its retries) takes over. */
-  arrived(url: string, body: ArrayBuffer | null): void {
-    this.settles.get(url)?.(body);
+  /** The result of the map's fetch of an expected URL came. */
+  arrived(url: string, result: HeadStartResult): void {
+    this.settles.get(url)?.(result);
     this.settles.delete(url);
   }
 
   /** The body the map fetches for `url`, once (a second request asks the network); undefined when it fetches none. */
-  take(url: string): Promise<ArrayBuffer | null> | undefined {
+  take(url: string): Promise<HeadStartResult> | undefined {
     const body = this.bodies.get(url);
     this.bodies.delete(url);
     return body;
@@ -86,7 +93,7 @@ export class HeadStart {
   }
 
   /** A body taken by a request that was aborted before it came: the next request for the URL takes it. */
-  giveBack(url: string, body: Promise<ArrayBuffer | null>): void {
+  giveBack(url: string, body: Promise<HeadStartResult>): void {
     if (!this.bodies.has(url)) this.bodies.set(url, body);
   }
 }

@@ -2,6 +2,7 @@
 import type { Box3, CubeIndex } from '../../../format/cube-index.js';
 import type { FaceRecord } from '../../../format/face-page.js';
 import type { DrawBlocks } from './draw-ranges.js';
+import type { HeadStartResult } from './head-start.js';
 
 /** not-requested -> requested -> received -> gpu -> evicted (-> requested ...); failed: corrupt or gave up. */
 export type ChunkStatus = 'not-requested' | 'requested' | 'received' | 'gpu' | 'evicted' | 'failed';
@@ -54,8 +55,8 @@ export type ToWorker =
   | { type: 'index-unavailable'; error: SourceErrorInfo }
   /** The map is fetching these files for the worker (its first view's floor chunks, head-start.ts), */
   | { type: 'head-start'; urls: string[] }
-  /** and here is one (null: its fetch failed). */
-  | { type: 'head-start-body'; url: string; body: ArrayBuffer | null }
+  /** and here is what became of one (its body, a client error's status, or null: failed otherwise). */
+  | { type: 'head-start-body'; url: string; result: HeadStartResult }
   | { type: 'view'; view: ViewRequest }
   | { type: 'uploaded'; file: string }
   | { type: 'evicted'; files: string[] }
