@@ -209,7 +209,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
       const statuses = new Map(await p.page.evaluate(() => [...engine.chunkStatuses()]));
       release();
       const own = needed(view, z).visible;
-      assert.ok(own.some((l) => statuses.get(l.file) !== 'gpu'), 'read while some of the view\'s own chunks were still coming');
+      assert.ok(own.some((l) => statuses.get(l.file) !== 'gpu'), 'the premise: read while some of the view\'s own chunks were still coming');
       await assertMatchesSlicer(p, view, 0, 'the interim picture: the floor', interimIds);
       assert.equal(await waitIdle(p.page), true);
       await assertMatchesSlicer(p, view, z, 'complete');
@@ -294,14 +294,17 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   });
 
   test('a floor chunk the server refuses (a 404) when the map fetches it for the worker is not asked for again: the view draws from the cube\'s chunks', async () => {
-    server.faults.appDelayMs = (path) => (worker.test(path) ? 500 : 0);
+    server.faults.appDelayMs = (path) => (worker.test(path) ? 1000 : 0);
     const [view] = pickPair((a) => floorOnScreen(a).length >= 2, (a) => [a]);
     const missing = floorOnScreen(view)[0]!.file;
     server.faults.notFound.add(missing);
     const p = await open(view, 0, {}, [/Failed to load resource: the server responded with a status of 404/]);
     assert.equal(await waitIdle(p.page), true);
+    const script = server.log.slice(logStart).find((e) => worker.test(e.path));
+    assert.ok(script && script.outcome === 200, 'the worker\'s script was served');
     const asked = chunkRequests().filter((r) => fileOf(r) === missing);
     assert.deepEqual(asked.map((r) => r.outcome), [404], `${missing}: the map's request alone`);
+    assert.ok(asked[0]!.start < script.end - 500, `${missing} asked for by the map, ${asked[0]!.start - script.start} ms after the worker's script was, which came after ${script.end - script.start} ms`);
     await assertMatchesSlicer(p, view, 0, 'at the floor, one floor chunk missing');
   });
 

@@ -29,7 +29,7 @@ export interface Faults {
   unavailableOnce: Set<string>;
   /** Delay before answering a cube request, ms (e.g. to abort it meanwhile). */
   delayMs: (file: string) => number;
-  /** A cube request waits, after its delay, until the promise given for its file settles (a gate the test opens). */
+  /** A cube request waits, after its delay, until the promise given for its file settles (a gate the test opens), at most HELD_MAX_MS. */
   heldUntil: (file: string) => Promise<void> | undefined;
   /** Delay before answering a request for the app's own files (path from the site's root, e.g. the worker's script), ms. */
   appDelayMs: (path: string) => number;
@@ -63,7 +63,14 @@ function mulberry32(seed: number): () => number {
   };
 }
 
-const sleep = (ms: number): Promise<void> => new Promise((r) => setTimeout(r, ms));
+/** `unref`: the wait does not keep the process alive. */
+const sleep = (ms: number, unref = false): Promise<void> =>
+  new Promise((r) => {
+    const t = setTimeout(r, ms);
+    if (unref) t.unref();
+  });
+/** The longest a request is held by heldUntil. */
+const HELD_MAX_MS = 30_000;
 
 /** A server that misbehaves in no way: the faults a test starts from, and goes back to after. */
 export function noFaults(): Faults {
@@ -143,7 +150,8 @@ export async function startTestServer(opts: { clientDir: string; cubeDir: string
       const delay = faults.delayMs(file);
       if (delay > 0) await sleep(delay);
       const gate = faults.heldUntil(file);
-      if (gate) await gate;
+      // A test that fails before opening its gate still ends: the request goes after HELD_MAX_MS.
+      if (gate) await Promise.race([gate.catch(() => undefined), sleep(HELD_MAX_MS, true)]);
       if (res.destroyed || req.destroyed) return; // the browser gave up meanwhile
       if (faults.notFound.has(file)) return refuse(404);
       if (faults.unavailable.has(file) || faults.unavailableOnce.delete(file)) return refuse(503);

@@ -102,8 +102,8 @@ export class ChunkResidency {
     this.aheadChanged = true;
   }
 
-  /** Sends view `seq` to the worker unless it has it; `aheadQuery` turns a view to come into its query. */
-  request(seq: number, q: ViewQuery, aheadQuery: (c: Camera) => ViewQuery): void {
+  /** Sends view `seq` to the worker unless it has it; `aheadQuery` turns a view to come into its query; `frameMs`: the device's time per frame. */
+  request(seq: number, q: ViewQuery, aheadQuery: (c: Camera) => ViewQuery, frameMs = 0): void {
     if (this.sentSeq === seq && !this.aheadChanged) return;
     this.sentSeq = seq;
     this.aheadChanged = false;
@@ -111,7 +111,7 @@ export class ChunkResidency {
       const a = aheadQuery(c);
       return { box: a.margin, zMin: a.zMin, zMax: a.zMax, centerX: c.x, centerY: c.y, z: a.z };
     });
-    this.source.setView({ seq, visible: q.visible, margin: q.margin, zMin: q.zMin, zMax: q.zMax, centerX: q.view.centerX, centerY: q.view.centerY, z: q.z, ahead });
+    this.source.setView({ seq, visible: q.visible, margin: q.margin, zMin: q.zMin, zMax: q.zMax, centerX: q.view.centerX, centerY: q.view.centerY, z: q.z, ahead, frameMs });
   }
 
   /** Uploads chunks that arrived, within the per-frame byte budget; true when any that went up meets `drawn` or is of the interim floor. */

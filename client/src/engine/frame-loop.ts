@@ -11,6 +11,7 @@ import type { GpuLineChunk } from '../render/gpu-line-chunk.js';
 import type { Renderer } from '../render/renderer.js';
 import { jitter, weight } from '../render/supersampling.js';
 import { queryView, type ChunkResidency, type ViewQuery } from './chunk-residency.js';
+import { FramePace } from './frame-pace.js';
 import type { MapCanvas } from './map-canvas.js';
 import { underView } from '../source/floor-choice.js';
 
@@ -102,6 +103,8 @@ export class FrameLoop {
   private sentEarly = false;
   /** The overlays changed: the finished map is shown again with them, without drawing it again. */
   private overlaysDue = false;
+  /** The device's time per frame, told to the worker with each view. */
+  private readonly pace = new FramePace();
   /** The last frame's stats; the targets' bytes are read as they are now (stats). */
   private lastStats: Omit<RenderStats, 'targetBytes'> = EMPTY_STATS;
 
@@ -231,7 +234,7 @@ export class FrameLoop {
   private request(): ViewQuery {
     const margin = this.settings.prefetchMargin;
     const q = queryView(this.view, this.canvas.geometry(this.view), margin);
-    this.residency.request(this.viewSeq, q, (c) => queryView(this.view, this.canvas.geometry(this.view, c), margin, this.view.zAt(c.scale)));
+    this.residency.request(this.viewSeq, q, (c) => queryView(this.view, this.canvas.geometry(this.view, c), margin, this.view.zAt(c.scale)), this.pace.ms);
     return q;
   }
 
@@ -313,6 +316,7 @@ export class FrameLoop {
     // without a change (a late answer, a failed or dropped chunk) draws nothing, since one more
     // jittered frame averaged in would blur its edges. Every change resets `accumulated`.
     if (this.accumulated < supersampling) {
+      this.pace.frameAt(t);
       if (this.firstCompleteAt === null) this.lastPartialFrame = t;
       const n = this.accumulated;
       const colour = colourParams({ view: q.view, ratio: this.canvas.deviceRatio(), boundaries, paints: this.settings.paints, blendDistance: blendOn ? blending.distance : 0, weight: weight(n) });

@@ -9,8 +9,8 @@
 // - the margin waits until every on-screen chunk is on the GPU (or failed): on a slow link it
 //   would share its bandwidth, and the map uploads every chunk that has come before it calls a
 //   frame complete, so it would hold back the complete map. It also waits until the view has rested
-//   (`marginRestMs`, or longer where views come slower than that: ViewCadence): during a zoom
-//   or a pan each view's margin is soon left behind, and fetching it only costs data
+//   (`marginRestMs`, or one and a half of the map's frames where they take longer, restMs):
+//   during a zoom or a pan each view's margin is soon left behind, and fetching it only costs data
 //   (bench:session, bgt_otterlo_1800m: 2.18 -> 1.90 MB). The views ahead do not wait: during a
 //   flight some on-screen chunk is nearly always coming, and the path must be fetched ahead;
 // - below the floor's top the floor chunks go on screen, and the cube's chunks are the margin
@@ -27,7 +27,6 @@ import { floorChoice, interimApplies, interimFloor, underView } from './floor-ch
 import { FetchFailure, type RetryOptions } from './fetch-retry.js';
 import { indexError } from './index-error.js';
 import type { IndexTree } from './index-tree.js';
-import { ViewCadence } from './view-cadence.js';
 import type { ChunkStatus, FromWorker, SourceErrorInfo, SourceOptions, ViewRequest } from './worker-protocol.js';
 
 /** A surface chunk or a line chunk: fetched, ranked and tracked alike. */
@@ -51,6 +50,8 @@ const MARGIN_TIER = 1e6;
 const INTERIM_TIER = 1e6;
 /** Chunks of the i-th view ahead rank from AHEAD_TIER + i * MARGIN_TIER. */
 const AHEAD_TIER = 1e8;
+/** A view has rested once it has lasted this many of the map's frames (and marginRestMs). */
+const REST_FRAMES = 1.5;
 
 export class ChunkScheduler {
   private readonly entries = new Map<string, Entry>();
@@ -59,9 +60,8 @@ export class ChunkScheduler {
   private readonly failed = new Set<string>();
   private inFlight = 0;
   private view: ViewRequest | null = null;
-  /** When the view last changed (performance.now()), the pace of the views before it, and the timer that starts the margin once it has rested. */
+  /** When the view last changed (performance.now()), and the timer that starts the margin once it has rested. */
   private viewSince = 0;
-  private readonly cadence = new ViewCadence();
   private restTimer: ReturnType<typeof setTimeout> | null = null;
   /** The cube's sub-index files a view at the floor reaches: loaded once its floor chunks on screen are on the GPU (pump). */
   private marginSubs: string[] = [];
@@ -78,10 +78,7 @@ export class ChunkScheduler {
 
   setView(view: ViewRequest): void {
     // The same view again (its sub-index files came in) has not moved.
-    if (this.view?.seq !== view.seq) {
-      this.viewSince = performance.now();
-      this.cadence.viewAt(this.viewSince);
-    }
+    if (this.view?.seq !== view.seq) this.viewSince = performance.now();
     this.view = view;
     const t0 = performance.now();
     const q = { ground: view.margin, zMin: view.zMin, zMax: view.zMax };
@@ -241,7 +238,7 @@ export class ChunkScheduler {
     }
     if (this.inFlight >= this.opts.concurrency) return;
     waiting.sort((a, b) => a.priority - b.priority);
-    const restLeft = this.viewSince + this.cadence.restMs(this.opts.marginRestMs) - performance.now();
+    const restLeft = this.viewSince + this.restMs() - performance.now();
     let marginWaits = false;
     for (const e of waiting) {
       if (this.inFlight >= this.opts.concurrency) break;
@@ -257,6 +254,17 @@ export class ChunkScheduler {
         this.pump();
       }, restLeft);
     }
+  }
+
+  /**
+   * How long the view must rest before its margin is fetched: on a device whose frames take
+   * longer than marginRestMs (a slow phone, a software GPU), each view of a zoom outlasted it
+   * and fetched its margin (bench:session, nlcd_zion with 393 ms frames: 4.94 MB, of which 3.93
+   * its views' own chunks).
+   */
+  private restMs(): number {
+    const min = this.opts.marginRestMs;
+    return min > 0 ? Math.max(min, REST_FRAMES * (this.view?.frameMs ?? 0)) : 0;
   }
 
   private start(e: Entry): void {

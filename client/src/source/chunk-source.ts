@@ -108,7 +108,7 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
     this.headStarts = new HeadStartFetches(
       urls,
       this.opts,
-      (url, result) => this.worker.postMessage({ type: 'head-start-body', url, result } satisfies ToWorker, result instanceof ArrayBuffer ? [result] : []),
+      (url, result) => this.worker.postMessage({ type: 'head-start-result', url, result } satisfies ToWorker, result instanceof ArrayBuffer ? [result] : []),
       () => this.fire('handed-over', undefined),
     );
   }

@@ -79,7 +79,7 @@ scope.addEventListener('message', (ev) => {
     case 'head-start':
       headStart.expect(msg.urls);
       break;
-    case 'head-start-body':
+    case 'head-start-result':
       headStart.arrived(msg.url, msg.result);
       break;
     case 'view':

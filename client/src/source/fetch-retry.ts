@@ -1,7 +1,7 @@
 // fetch with retries: server errors (5xx) and network failures are retried with exponential
 // backoff, since they are usually passing; client errors (4xx) are not, they will not change.
 import { gunzipIfNeeded } from './gunzip.js';
-import type { HeadStart } from './head-start.js';
+import type { HeadStart, HeadStartResult } from './head-start.js';
 
 export interface RetryOptions {
   /** Retries after the first attempt. */
@@ -16,6 +16,9 @@ export interface RetryOptions {
 }
 
 export type FetchFailureKind = 'http' | 'network' | 'abort';
+
+/** A client error (4xx): it will not change, so it is not asked again. */
+export const isClientError = (status: number): boolean => status < 500;
 
 export class FetchFailure extends Error {
   constructor(
@@ -66,7 +69,7 @@ const isAbort = (err: unknown): boolean => err instanceof Error && err.name === 
 export async function fetchBytes(url: string, opts: RetryOptions, signal?: AbortSignal): Promise<ArrayBuffer> {
   const early = opts.headStart?.take(url);
   if (early) {
-    let result: ArrayBuffer | number | null;
+    let result: HeadStartResult;
     try {
       result = await untilAborted(early, url, signal);
     } catch (err) {
@@ -94,7 +97,7 @@ export async function fetchBytes(url: string, opts: RetryOptions, signal?: Abort
       // Drain nothing: the body of an error is not needed; cancel it to free the connection.
       void res.body?.cancel().catch(() => undefined);
       failure = new FetchFailure(`HTTP ${res.status} for ${url}`, 'http', url, res.status, attempt);
-      if (res.status < 500) throw failure;
+      if (isClientError(res.status)) throw failure;
     } catch (err) {
       if (err instanceof FetchFailure) throw err;
       if (isAbort(err) || signal?.aborted) throw new FetchFailure('aborted', 'abort', url, undefined, attempt);

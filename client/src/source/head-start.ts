@@ -3,7 +3,7 @@
 // more after index.json, docs/CLIENT.md "Chunk loading"), and hands the bodies over. Both
 // halves of the exchange are here: the map's (HeadStartFetches) and the worker's (HeadStart),
 // which a request for one of those files waits on instead of asking the network again.
-import { FetchFailure, fetchBytes, type RetryOptions } from './fetch-retry.js';
+import { FetchFailure, fetchBytes, isClientError, type RetryOptions } from './fetch-retry.js';
 
 /**
  * What became of the map's fetch of a file: its body; the status of a client error (4xx), which
@@ -14,8 +14,8 @@ export type HeadStartResult = ArrayBuffer | number | null;
 
 /**
  * The map's half: each file fetched once, at once (the worker, which retries, fetches one that
- * fails itself), each result posted to the worker as it comes; `done` once every one has been
- * posted.
+ * fails other than with a 4xx itself), each result posted to the worker as it comes; `done`
+ * once every one has been posted.
  */
 export class HeadStartFetches {
   private readonly controllers = new Map<string, AbortController>();
@@ -27,7 +27,7 @@ export class HeadStartFetches {
       this.controllers.set(url, controller);
       fetchBytes(url, once, controller.signal).then(
         (body) => post(url, body),
-        (err: unknown) => post(url, err instanceof FetchFailure && err.kind === 'http' && err.status !== undefined && err.status < 500 ? err.status : null),
+        (err: unknown) => post(url, err instanceof FetchFailure && err.kind === 'http' && err.status !== undefined && isClientError(err.status) ? err.status : null),
       ).finally(() => {
         this.controllers.delete(url);
         if (this.controllers.size === 0) done();
@@ -35,7 +35,7 @@ export class HeadStartFetches {
     }
   }
 
-  /** Some body has not been posted yet. */
+  /** Some result has not been posted yet. */
   get pending(): boolean {
     return this.controllers.size > 0;
   }
@@ -52,20 +52,20 @@ export class HeadStartFetches {
 }
 
 /**
- * The worker's half: the bodies the map fetches for it, by URL, until a request takes them or
+ * The worker's half: the results of the map's fetches for it, by URL, until a request takes them or
  * the worker's view no longer needs them (keepOnly).
  */
 export class HeadStart {
   /** By URL: the result to come, until a request takes it. */
-  private readonly bodies = new Map<string, Promise<HeadStartResult>>();
+  private readonly results = new Map<string, Promise<HeadStartResult>>();
   /** By URL: how to hand the result over, until it comes (taken or not). */
   private readonly settles = new Map<string, (result: HeadStartResult) => void>();
 
   /** The map is fetching these URLs. */
   expect(urls: readonly string[]): void {
     for (const url of urls) {
-      if (this.bodies.has(url) || this.settles.has(url)) continue;
-      this.bodies.set(url, new Promise<HeadStartResult>((resolve) => this.settles.set(url, resolve)));
+      if (this.results.has(url) || this.settles.has(url)) continue;
+      this.results.set(url, new Promise<HeadStartResult>((resolve) => this.settles.set(url, resolve)));
     }
   }
 
@@ -75,25 +75,25 @@ export class HeadStart {
     this.settles.delete(url);
   }
 
-  /** The body the map fetches for `url`, once (a second request asks the network); undefined when it fetches none. */
+  /** The result of the map's fetch of `url`, once (a second request asks the network); undefined when it fetches none. */
   take(url: string): Promise<HeadStartResult> | undefined {
-    const body = this.bodies.get(url);
-    this.bodies.delete(url);
-    return body;
+    const result = this.results.get(url);
+    this.results.delete(url);
+    return result;
   }
 
-  /** Some body has not been taken yet: only then is there anything for keepOnly to let go. */
+  /** Some result has not been taken yet: only then is there anything for keepOnly to let go. */
   get holding(): boolean {
-    return this.bodies.size > 0;
+    return this.results.size > 0;
   }
 
-  /** Forgets the bodies not taken yet whose URL `keep` does not keep (the view that wanted them moved on). */
+  /** Forgets the results not taken yet whose URL `keep` does not keep (the view that wanted them moved on). */
   keepOnly(keep: (url: string) => boolean): void {
-    for (const url of [...this.bodies.keys()]) if (!keep(url)) this.bodies.delete(url);
+    for (const url of [...this.results.keys()]) if (!keep(url)) this.results.delete(url);
   }
 
-  /** A body taken by a request that was aborted before it came: the next request for the URL takes it. */
-  giveBack(url: string, body: Promise<HeadStartResult>): void {
-    if (!this.bodies.has(url)) this.bodies.set(url, body);
+  /** A result taken by a request that was aborted before it came: the next request for the URL takes it. */
+  giveBack(url: string, result: Promise<HeadStartResult>): void {
+    if (!this.results.has(url)) this.results.set(url, result);
   }
 }

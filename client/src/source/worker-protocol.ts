@@ -16,8 +16,7 @@ export interface SourceOptions {
   /**
    * The prefetch margin is fetched once the view has rested this long (ms): during a zoom or a
    * pan each view's margin is soon left behind, and would only take bandwidth and data. Longer
-   * where views have been coming slower than that (a slow device's frames): one and a half times
-   * their pace (ViewCadence).
+   * where the map's frames take longer (ViewRequest.frameMs): one and a half frames. 0: no wait.
    */
   marginRestMs: number;
 }
@@ -36,6 +35,8 @@ export interface ViewRequest {
   z: number;
   /** Views the map will show soon, in order (a flight's path): their chunks are fetched after the view's own. */
   ahead?: AheadView[];
+  /** How long the map's frames take on this device (ms, FramePace); 0 or absent: not known. */
+  frameMs?: number;
 }
 
 /** A view to come: its ground box, the z range of its surface, its centre and base z. */
@@ -56,7 +57,7 @@ export type ToWorker =
   /** The map is fetching these files for the worker (its first view's floor chunks, head-start.ts), */
   | { type: 'head-start'; urls: string[] }
   /** and here is what became of one (its body, a client error's status, or null: failed otherwise). */
-  | { type: 'head-start-body'; url: string; result: HeadStartResult }
+  | { type: 'head-start-result'; url: string; result: HeadStartResult }
   | { type: 'view'; view: ViewRequest }
   | { type: 'uploaded'; file: string }
   | { type: 'evicted'; files: string[] }
