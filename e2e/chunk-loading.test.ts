@@ -119,9 +119,9 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     return m;
   };
 
-  async function open(bbox: Bbox, z: number, extra: Record<string, string | number> = {}, expect: RegExp[] = []): Promise<MapPage> {
+  async function open(bbox: Bbox, z: number, extra: Record<string, string | number> = {}, expect: RegExp[] = [], initScript?: string): Promise<MapPage> {
     logStart = server.log.length;
-    mp = await openMap(browser, server.url, { source: 'cube/', bbox: bbox.join(','), z, supersampling: 1, ...extra }, { expect });
+    mp = await openMap(browser, server.url, { source: 'cube/', bbox: bbox.join(','), z, supersampling: 1, ...extra }, initScript ? { expect, initScript } : { expect });
     return mp;
   }
 
@@ -339,6 +339,38 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     const now = files(needed(view, z).all);
     for (const f of later) assert.ok(now.has(f) && !marginFiles.has(f), `${f}: fetched again, or not the cube's over the view`);
     await assertMatchesSlicer(p, view, z, 'just above the floor');
+  });
+
+  test('where the map\'s frames are slow (a slow device), a view rests one and a half frames before its margin is fetched', async () => {
+    const z = 30;
+    const frameMs = 600;
+    const east = (x: Bbox, d: number): Bbox => [x[0] + d, x[1], x[2] + d, x[3]];
+    /** Chunks the margin of a pan of `x` 12 m east needs that the margin of `x` did not. */
+    const newMargin = (x: Bbox): string[] => needed(east(x, 12), z).all.map((l) => l.file).filter((f) => !files(needed(x, z).all).has(f));
+    // A pan whose chunks on screen are all fetched already: its margin waits for the rest alone.
+    // (The small moves before it stay within the chunks of a.)
+    const [a, b] = pickPair((x, y) => fresh(x, y, z).length === 0 && newMargin(x).length >= 1, (x) => [east(x, 12)]);
+    // Every animation frame comes frameMs after it was asked for.
+    const slowFrames = `window.requestAnimationFrame = (cb) => setTimeout(() => cb(performance.now()), ${frameMs}); window.cancelAnimationFrame = (id) => clearTimeout(id);`;
+    const p = await open(a, z, {}, [], slowFrames);
+    assert.equal(await waitIdle(p.page), true);
+    await p.page.waitForFunction((fs) => fs.every((f) => engine.chunkStatuses().get(f) === 'gpu'), needed(a, z).all.map((l) => l.file));
+    // A few small moves, one a frame, as a pan or a zoom draws them: the map learns its pace.
+    await p.page.evaluate(async ([aa, zz]) => {
+      for (let i = 1; i <= 4; i++) {
+        map.fitBoundsProjected([aa[0] + i / 10, aa[1], aa[2] + i / 10, aa[3]], { sliceZ: zz, duration: 0 });
+        await map.once('render');
+      }
+    }, [a, z] as const);
+    await p.page.evaluate(([bb, zz]) => map.fitBoundsProjected(bb, { sliceZ: zz, duration: 0 }), [b, z] as const);
+    const panned = Date.now();
+    const later = newMargin(a);
+    await p.page.waitForFunction((fs) => fs.every((f) => engine.chunkStatuses().get(f) === 'gpu'), later);
+    const asked = chunkRequests().filter((r) => later.includes(fileOf(r)));
+    assert.equal(asked.length, later.length, 'each new margin chunk asked for once');
+    const first = Math.min(...asked.map((r) => r.start));
+    // Not after marginRestMs (300 ms) as on a fast device.
+    assert.ok(first - panned >= 1.5 * frameMs - 200, `the margin asked for ${first - panned} ms after the pan`);
   });
 
   test('chunks on screen and nearest the view centre are fetched first', async () => {
