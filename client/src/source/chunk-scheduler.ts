@@ -8,11 +8,12 @@
 //   then those of the views ahead (a flight's path), in the order they will be shown;
 // - the margin waits until every on-screen chunk is on the GPU (or failed): on a slow link it
 //   would share its bandwidth, and the map uploads every chunk that has come before it calls a
-//   frame complete, so it would hold back the complete map. It also waits until the view has rested
-//   (`marginRestMs`, or one and a half of the map's frames where they take longer, restMs):
-//   during a zoom or a pan each view's margin is soon left behind, and fetching it only costs data
-//   (bench:session, bgt_otterlo_1800m: 2.18 -> 1.90 MB). The views ahead do not wait: during a
-//   flight some on-screen chunk is nearly always coming, and the path must be fetched ahead;
+//   frame complete, so it would hold back the complete map. It also waits until the view has
+//   rested (`marginRestMs`, or one and a half of the map's frames where they take longer,
+//   restMs): during a zoom or a pan each view's margin is soon left behind, and fetching it
+//   only costs data (bench:session, bgt_otterlo_1800m: 2.18 -> 1.90 MB). The views ahead do
+//   not wait: during a flight some on-screen chunk is nearly always coming, and the path must
+//   be fetched ahead;
 // - below the floor's top the floor chunks go on screen, and the cube's chunks are the margin
 //   (floorShown): the first map at the base scale takes a fifth of the bytes. The cube's
 //   sub-index files wait, as the margin does, until the floor chunks on screen are on the GPU;
@@ -259,8 +260,8 @@ export class ChunkScheduler {
   /**
    * How long the view must rest before its margin is fetched: on a device whose frames take
    * longer than marginRestMs (a slow phone, a software GPU), each view of a zoom outlasted it
-   * and fetched its margin (bench:session, nlcd_zion with 393 ms frames: 4.94 MB, of which 3.93
-   * its views' own chunks).
+   * and fetched its margin (bench:session, nlcd_zion with frames of about 320 ms: 4.94 -> 4.36
+   * MB for the session, of which 3.93 its views' own chunks).
    */
   private restMs(): number {
     const min = this.opts.marginRestMs;

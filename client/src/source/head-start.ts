@@ -52,8 +52,8 @@ export class HeadStartFetches {
 }
 
 /**
- * The worker's half: the results of the map's fetches for it, by URL, until a request takes them or
- * the worker's view no longer needs them (keepOnly).
+ * The worker's half: the results of the map's fetches for it, by URL, until a request takes
+ * them or the worker's view no longer needs them (keepOnly).
  */
 export class HeadStart {
   /** By URL: the result to come, until a request takes it. */
