@@ -61,6 +61,16 @@ describe('fetch with retries', () => {
     assert.equal(new TextDecoder().decode(await settled(p, 'the body')), 'ok');
   });
 
+  for (const code of [408, 429]) {
+    test(`${code} passes (a timeout, a CDN's answer to a burst): retried like a server error`, async (t) => {
+      t.mock.timers.enable({ apis: ['setTimeout'] });
+      const f = installFakeFetch(t, (_url, n) => (n === 1 ? status(code) : body('ok')));
+      const p = fetchBytes(URL_A, opts(3));
+      await nextAttemptAfter(t, f, 100);
+      assert.equal(new TextDecoder().decode(await settled(p, 'the body')), 'ok');
+    });
+  }
+
   for (const code of [400, 403, 404, 410]) {
     test(`${code} is not retried: it fails at once and never asks again`, async (t) => {
       t.mock.timers.enable({ apis: ['setTimeout'] });

@@ -1,5 +1,6 @@
-// fetch with retries: server errors (5xx) and network failures are retried with exponential
-// backoff, since they are usually passing; client errors (4xx) are not, they will not change.
+// fetch with retries: server errors (5xx), network failures, 408 (Request Timeout) and 429 (Too
+// Many Requests: a CDN's answer to a burst) are retried with exponential backoff, since they are
+// usually passing; other client errors (4xx) are not, they will not change.
 import { gunzipIfNeeded } from './gunzip.js';
 import type { HeadStart, HeadStartResult } from './head-start.js';
 
@@ -17,8 +18,8 @@ export interface RetryOptions {
 
 export type FetchFailureKind = 'http' | 'network' | 'abort';
 
-/** A client error (4xx): it will not change, so it is not asked again. */
-export const isClientError = (status: number): boolean => status < 500;
+/** A failure that will not change, so it is not asked again: a client error (4xx) other than 408 and 429, which pass. */
+export const isLasting = (status: number): boolean => status < 500 && status !== 408 && status !== 429;
 
 export class FetchFailure extends Error {
   constructor(
@@ -97,7 +98,7 @@ export async function fetchBytes(url: string, opts: RetryOptions, signal?: Abort
       // Drain nothing: the body of an error is not needed; cancel it to free the connection.
       void res.body?.cancel().catch(() => undefined);
       failure = new FetchFailure(`HTTP ${res.status} for ${url}`, 'http', url, res.status, attempt);
-      if (isClientError(res.status)) throw failure;
+      if (isLasting(res.status)) throw failure;
     } catch (err) {
       if (err instanceof FetchFailure) throw err;
       if (isAbort(err) || signal?.aborted) throw new FetchFailure('aborted', 'abort', url, undefined, attempt);

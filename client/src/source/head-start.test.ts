@@ -91,8 +91,8 @@ describe('the head start on the first view', () => {
 });
 
 describe('the map\'s fetches for the worker', () => {
-  test('each file once, without retries; each body posted as it comes, a 4xx\'s status, null for another failure; done once all are', async (t) => {
-    const fetch = installFakeFetch(t, (url) => (url === B ? status(503) : url === C ? status(404) : 'hold'));
+  test('each file once, without retries; each body posted as it comes, a lasting 4xx\'s status, null for another failure (a 429); done once all are', async (t) => {
+    const fetch = installFakeFetch(t, (url) => (url === B ? status(429) : url === C ? status(404) : 'hold'));
     const posted: [string, number[] | number | null][] = [];
     let done = 0;
     const fetches = new HeadStartFetches([A, B, C], { retries: 5, backoffMs: 0, maxBackoffMs: 0 }, (url, r) => posted.push([url, shown(r)]), () => done++);

@@ -3,19 +3,20 @@
 // more after index.json, docs/CLIENT.md "Chunk loading"), and hands the bodies over. Both
 // halves of the exchange are here: the map's (HeadStartFetches) and the worker's (HeadStart),
 // which a request for one of those files waits on instead of asking the network again.
-import { FetchFailure, fetchBytes, isClientError, type RetryOptions } from './fetch-retry.js';
+import { FetchFailure, fetchBytes, isLasting, type RetryOptions } from './fetch-retry.js';
 
 /**
- * What became of the map's fetch of a file: its body; the status of a client error (4xx), which
- * will not change, so the worker fails the file without asking again; or null, any other failure
- * (5xx, network, cancelled), which the worker's own request, with its retries, takes over.
+ * What became of the map's fetch of a file: its body; the status of a client error (4xx) that
+ * will not change (isLasting), so the worker fails the file without asking again; or null, any
+ * other failure (5xx, 429, network, cancelled), which the worker's own request, with its
+ * retries, takes over.
  */
 export type HeadStartResult = ArrayBuffer | number | null;
 
 /**
  * The map's half: each file fetched once, at once (the worker, which retries, fetches one that
- * fails other than with a 4xx itself), each result posted to the worker as it comes; `done`
- * once every one has been posted.
+ * fails other than with a lasting 4xx itself), each result posted to the worker as it comes;
+ * `done` once every one has been posted.
  */
 export class HeadStartFetches {
   private readonly controllers = new Map<string, AbortController>();
@@ -27,7 +28,7 @@ export class HeadStartFetches {
       this.controllers.set(url, controller);
       fetchBytes(url, once, controller.signal).then(
         (body) => post(url, body),
-        (err: unknown) => post(url, err instanceof FetchFailure && err.kind === 'http' && err.status !== undefined && isClientError(err.status) ? err.status : null),
+        (err: unknown) => post(url, err instanceof FetchFailure && err.kind === 'http' && err.status !== undefined && isLasting(err.status) ? err.status : null),
       ).finally(() => {
         this.controllers.delete(url);
         if (this.controllers.size === 0) done();
