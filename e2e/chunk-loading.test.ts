@@ -24,7 +24,7 @@ import { openMap, type MapPage } from './helpers/browser.js';
 import { compareIds, cpuSlice, type BuiltCube, type CubeContents } from './helpers/cube.js';
 import { checkAndClose, setUpTestBed, tearDownTestBed } from './helpers/test-bed.js';
 import { eventually } from '../testing/event-loop.js';
-import { readIds, waitIdle, type PageIds } from './helpers/map-page.js';
+import { readIds, untilOnGpu, waitIdle, type PageIds } from './helpers/map-page.js';
 import { noFaults, type LoggedRequest, type TestServer } from './helpers/test-server.js';
 
 const W = 640, H = 480;
@@ -240,6 +240,17 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   /** The worker's script, as the test page's build names it. */
   const worker = /^\/assets\/chunk-worker-[\w-]+\.js$/;
 
+  /**
+   * Asserts that `asked`, the first request for `what`, went out while the worker's script (its
+   * request in this test's log, served) was still coming: at least 500 ms before it came.
+   */
+  const assertAskedBeforeScript = (what: string, asked: LoggedRequest | undefined): void => {
+    const script = server.log.slice(logStart).find((e) => worker.test(e.path));
+    assert.ok(script && script.outcome === 200, 'the worker\'s script was served');
+    assert.ok(asked, `${what} asked for`);
+    assert.ok(asked.start < script.end - 500, `${what} asked for ${asked.start - script.start} ms after the worker's script was, which came after ${script.end - script.start} ms`);
+  };
+
   test('at the floor the first view\'s floor chunks are asked for while the worker\'s script is still coming, each once, and the map equals the CPU slicer', async () => {
     // The worker's script comes a second late, as its 33 kB gzip would on a slow phone network:
     // the map reads index.json and fetches the first view's floor chunks for the worker meanwhile.
@@ -247,13 +258,11 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     const [view] = pickPair((a) => floorOnScreen(a).length >= 2, (a) => [a]);
     const p = await open(view, 0);
     assert.equal(await waitIdle(p.page), true);
-    const script = server.log.slice(logStart).find((e) => worker.test(e.path));
-    assert.ok(script && script.outcome === 200, 'the worker\'s script was served');
     const requests = chunkRequests();
     for (const l of floorOnScreen(view)) {
       const asked = requests.filter((r) => fileOf(r) === l.file);
       assert.equal(asked.length, 1, `${l.file} fetched once`);
-      assert.ok(asked[0]!.start < script.end - 500, `${l.file} asked for ${asked[0]!.start - script.start} ms after the worker's script, which came after ${script.end - script.start} ms`);
+      assertAskedBeforeScript(l.file, asked[0]);
     }
     await assertMatchesSlicer(p, view, 0, 'at the floor, its chunks fetched by the map');
   });
@@ -269,12 +278,10 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     const [view] = pickPair((a) => reachedAtRoot(a).length >= 1, (a) => [a]);
     const p = await open(view, z);
     assert.equal(await waitIdle(p.page), true);
-    const script = server.log.slice(logStart).find((e) => worker.test(e.path));
-    assert.ok(script && script.outcome === 200, 'the worker\'s script was served');
     for (const ref of reachedAtRoot(view)) {
       const asked = server.log.slice(logStart).filter((e) => e.path === `/cube/${ref}`);
       assert.equal(asked.length, 1, `${ref} fetched once`);
-      assert.ok(asked[0]!.start < script.end - 500, `${ref} asked for ${asked[0]!.start - script.start} ms after the worker's script, which came after ${script.end - script.start} ms`);
+      assertAskedBeforeScript(ref, asked[0]);
     }
     await assertMatchesSlicer(p, view, z, 'above the floor, its sub-index files fetched by the map');
   });
@@ -300,11 +307,9 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     server.faults.notFound.add(missing);
     const p = await open(view, 0, {}, [/Failed to load resource: the server responded with a status of 404/]);
     assert.equal(await waitIdle(p.page), true);
-    const script = server.log.slice(logStart).find((e) => worker.test(e.path));
-    assert.ok(script && script.outcome === 200, 'the worker\'s script was served');
     const asked = chunkRequests().filter((r) => fileOf(r) === missing);
     assert.deepEqual(asked.map((r) => r.outcome), [404], `${missing}: the map's request alone`);
-    assert.ok(asked[0]!.start < script.end - 500, `${missing} asked for by the map, ${asked[0]!.start - script.start} ms after the worker's script was, which came after ${script.end - script.start} ms`);
+    assertAskedBeforeScript(`${missing}, by the map,`, asked[0]);
     await assertMatchesSlicer(p, view, 0, 'at the floor, one floor chunk missing');
   });
 
@@ -322,7 +327,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     assert.ok(order.slice(firstCube).every((f) => !floorFiles.has(f)), `the cube's chunks after every floor chunk: ${order.join(' ')}`);
     assert.deepEqual(new Set(order.slice(firstCube)), files(margin));
     // With the cube's chunks on the GPU beside the floor's, the frame draws the floor once.
-    await p.page.waitForFunction((fs) => fs.every((f) => engine.chunkStatuses().get(f) === 'gpu'), margin.map((l) => l.file));
+    await untilOnGpu(p.page, margin.map((l) => l.file));
     assert.equal(await waitIdle(p.page), true);
     const { visible } = await p.page.evaluate(() => engine.neededChunks());
     assert.ok(visible.length > 0 && visible.every((f) => floorFiles.has(f) || f.startsWith('l-')), `on screen: ${visible.join(' ')}`);
@@ -354,7 +359,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     const slowFrames = `window.requestAnimationFrame = (cb) => setTimeout(() => cb(performance.now()), ${frameMs}); window.cancelAnimationFrame = (id) => clearTimeout(id);`;
     const p = await open(a, z, {}, [], slowFrames);
     assert.equal(await waitIdle(p.page), true);
-    await p.page.waitForFunction((fs) => fs.every((f) => engine.chunkStatuses().get(f) === 'gpu'), needed(a, z).all.map((l) => l.file));
+    await untilOnGpu(p.page, needed(a, z).all.map((l) => l.file));
     // A few small moves, one a frame, as a pan or a zoom draws them: the map learns its pace.
     await p.page.evaluate(async ([aa, zz]) => {
       for (let i = 1; i <= 4; i++) {
@@ -365,7 +370,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     await p.page.evaluate(([bb, zz]) => map.fitBoundsProjected(bb, { sliceZ: zz, duration: 0 }), [b, z] as const);
     const panned = Date.now();
     const later = newMargin(a);
-    await p.page.waitForFunction((fs) => fs.every((f) => engine.chunkStatuses().get(f) === 'gpu'), later);
+    await untilOnGpu(p.page, later);
     const asked = chunkRequests().filter((r) => later.includes(fileOf(r)));
     assert.equal(asked.length, later.length, 'each new margin chunk asked for once');
     const first = Math.min(...asked.map((r) => r.start));
@@ -539,7 +544,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     const p = await open(a, z);
     assert.equal(await waitIdle(p.page), true);
     // The margin comes once the view has rested (sourceOptions.marginRestMs), after 'idle'.
-    await p.page.waitForFunction((files) => files.every((f) => engine.chunkStatuses().get(f) === 'gpu'), needed(a, z).all.map((l) => l.file));
+    await untilOnGpu(p.page, needed(a, z).all.map((l) => l.file));
     type Ev = { type: string; frame: number; loaded?: boolean; late?: (string | undefined)[]; drew?: { frame: number; chunks: number } };
     const events = async (): Promise<Ev[]> => p.page.evaluate(() => (globalThis as unknown as { evs: Ev[] }).evs.splice(0));
     await p.page.evaluate((late) => {
@@ -599,7 +604,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     await goTo(p, b, z);
     assert.equal(await waitIdle(p.page), true);
     // Margin chunks may still be arriving; wait until all of b's are in.
-    await p.page.waitForFunction((files) => files.every((f) => engine.chunkStatuses().get(f) === 'gpu'), nb.all.map((l) => l.file));
+    await untilOnGpu(p.page, nb.all.map((l) => l.file));
     const stats = await p.page.evaluate(() => engine.stats());
     assert.ok(stats.gpuBytes <= budget, `${stats.gpuBytes} bytes on the GPU, budget ${budget}`);
     const statuses = new Map(await p.page.evaluate(() => [...engine.chunkStatuses()]));
@@ -663,6 +668,26 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     const errors = await errorsSeen();
     assert.deepEqual(errors.map((e) => [e.kind, e.status, e.file]), [['http', 503, down.file]]);
     assert.equal(countBy(chunkRequests()).get(down.file), 4, 'the first attempt and 3 retries');
+  });
+
+  test('a chunk refused with 429 and Retry-After: 2 is asked again two seconds later, not after the backoff, and the view comes complete', async () => {
+    const z = 40;
+    const [start, target] = pickPair((x, y) => fresh(x, y, z).length >= 2);
+    const limited = needed(target, z).visible.find((l) => !needed(start, z).all.some((m) => m.file === l.file))!;
+    server.faults.tooManyOnce.set(limited.file, 2);
+    // A backoff of 10 ms: without Retry-After the second request would follow the first at once.
+    const p = await open(start, z, { retries: 3, backoff: 10 }, [/Failed to load resource: the server responded with a status of 429/]);
+    assert.equal(await waitIdle(p.page), true);
+    const errorsSeen = await recordErrors(p);
+    await goTo(p, target, z);
+    assert.equal(await waitIdle(p.page), true);
+    const asked = chunkRequests().filter((r) => fileOf(r) === limited.file);
+    assert.deepEqual(asked.map((r) => r.outcome), [429, 200]);
+    // The browser's clock and the server's differ by the answer's way back: 100 ms of slack.
+    const waited = asked[1]!.start - asked[0]!.end;
+    assert.ok(waited >= 1900, `asked again ${waited} ms after the 429`);
+    assert.deepEqual(await errorsSeen(), [], 'nothing for the page to hear of');
+    await assertMatchesSlicer(p, target, z, 'after the 429');
   });
 
   test('a worker script that cannot be loaded fails the map with an error that says so, and the map goes idle', async () => {

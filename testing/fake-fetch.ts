@@ -83,8 +83,8 @@ function abortReason(signal: AbortSignal | undefined): unknown {
   return signal?.reason ?? new DOMException('This operation was aborted', 'AbortError');
 }
 
-/** A response with this status and no body. */
-export const status = (code: number): Response => new Response(null, { status: code });
+/** A response with this status (and these headers) and no body. */
+export const status = (code: number, headers: Record<string, string> = {}): Response => new Response(null, { status: code, headers });
 
 /** A 200 response with a copy of these bytes (a copy: the reader may rewrite its buffer). */
 export const body = (bytes: Uint8Array | string): Response => new Response(typeof bytes === 'string' ? bytes : bytes.slice());

@@ -64,6 +64,11 @@ export async function waitIdle(page: Page): Promise<boolean> {
   }
 }
 
+/** Waits until every one of `files` is on the GPU (a margin, say, which comes after 'idle'). */
+export async function untilOnGpu(page: Page, files: readonly string[]): Promise<void> {
+  await page.waitForFunction((fs) => fs.every((f) => engine.chunkStatuses().get(f) === 'gpu'), files);
+}
+
 export type { PageIds };
 
 /** The map's ID buffer (upper and lower face, surface z and slice z per pixel). */

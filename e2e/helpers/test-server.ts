@@ -27,6 +27,8 @@ export interface Faults {
   unavailable: Set<string>;
   /** Paths answered with 503 the first time they are asked for. */
   unavailableOnce: Set<string>;
+  /** Paths answered with 429 (Too Many Requests) the first time they are asked for, with Retry-After: this many seconds. */
+  tooManyOnce: Map<string, number>;
   /** Delay before answering a cube request, ms (e.g. to abort it meanwhile). */
   delayMs: (file: string) => number;
   /** A cube request waits, after its delay, until the promise given for its file settles (a gate the test opens), at most HELD_MAX_MS. */
@@ -74,7 +76,7 @@ const HELD_MAX_MS = 30_000;
 
 /** A server that misbehaves in no way: the faults a test starts from, and goes back to after. */
 export function noFaults(): Faults {
-  return { chunkFailRate: 0, seed: 1, notFound: new Set(), unavailable: new Set(), unavailableOnce: new Set(), delayMs: () => 0, heldUntil: () => undefined, appDelayMs: () => 0, appNotFound: () => false, corrupt: new Map(), gzipWithoutEncoding: false };
+  return { chunkFailRate: 0, seed: 1, notFound: new Set(), unavailable: new Set(), unavailableOnce: new Set(), tooManyOnce: new Map(), delayMs: () => 0, heldUntil: () => undefined, appDelayMs: () => 0, appNotFound: () => false, corrupt: new Map(), gzipWithoutEncoding: false };
 }
 
 export async function startTestServer(opts: { clientDir: string; cubeDir: string }): Promise<TestServer> {
@@ -131,12 +133,12 @@ export async function startTestServer(opts: { clientDir: string; cubeDir: string
     res.on('close', () => {
       if (!res.writableFinished && entry.outcome === 'aborted') entry.end = Date.now();
     });
-    /** Answers with an error status, logged. */
-    const refuse = (status: 404 | 503): void => {
+    /** Answers with an error status (and these headers), logged. */
+    const refuse = (status: 404 | 429 | 503, headers: Record<string, string> = {}): void => {
       entry.outcome = status;
       entry.end = Date.now();
-      res.writeHead(status, { 'content-type': 'text/plain', 'cache-control': 'no-store' });
-      res.end(status === 404 ? '404 not found\n' : '503 try again\n');
+      res.writeHead(status, { 'content-type': 'text/plain', 'cache-control': 'no-store', ...headers });
+      res.end(`${status} ${status === 404 ? 'not found' : 'try again'}\n`);
     };
     if (!url.pathname.startsWith('/cube/')) {
       if (faults.appNotFound(url.pathname)) return refuse(404);
@@ -155,6 +157,8 @@ export async function startTestServer(opts: { clientDir: string; cubeDir: string
       if (res.destroyed || req.destroyed) return; // the browser gave up meanwhile
       if (faults.notFound.has(file)) return refuse(404);
       if (faults.unavailable.has(file) || faults.unavailableOnce.delete(file)) return refuse(503);
+      const retryAfter = faults.tooManyOnce.get(file);
+      if (retryAfter !== undefined && faults.tooManyOnce.delete(file)) return refuse(429, { 'retry-after': String(retryAfter) });
       if (/^[cb]-[0-9a-f]+\.bin$/.test(file) && faults.chunkFailRate > 0) {
         if (seedUsed !== faults.seed) {
           seedUsed = faults.seed;

@@ -1,12 +1,13 @@
 // Fetching with retries, against a fake fetch and fake timers: passing failures (5xx, a dropped
 // connection) are tried again after waits that double up to a cap, lasting ones (4xx) are not,
-// it gives up after the retries allowed, an abort stops it at once, and gzip JSON is read.
+// it gives up after the retries allowed, an abort stops it at once, a server's Retry-After is
+// followed, and gzip JSON is read.
 import assert from 'node:assert/strict';
 import { gzipSync } from 'node:zlib';
 import { describe, test, type TestContext } from 'node:test';
 import { eventually, settle, settled } from '../../../testing/event-loop.js';
 import { body, installFakeFetch, networkError, status, type FakeFetch } from '../../../testing/fake-fetch.js';
-import { FetchFailure, fetchBytes, fetchJson, type RetryOptions } from './fetch-retry.js';
+import { FetchFailure, fetchBytes, fetchJson, RETRY_AFTER_MAX_MS, type RetryOptions } from './fetch-retry.js';
 
 const URL_A = 'https://maps.test/cube/c-a.bin';
 const opts = (retries: number, over: Partial<RetryOptions> = {}): RetryOptions => ({ retries, backoffMs: 100, maxBackoffMs: 300, ...over });
@@ -70,6 +71,33 @@ describe('fetch with retries', () => {
       assert.equal(new TextDecoder().decode(await settled(p, 'the body')), 'ok');
     });
   }
+
+  // A fixed clock, a whole second, so that an HTTP date names an exact wait.
+  const NOW = Date.UTC(2026, 11, 5, 12, 0, 0);
+  const retryAfterCases: [string, number, string][] = [
+    ['seconds', 429, '2'],
+    ['an HTTP date', 503, new Date(NOW + 3000).toUTCString()],
+  ];
+  for (const [kind, code, value] of retryAfterCases) {
+    test(`a ${code} with Retry-After in ${kind} is asked again when the server said, not after the backoff`, async (t) => {
+      t.mock.timers.enable({ apis: ['setTimeout', 'Date'], now: NOW });
+      const f = installFakeFetch(t, (_url, n) => (n === 1 ? status(code, { 'Retry-After': value }) : body('ok')));
+      const p = fetchBytes(URL_A, opts(3));
+      await nextAttemptAfter(t, f, kind === 'seconds' ? 2000 : 3000);
+      assert.equal(new TextDecoder().decode(await settled(p, 'the body')), 'ok');
+    });
+  }
+
+  test('Retry-After never shortens the backoff, an unreadable one is ignored, and a very long one is cut to RETRY_AFTER_MAX_MS', async (t) => {
+    t.mock.timers.enable({ apis: ['setTimeout', 'Date'], now: NOW });
+    const after = ['0', 'soon', '3600'];
+    const f = installFakeFetch(t, (_url, n) => (n <= after.length ? status(429, { 'Retry-After': after[n - 1]! }) : body('ok')));
+    const p = fetchBytes(URL_A, opts(5, { maxBackoffMs: 1000 }));
+    await nextAttemptAfter(t, f, 100);
+    await nextAttemptAfter(t, f, 200);
+    await nextAttemptAfter(t, f, RETRY_AFTER_MAX_MS);
+    assert.equal(new TextDecoder().decode(await settled(p, 'the body')), 'ok');
+  });
 
   for (const code of [400, 403, 404, 410]) {
     test(`${code} is not retried: it fails at once and never asks again`, async (t) => {

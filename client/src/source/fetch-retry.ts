@@ -1,6 +1,8 @@
 // fetch with retries: server errors (5xx), network failures, 408 (Request Timeout) and 429 (Too
 // Many Requests: a CDN's answer to a burst) are retried with exponential backoff, since they are
-// usually passing; other client errors (4xx) are not, they will not change.
+// usually passing; other client errors (4xx) are not, they will not change. A server that says
+// when to come back (Retry-After) is not asked sooner: asking a CDN that rate-limits the map
+// sooner only prolongs the limit.
 import { gunzipIfNeeded } from './gunzip.js';
 import type { HeadStart, HeadStartResult } from './head-start.js';
 
@@ -20,6 +22,26 @@ export type FetchFailureKind = 'http' | 'network' | 'abort';
 
 /** A failure that will not change, so it is not asked again: a client error (4xx) other than 408 and 429, which pass. */
 export const isLasting = (status: number): boolean => status < 500 && status !== 408 && status !== 429;
+
+/**
+ * The longest a Retry-After is followed; a longer one waits this long. A chunk asked for again
+ * minutes later would come to a view long since left (a request no longer needed is aborted,
+ * its wait too).
+ */
+export const RETRY_AFTER_MAX_MS = 60_000;
+
+/**
+ * The wait a response's Retry-After asks for, in ms from `now` (ms since the epoch): delay
+ * seconds or an HTTP date (RFC 9110 §10.2.3); null when it has none, or none that reads. A
+ * cross-origin host must list the header in Access-Control-Expose-Headers for the map to see it.
+ */
+export function retryAfterMs(res: Response, now: number): number | null {
+  const v = res.headers.get('Retry-After')?.trim();
+  if (!v) return null;
+  if (/^\d+$/.test(v)) return Number(v) * 1000;
+  const at = Date.parse(v);
+  return Number.isNaN(at) ? null : Math.max(0, at - now);
+}
 
 export class FetchFailure extends Error {
   constructor(
@@ -66,6 +88,8 @@ function untilAborted<T>(p: Promise<T>, url: string, signal?: AbortSignal): Prom
 
 const isAbort = (err: unknown): boolean => err instanceof Error && err.name === 'AbortError';
 
+const httpFailure = (url: string, status: number, attempts = 1): FetchFailure => new FetchFailure(`HTTP ${status} for ${url}`, 'http', url, status, attempts);
+
 /** The body of `url` as bytes; throws FetchFailure. */
 export async function fetchBytes(url: string, opts: RetryOptions, signal?: AbortSignal): Promise<ArrayBuffer> {
   const early = opts.headStart?.take(url);
@@ -78,7 +102,7 @@ export async function fetchBytes(url: string, opts: RetryOptions, signal?: Abort
       opts.headStart?.giveBack(url, early);
       throw err;
     }
-    if (typeof result === 'number') throw new FetchFailure(`HTTP ${result} for ${url}`, 'http', url, result);
+    if (typeof result === 'number') throw httpFailure(url, result);
     if (result) {
       opts.onLoaded?.(url);
       return result;
@@ -88,6 +112,7 @@ export async function fetchBytes(url: string, opts: RetryOptions, signal?: Abort
   for (;;) {
     attempt++;
     let failure: FetchFailure;
+    let asked: number | null = null;
     try {
       const res = await fetch(url, signal ? { signal } : {});
       if (res.ok) {
@@ -97,15 +122,17 @@ export async function fetchBytes(url: string, opts: RetryOptions, signal?: Abort
       }
       // Drain nothing: the body of an error is not needed; cancel it to free the connection.
       void res.body?.cancel().catch(() => undefined);
-      failure = new FetchFailure(`HTTP ${res.status} for ${url}`, 'http', url, res.status, attempt);
+      failure = httpFailure(url, res.status, attempt);
       if (isLasting(res.status)) throw failure;
+      asked = retryAfterMs(res, Date.now());
     } catch (err) {
       if (err instanceof FetchFailure) throw err;
       if (isAbort(err) || signal?.aborted) throw new FetchFailure('aborted', 'abort', url, undefined, attempt);
       failure = new FetchFailure(`network error for ${url}: ${(err as Error).message}`, 'network', url, undefined, attempt);
     }
     if (attempt > opts.retries) throw failure;
-    const wait = Math.min(opts.maxBackoffMs, opts.backoffMs * 2 ** (attempt - 1));
+    const backoff = Math.min(opts.maxBackoffMs, opts.backoffMs * 2 ** (attempt - 1));
+    const wait = asked === null ? backoff : Math.max(backoff, Math.min(asked, RETRY_AFTER_MAX_MS));
     try {
       await sleep(wait, signal);
     } catch {
