@@ -8,6 +8,8 @@ export const SESSION_WIDTH = 1280, SESSION_HEIGHT = 720;
 
 export interface Session {
   start: ProjectedView;
+  /** The scale at which the whole extent fits the view: the map's default first view. */
+  fullScale: number;
   /** Each frame's view and the phase it belongs to. */
   frames: { phase: string; view: ProjectedView }[];
 }
@@ -26,5 +28,5 @@ export function scriptedSession(meta: CubeMeta, zoomOutFrames: number): Session 
   for (let i = 1; i <= panFrames; i++) frames.push({ phase: 'pan', view: { center: [centre[0] + (end[0] - centre[0]) * (i / panFrames), centre[1]], scale: full } });
   const inFrames = Math.max(1, Math.round(zoomOutFrames / 2));
   for (let i = 1; i <= inFrames; i++) frames.push({ phase: 'zoom in', view: { center: end, scale: full * (base / full) ** (i / inFrames) } });
-  return { start: { center: centre, scale: base }, frames };
+  return { start: { center: centre, scale: base }, fullScale: full, frames };
 }

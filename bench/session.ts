@@ -13,10 +13,10 @@
 // Each run also opens each map once more on a slow network (Chromium's own throttling, as
 // Lighthouse's "Slow 4G": 1.6 Mbit/s down, 150 ms more per request) and times its first map:
 // there the bytes and requests before the first map, code and data, count as on a phone. It does
-// so again with the map opened at the start's scale times each of `starts` (1.414 and 4; `starts=`
-// for none), at the same centre: a first view above the base scale takes the cube's own chunks
-// (or, up to twice the base scale, first the floor's: the interim floor), where MapLibre takes
-// tiles of a lower zoom.
+// so again with the map opened at the start's scale times each of `starts` (1.414 and 4, and
+// `extent`: the whole extent, the map's default first view; `starts=` for none), at the same
+// centre: a first view above the base scale takes the cube's own chunks (or, up to twice the base
+// scale, first the floor's: the interim floor), where MapLibre takes tiles of a lower zoom.
 // Prints, per dataset, the medians over `runs` runs (3) and their ratio, the vario map's data
 // bytes by kind of file, and what the session's views need of the surface chunks
 // (triangles-in-view.ts: a floor for the chunk encoding as it is); `csv=<file>` also
@@ -199,7 +199,10 @@ async function firstOnSlowNetwork(browser: Browser, url: string, log: Sent[]): P
 const mb = (b: number): string => `${(b / 1e6).toFixed(2)} MB`;
 const ratio = (a: number, b: number): string => `${(a / b).toFixed(2)}x`;
 
-async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFrames: number, startFactors: number[], csv: string[], waterfall: boolean): Promise<void> {
+/** A first view of bench:session: a factor of the start's scale, or the whole extent. */
+type StartAt = number | 'extent';
+
+async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFrames: number, startFactors: StartAt[], csv: string[], waterfall: boolean): Promise<void> {
   const tmp = await mkdtemp(path.join(tmpdir(), 'ssc-bench-session-'));
   try {
     const site = path.join(tmp, 'site');
@@ -213,7 +216,7 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
     const toLngLat = toMapLibreView(meta.proj4, WIDTH, meta.pixelSizeMm);
     const s = scriptedSession(meta, zoomOutFrames);
     // The other first views: the session's start, zoomed out by each factor.
-    const starts: ProjectedView[] = startFactors.map((f) => ({ center: s.start.center, scale: s.start.scale * f }));
+    const starts: ProjectedView[] = startFactors.map((f) => ({ center: s.start.center, scale: f === 'extent' ? s.fullScale : s.start.scale * f }));
     // MapLibre draws a 512-px vector source's tiles of floor(zoom): the tiles span the zooms
     // the session shows, the highest holding the full detail.
     const zooms = [s.start, ...starts, ...s.frames.map((f) => f.view)].map((v) => toLngLat(v).zoom);
@@ -308,7 +311,8 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
         ...starts.map((st, k) => {
           const varioMs = medianAt(results.vario, k, (a) => a.ms), mapLibreMs = medianAt(results.maplibre, k, (a) => a.ms);
           const varioBytes = medianAt(results.vario, k, (a) => a.bytes), mapLibreBytes = medianAt(results.maplibre, k, (a) => a.bytes);
-          return [`1:${Math.round(st.scale).toLocaleString('en')} (${startFactors[k]}x the start)`, `${(varioMs / 1000).toFixed(2)} s`, `${(mapLibreMs / 1000).toFixed(2)} s`, ratio(varioMs, mapLibreMs), mb(varioBytes), mb(mapLibreBytes), ratio(varioBytes, mapLibreBytes)];
+          const at = startFactors[k] === 'extent' ? 'the whole extent, the default view' : `${startFactors[k]}x the start`;
+          return [`1:${Math.round(st.scale).toLocaleString('en')} (${at})`, `${(varioMs / 1000).toFixed(2)} s`, `${(mapLibreMs / 1000).toFixed(2)} s`, ratio(varioMs, mapLibreMs), mb(varioBytes), mb(mapLibreBytes), ratio(varioBytes, mapLibreBytes)];
         }),
       ]);
     }
@@ -347,9 +351,9 @@ async function main(): Promise<void> {
   const frames = Number(args.find((a) => a.startsWith('frames='))?.slice(7) ?? 120);
   if (!Number.isInteger(frames) || frames < 1) throw new Error('frames= takes a whole number >= 1');
   const csvFile = args.find((a) => a.startsWith('csv='))?.slice(4);
-  const startsArg = args.find((a) => a.startsWith('starts='))?.slice(7) ?? '1.414,4';
-  const startFactors = startsArg === '' ? [] : startsArg.split(',').map(Number);
-  if (startFactors.some((f) => !(f > 0))) throw new Error(`starts=${startsArg}: a comma-separated list of factors > 0 (of the start's scale), or nothing`);
+  const startsArg = args.find((a) => a.startsWith('starts='))?.slice(7) ?? '1.414,4,extent';
+  const startFactors: StartAt[] = startsArg === '' ? [] : startsArg.split(',').map((w) => (w === 'extent' ? w : Number(w)));
+  if (startFactors.some((f) => f !== 'extent' && !(f > 0))) throw new Error(`starts=${startsArg}: a comma-separated list of factors > 0 (of the start's scale) or "extent", or nothing`);
   const sets = datasets(filter?.includes('=') || filter === 'waterfall' ? undefined : filter, ['bgt_otterlo_1800m', 'nlcd_zion']);
   process.stderr.write(`${version}\n`);
   const csv = ['dataset,frame,phase,scale,vario bytes so far,maplibre bytes so far,vario ms,maplibre ms,vario triangles,maplibre triangles'];

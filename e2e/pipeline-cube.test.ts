@@ -18,6 +18,7 @@ import { buildSurfaces } from '../preprocess/ssc/surfaces.js';
 import { decodeTgap, encodeTgap, readTgap } from '../format/tgap.js';
 import { faceEndZ, faceStartZ, replacedFaces, resolveFace, scaleInfoOf } from '../format/tgap-model.js';
 import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
+import { zAtScale } from '../format/scale.js';
 import { FlickerCounter } from '../bench/flicker.js';
 import { zoomZs } from '../bench/zoom-frames.js';
 import { dataset, styleFile } from '../testing/paths.js';
@@ -417,6 +418,26 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
         assert.deepEqual(sl.ids, smooth(view, z).ids, `z ${z}: the floor chunks' slice differs from the cube's`);
       }
     }
+  });
+
+  await t.test('a first view of the whole extent (the map\'s default) fetches only chunks of triangles a slice there or above needs', async () => {
+    const reader = await CubeReader.open(cubes.smooth);
+    const meta = reader.index.meta;
+    const [x0, y0, x1, y1] = meta.extent;
+    // The scale at which the extent fits a 1280 x 720 px view (the build's view model).
+    const z = zAtScale(meta, (Math.max((x1 - x0) / 1280, (y1 - y0) / 720) * 1000) / PIXEL_SIZE_MM);
+    assert.ok(z > 0 && z < zMax, `the whole extent fits at z ${z}, within the cube`);
+    const ends = await reader.faceEnds();
+    const all = await reader.loadAll();
+    const queried = await reader.query({ ground: meta.extent, zMin: z, zMax: z });
+    for (const leaf of queried) {
+      const c = await reader.chunk(leaf);
+      for (let t = 0; t < c.triangleCount; t++) {
+        const face = c.upper[c.indices[3 * t]!]!, end = ends[face] ?? Infinity;
+        assert.ok(end > z, `${leaf.file}: triangle ${t}, under face ${face}, is covered at z ${end}, below the view's ${z}`);
+      }
+    }
+    assert.ok(queried.length >= 1 && queried.length < all.length, `${queried.length} of ${all.length} chunks`);
   });
 
   await t.test('a zoom out shows no face coming back, and no pixel going back to a class', (t) => {

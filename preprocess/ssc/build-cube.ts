@@ -7,13 +7,14 @@ import path from 'node:path';
 import { brotliCompressSync, constants as zc, gzipSync } from 'node:zlib';
 import { encodeIndex, hashedName, INDEX_FORMAT, INDEX_VERSION, type ChunkLeaf, type CubeIndexJson, type LineChunkLeaf } from '../../format/cube-index.js';
 import { PIXEL_SIZE_MM } from '../../format/pixel-size.js';
-import { scaleAtZ } from '../../format/scale.js';
+import { scaleAtZ, zAtScale } from '../../format/scale.js';
 import { writeDirAtomic } from '../io/atomic-write.js';
 import { proj4Definition } from '../io/crs-definition.js';
 import { PHASES, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
 import { assembleChunk } from './assemble-chunk.js';
 import { chooseGrid, coarsestGrid } from './position-grid.js';
 import { floorTop, planChunks } from './chunking.js';
+import { wholeExtentScale } from './view-hit-chance.js';
 import { floorChunks } from './floor-chunks.js';
 import { encodeAttributePage, ATTRIBUTE_PAGE_SIZE } from '../../format/attribute-page.js';
 import { encodeFacePage, FACE_PAGE_SIZE } from '../../format/face-page.js';
@@ -112,7 +113,7 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
     targetBytes: opts.chunkBytes ?? DEFAULT_CHUNK_BYTES,
   };
   const chunking = { surfaces, xs: surfaces.xs, ys: surfaces.ys, ...view };
-  const plan = planChunks(chunking);
+  const plan = planChunks(chunking, zAtScale(info, wholeExtentScale(view)));
   lap('plan');
   const files = new Map<string, Uint8Array>();
   /** A file of the cube kept under its name by hash (hashName); returns the name. */

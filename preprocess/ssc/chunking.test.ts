@@ -39,8 +39,9 @@ const input = (g: Grid, targetBytes: number): Parameters<typeof planChunks>[0] =
   targetBytes,
 });
 
-function plan(g: Grid, targetBytes: number): ChunkPlan {
-  return planChunks(input(g, targetBytes));
+/** The plan, with no first cut for the whole extent unless `wholeExtentZ` is given. */
+function plan(g: Grid, targetBytes: number, wholeExtentZ = Infinity): ChunkPlan {
+  return planChunks(input(g, targetBytes), wholeExtentZ);
 }
 
 /** The triangles of chunk c. */
@@ -95,6 +96,34 @@ test('the same input gives the same plan', () => {
 test('input smaller than one chunk is one chunk', () => {
   const p = plan(grid(), 1 << 20);
   assert.deepEqual(p.start, [0, N * N]);
+});
+
+test('the triangles covered above the whole extent\'s z are chunked apart from the rest, each set in compact chunks', () => {
+  // A checkerboard: the dark cells' triangles are covered at z 10, the light cells' at z 2.
+  const g = grid();
+  for (let cy = 0; cy < N; cy++) for (let cx = 0; cx < N; cx++) g.surfaces.zEnd[cy * N + cx] = (cx + cy) % 2 === 0 ? 10 : 2;
+  const lasting = (t: number): boolean => g.surfaces.zEnd[t]! > 5;
+  const mixed = (p: ChunkPlan): number => Array.from({ length: chunkCount(p) }, (_, c) => chunk(p, c)).filter((ts) => ts.some(lasting) && !ts.every(lasting)).length;
+  // The premise: this model (the extent fits at the base scale) gives no reason to cut by z.
+  assert.ok(mixed(plan(g, 32 * TRI_BYTES)) > 0, 'without the cut, chunks mix the two');
+  const p = plan(g, 32 * TRI_BYTES, 5);
+  assert.equal(mixed(p), 0, 'no chunk mixes the two');
+  assert.equal(chunkCount(p), 8);
+  assert.deepEqual([...p.order].sort((a, b) => a - b), Array.from({ length: N * N }, (_, i) => i));
+  // The lasting triangles first; each set's 4 chunks tile the grid (the checkerboard's cells
+  // counted whole: 2 x 256).
+  assert.ok(chunk(p, 0).every(lasting) && chunk(p, 7).every((t) => !lasting(t)));
+  assert.equal(boxArea(g, p), 2 * N * N);
+});
+
+test('a cut that leaves one side empty, or a cube of one chunk, leaves the plan as it was', () => {
+  const g = grid();
+  for (let cy = 0; cy < N; cy++) for (let cx = 0; cx < N; cx++) g.surfaces.zEnd[cy * N + cx] = cx < N / 2 ? 10 : 2;
+  for (const [z, target] of [[10, 32 * TRI_BYTES], [-1, 32 * TRI_BYTES], [5, N * N * TRI_BYTES]] as const) {
+    const p = plan(g, target, z), q = plan(g, target);
+    assert.deepEqual([[...p.order], p.start], [[...q.order], q.start], `cut at z ${z}, ${target} bytes a chunk`);
+  }
+  assert.deepEqual(plan(g, N * N * TRI_BYTES, 5).start, [0, N * N], 'one chunk');
 });
 
 /** The grid's floor, and over it one tilted triangle a cell, its lowest corner at z = 0.25 + cell / 1000 (one piece). */

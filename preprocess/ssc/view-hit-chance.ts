@@ -13,13 +13,20 @@ export interface ViewModel {
   viewPerScale: [number, number];
 }
 
+/** The scale denominator at which the whole extent fits the model's view. */
+export function wholeExtentScale(m: ViewModel): number {
+  const [vw, vh] = m.viewPerScale;
+  const [ex0, ey0, ex1, ey1] = m.extent;
+  return Math.max((ex1 - ex0) / vw, (ey1 - ey0) / vh);
+}
+
 /** The chance function for views over the extent, from the base scale to where the whole extent fits. */
 export function viewHitChance(m: ViewModel): (...box: Box6) => number {
   const [vw, vh] = m.viewPerScale;
   const [ex0, ey0, ex1, ey1] = m.extent;
   const ew = ex1 - ex0, eh = ey1 - ey0;
   // Views are drawn evenly in log-scale from the base scale to where the whole extent fits.
-  const sMin = Math.log(m.scaleAt(0)), sMax = Math.max(sMin + 0.1, Math.log(Math.max(ew / vw, eh / vh)));
+  const sMin = Math.log(m.scaleAt(0)), sMax = Math.max(sMin + 0.1, Math.log(wholeExtentScale(m)));
   return (x0, y0, x1, y1, z0, z1) => {
     const s0 = Math.min(sMax, Math.log(m.scaleAt(z0))), s1 = Math.min(sMax, Math.log(m.scaleAt(Math.max(z0, z1))));
     if (s1 <= sMin && s0 <= sMin) return 0.05;
