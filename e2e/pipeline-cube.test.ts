@@ -420,7 +420,7 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
     }
   });
 
-  await t.test('a first view of the whole extent (the map\'s default) fetches only chunks of triangles a slice there or above needs', async () => {
+  await t.test('a first view of the whole extent (the map\'s default) queries only chunks of triangles a slice there or above needs', async () => {
     const reader = await CubeReader.open(cubes.smooth);
     const meta = reader.index.meta;
     const [x0, y0, x1, y1] = meta.extent;
@@ -432,9 +432,9 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
     const queried = await reader.query({ ground: meta.extent, zMin: z, zMax: z });
     for (const leaf of queried) {
       const c = await reader.chunk(leaf);
-      for (let t = 0; t < c.triangleCount; t++) {
-        const face = c.upper[c.indices[3 * t]!]!, end = ends[face] ?? Infinity;
-        assert.ok(end > z, `${leaf.file}: triangle ${t}, under face ${face}, is covered at z ${end}, below the view's ${z}`);
+      for (let k = 0; k < c.triangleCount; k++) {
+        const face = c.upper[c.indices[3 * k]!]!, end = ends[face] ?? Infinity;
+        assert.ok(end > z, `${leaf.file}: triangle ${k}, under face ${face}, is covered at z ${end}, below the view's ${z}`);
       }
     }
     assert.ok(queried.length >= 1 && queried.length < all.length, `${queried.length} of ${all.length} chunks`);

@@ -30,18 +30,16 @@ const EVEN_WITHIN = 0.15;
 /**
  * The cube's chunks: those of the triangles covered above `wholeExtentZ` (all that a slice there
  * or higher needs; the z at which the whole extent fits the model's view, wholeExtentScale), then
- * those of the rest. A first view of the whole extent then fetches only what it needs (bgt_otterlo_1800m at
- * 1:8,929: 359 -> 157 kB gzip, of which it needs 148; nlcd_zion at 1:212,510: 2,321 -> 1,692
- * kB, needing 1,574), and a session of zooms pays little for it (bench:session's views: 0.907
- * -> 0.864 and 3.933 -> 4.040 MB).
+ * those of the rest, so that a first view of the whole extent fetches little it does not need
+ * (docs/FORMAT.md, "index.json": the figures).
  */
 export function planChunks(inp: ChunkingInput, wholeExtentZ: number): ChunkPlan {
   const s = inp.surfaces;
   const boxes = triangleBoxes(s, inp.xs, inp.ys), bytes = triangleBytes(s);
   const above: number[] = [], below: number[] = [];
   for (let i = 0; i < s.count; i++) (s.zEnd[i]! > wholeExtentZ ? above : below).push(i);
-  // A cube that fits one chunk stays one.
-  if (above.length === 0 || below.length === 0 || bytes.reduce((a, b) => a + b, 0) <= inp.targetBytes) return planOver(inp, Uint32Array.from({ length: s.count }, (_, i) => i), boxes, bytes);
+  // A cube of one chunk (splitEvenly's count: under 1.5 chunks' worth) stays one.
+  if (above.length === 0 || below.length === 0 || Math.round(bytes.reduce((a, b) => a + b, 0) / inp.targetBytes) <= 1) return planOver(inp, Uint32Array.from({ length: s.count }, (_, i) => i), boxes, bytes);
   return joinPlans([planOver(inp, Uint32Array.from(above), boxes, bytes), planOver(inp, Uint32Array.from(below), boxes, bytes)]);
 }
 

@@ -1,5 +1,6 @@
-// The chunk index: an R-tree packed bottom-up from the chunks in their (Hilbert) order, 16
-// children a node; subtrees that would make a file too large go to sub-index files of their own.
+// The chunk index: an R-tree packed bottom-up from the chunks in the order of their plan (the
+// split's, chunking.ts: neighbours in the split are neighbours here), 16 children a node; subtrees
+// that would make a file too large go to sub-index files of their own.
 import { encodeSubIndex, type Box3, type ChunkLeaf, type IndexNode, type InnerNode } from '../../format/cube-index.js';
 
 export const FANOUT = 16;

@@ -88,14 +88,13 @@ describe('fetch with retries', () => {
     });
   }
 
-  test('Retry-After never shortens the backoff, an unreadable one is ignored, and a very long one is cut to RETRY_AFTER_MAX_MS', async (t) => {
+  test('Retry-After never shortens the backoff, one that does not read or is past is ignored, and a very long one is cut to RETRY_AFTER_MAX_MS', async (t) => {
     t.mock.timers.enable({ apis: ['setTimeout', 'Date'], now: NOW });
-    const after = ['0', 'soon', '3600'];
+    // Date.parse would read "soon 2030" as a day in 2030.
+    const after = ['0', 'soon 2030', '-5', '1.5', new Date(NOW - 60_000).toUTCString(), '3600'];
     const f = installFakeFetch(t, (_url, n) => (n <= after.length ? status(429, { 'Retry-After': after[n - 1]! }) : body('ok')));
-    const p = fetchBytes(URL_A, opts(5, { maxBackoffMs: 1000 }));
-    await nextAttemptAfter(t, f, 100);
-    await nextAttemptAfter(t, f, 200);
-    await nextAttemptAfter(t, f, RETRY_AFTER_MAX_MS);
+    const p = fetchBytes(URL_A, opts(6, { maxBackoffMs: 1000 }));
+    for (const ms of [100, 200, 400, 800, 1000, RETRY_AFTER_MAX_MS]) await nextAttemptAfter(t, f, ms);
     assert.equal(new TextDecoder().decode(await settled(p, 'the body')), 'ok');
   });
 

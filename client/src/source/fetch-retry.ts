@@ -39,9 +39,14 @@ export function retryAfterMs(res: Response, now: number): number | null {
   const v = res.headers.get('Retry-After')?.trim();
   if (!v) return null;
   if (/^\d+$/.test(v)) return Number(v) * 1000;
+  // Only an IMF-fixdate, as servers send it: Date.parse reads much else ("1.5", "soon 2030").
+  if (!/^[A-Z][a-z]{2}, \d{2} [A-Z][a-z]{2} \d{4} \d{2}:\d{2}:\d{2} GMT$/.test(v)) return null;
   const at = Date.parse(v);
   return Number.isNaN(at) ? null : Math.max(0, at - now);
 }
+
+/** The wait before asking again: the backoff's, or longer where the server asked for it (capped). */
+const waitBeforeRetry = (backoffMs: number, retryAfter: number | undefined): number => (retryAfter === undefined ? backoffMs : Math.max(backoffMs, Math.min(retryAfter, RETRY_AFTER_MAX_MS)));
 
 export class FetchFailure extends Error {
   constructor(
@@ -50,6 +55,8 @@ export class FetchFailure extends Error {
     readonly url: string,
     readonly status?: number,
     readonly attempts = 1,
+    /** A passing failure's Retry-After, ms from when it came. */
+    readonly retryAfterMs?: number,
   ) {
     super(message);
     this.name = 'FetchFailure';
@@ -88,7 +95,7 @@ function untilAborted<T>(p: Promise<T>, url: string, signal?: AbortSignal): Prom
 
 const isAbort = (err: unknown): boolean => err instanceof Error && err.name === 'AbortError';
 
-const httpFailure = (url: string, status: number, attempts = 1): FetchFailure => new FetchFailure(`HTTP ${status} for ${url}`, 'http', url, status, attempts);
+const httpFailure = (url: string, status: number, attempts = 1, retryAfter?: number): FetchFailure => new FetchFailure(`HTTP ${status} for ${url}`, 'http', url, status, attempts, retryAfter);
 
 /** The body of `url` as bytes; throws FetchFailure. */
 export async function fetchBytes(url: string, opts: RetryOptions, signal?: AbortSignal): Promise<ArrayBuffer> {
@@ -103,16 +110,16 @@ export async function fetchBytes(url: string, opts: RetryOptions, signal?: Abort
       throw err;
     }
     if (typeof result === 'number') throw httpFailure(url, result);
-    if (result) {
+    if (result instanceof ArrayBuffer) {
       opts.onLoaded?.(url);
       return result;
     }
+    if (result) await sleepOrAbort(Math.min(RETRY_AFTER_MAX_MS, result.retryAt - Date.now()), url, 0, signal);
   }
   let attempt = 0;
   for (;;) {
     attempt++;
     let failure: FetchFailure;
-    let asked: number | null = null;
     try {
       const res = await fetch(url, signal ? { signal } : {});
       if (res.ok) {
@@ -122,22 +129,25 @@ export async function fetchBytes(url: string, opts: RetryOptions, signal?: Abort
       }
       // Drain nothing: the body of an error is not needed; cancel it to free the connection.
       void res.body?.cancel().catch(() => undefined);
-      failure = httpFailure(url, res.status, attempt);
+      failure = httpFailure(url, res.status, attempt, isLasting(res.status) ? undefined : retryAfterMs(res, Date.now()) ?? undefined);
       if (isLasting(res.status)) throw failure;
-      asked = retryAfterMs(res, Date.now());
     } catch (err) {
       if (err instanceof FetchFailure) throw err;
       if (isAbort(err) || signal?.aborted) throw new FetchFailure('aborted', 'abort', url, undefined, attempt);
       failure = new FetchFailure(`network error for ${url}: ${(err as Error).message}`, 'network', url, undefined, attempt);
     }
     if (attempt > opts.retries) throw failure;
-    const backoff = Math.min(opts.maxBackoffMs, opts.backoffMs * 2 ** (attempt - 1));
-    const wait = asked === null ? backoff : Math.max(backoff, Math.min(asked, RETRY_AFTER_MAX_MS));
-    try {
-      await sleep(wait, signal);
-    } catch {
-      throw new FetchFailure('aborted', 'abort', url, undefined, attempt);
-    }
+    await sleepOrAbort(waitBeforeRetry(Math.min(opts.maxBackoffMs, opts.backoffMs * 2 ** (attempt - 1)), failure.retryAfterMs), url, attempt, signal);
+  }
+}
+
+/** Waits `ms` (none if 0 or less); an abort meanwhile is a FetchFailure of kind 'abort' after `attempts`. */
+async function sleepOrAbort(ms: number, url: string, attempts: number, signal?: AbortSignal): Promise<void> {
+  if (ms <= 0) return;
+  try {
+    await sleep(Math.max(0, ms), signal);
+  } catch {
+    throw new FetchFailure('aborted', 'abort', url, undefined, attempts);
   }
 }
 

@@ -2,7 +2,8 @@
 // fetchBytes): a body the map fetched is used without asking the network, once; one the map
 // could not fetch is asked for by the worker itself, with its retries; an abort while waiting
 // ends the request at once and keeps the body for the next; one the server refused (4xx) fails
-// without asking again. The map's half: each file once, each body (a 4xx's status, or null)
+// without asking again; one the server said to ask again later (Retry-After) is not asked sooner.
+// The map's half: each file once, each body (a 4xx's status, a Retry-After's time, or null)
 // posted, a file the worker left behind cancelled. Against a fake fetch.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
@@ -14,7 +15,7 @@ import { HeadStart, HeadStartFetches, type HeadStartResult } from './head-start.
 const A = 'https://maps.test/cube/b-a.bin', B = 'https://maps.test/cube/b-b.bin', C = 'https://maps.test/cube/b-c.bin';
 const bytesOf = (b: ArrayBuffer): number[] => [...new Uint8Array(b)];
 /** A posted result, with a body as its bytes. */
-const shown = (r: HeadStartResult): number[] | number | null => (r instanceof ArrayBuffer ? bytesOf(r) : r);
+const shown = (r: HeadStartResult): number[] | number | { retryAt: number } | null => (r instanceof ArrayBuffer ? bytesOf(r) : r);
 
 describe('the head start on the first view', () => {
   test('a body the map fetched is taken without asking the network, and counted as loaded; a second request asks the network', async (t) => {
@@ -60,6 +61,23 @@ describe('the head start on the first view', () => {
     assert.equal(fetch.requests.length, 0, 'not asked of the network');
   });
 
+  test('one the server said to ask for again later (Retry-After) the worker asks for then, not sooner', async (t) => {
+    const NOW = Date.UTC(2026, 11, 5, 12, 0, 0);
+    t.mock.timers.enable({ apis: ['setTimeout', 'Date'], now: NOW });
+    const fetch = installFakeFetch(t, () => body(new Uint8Array([6])));
+    const headStart = new HeadStart();
+    headStart.expect([A]);
+    const p = fetchBytes(A, { retries: 1, backoffMs: 0, maxBackoffMs: 0, headStart });
+    headStart.arrived(A, { retryAt: NOW + 1500 });
+    await settle();
+    t.mock.timers.tick(1499);
+    await settle();
+    assert.equal(fetch.requests.length, 0, 'not asked 1,499 ms on');
+    t.mock.timers.tick(1);
+    assert.deepEqual(bytesOf(await settled(p, 'the body')), [6]);
+    assert.equal(fetch.requests.length, 1);
+  });
+
   test('aborted while the map still fetches it: an abort at once, nothing asked of the network, and the body kept for the next request', async (t) => {
     const fetch = installFakeFetch(t, () => body(new Uint8Array([1])));
     const headStart = new HeadStart();
@@ -93,7 +111,7 @@ describe('the head start on the first view', () => {
 describe('the map\'s fetches for the worker', () => {
   test('each file once, without retries; each body posted as it comes, a lasting 4xx\'s status, null for another failure (a 429); done once all are', async (t) => {
     const fetch = installFakeFetch(t, (url) => (url === B ? status(429) : url === C ? status(404) : 'hold'));
-    const posted: [string, number[] | number | null][] = [];
+    const posted: [string, ReturnType<typeof shown>][] = [];
     let done = 0;
     const fetches = new HeadStartFetches([A, B, C], { retries: 5, backoffMs: 0, maxBackoffMs: 0 }, (url, r) => posted.push([url, shown(r)]), () => done++);
     await eventually(() => posted.length === 2, 'B and C posted');
@@ -105,6 +123,16 @@ describe('the map\'s fetches for the worker', () => {
     assert.deepEqual(posted[2], [A, [3]]);
     assert.equal(fetches.pending, false);
     assert.deepEqual(fetch.urls(), [A, B, C]);
+  });
+
+  test('a 429 or 503 with Retry-After posts when to ask again, in ms since the epoch', async (t) => {
+    const NOW = Date.UTC(2026, 11, 5, 12, 0, 0);
+    t.mock.timers.enable({ apis: ['Date'], now: NOW });
+    installFakeFetch(t, (url) => (url === A ? status(429, { 'Retry-After': '3' }) : status(503, { 'Retry-After': new Date(NOW + 5000).toUTCString() })));
+    const posted: [string, ReturnType<typeof shown>][] = [];
+    new HeadStartFetches([A, B], { retries: 5, backoffMs: 0, maxBackoffMs: 0 }, (url, r) => posted.push([url, shown(r)]), () => undefined);
+    await eventually(() => posted.length === 2, 'both posted');
+    assert.deepEqual(new Map(posted), new Map([[A, { retryAt: NOW + 3000 }], [B, { retryAt: NOW + 5000 }]]));
   });
 
   test('a file the worker left behind is cancelled: its request aborted, null posted', async (t) => {

@@ -7,11 +7,19 @@ import { FetchFailure, fetchBytes, isLasting, type RetryOptions } from './fetch-
 
 /**
  * What became of the map's fetch of a file: its body; the status of a client error (4xx) that
- * will not change (isLasting), so the worker fails the file without asking again; or null, any
- * other failure (5xx, 429, network, cancelled), which the worker's own request, with its
- * retries, takes over.
+ * will not change (isLasting), so the worker fails the file without asking again; or any other
+ * failure (5xx, 408, 429, network, cancelled), which the worker's own request, with its retries,
+ * takes over: at once (null), or not before `retryAt` (ms since the epoch, which the map and its
+ * worker share) where the server's Retry-After said so.
  */
-export type HeadStartResult = ArrayBuffer | number | null;
+export type HeadStartResult = ArrayBuffer | number | { retryAt: number } | null;
+
+/** The result the map posts for a failed fetch (HeadStartResult). */
+export function failedResult(err: unknown, now: number): HeadStartResult {
+  if (!(err instanceof FetchFailure)) return null;
+  if (err.kind === 'http' && err.status !== undefined && isLasting(err.status)) return err.status;
+  return err.retryAfterMs === undefined ? null : { retryAt: now + err.retryAfterMs };
+}
 
 /**
  * The map's half: each file fetched once, at once (the worker, which retries, fetches one that
@@ -28,7 +36,7 @@ export class HeadStartFetches {
       this.controllers.set(url, controller);
       fetchBytes(url, once, controller.signal).then(
         (body) => post(url, body),
-        (err: unknown) => post(url, err instanceof FetchFailure && err.kind === 'http' && err.status !== undefined && isLasting(err.status) ? err.status : null),
+        (err: unknown) => post(url, failedResult(err, Date.now())),
       ).finally(() => {
         this.controllers.delete(url);
         if (this.controllers.size === 0) done();
