@@ -38,8 +38,8 @@ export function planChunks(inp: ChunkingInput, wholeExtentZ: number): ChunkPlan 
   const boxes = triangleBoxes(s, inp.xs, inp.ys), bytes = triangleBytes(s);
   const above: number[] = [], below: number[] = [];
   for (let i = 0; i < s.count; i++) (s.zEnd[i]! > wholeExtentZ ? above : below).push(i);
-  // A cube of one chunk (splitEvenly's count: under 1.5 chunks' worth) stays one.
-  if (above.length === 0 || below.length === 0 || Math.round(bytes.reduce((a, b) => a + b, 0) / inp.targetBytes) <= 1) return planOver(inp, Uint32Array.from({ length: s.count }, (_, i) => i), boxes, bytes);
+  // A cube of one chunk stays one.
+  if (above.length === 0 || below.length === 0 || chunksFor(bytes.reduce((a, b) => a + b, 0), inp.targetBytes) === 1) return planOver(inp, Uint32Array.from({ length: s.count }, (_, i) => i), boxes, bytes);
   return joinPlans([planOver(inp, Uint32Array.from(above), boxes, bytes), planOver(inp, Uint32Array.from(below), boxes, bytes)]);
 }
 
@@ -108,9 +108,8 @@ export function splitEvenly(boxes: TriangleBoxes, cost: Float64Array, inp: ViewM
   const n = cost.length;
   let total = 0;
   for (let i = 0; i < n; i++) total += cost[i]!;
-  const target = Math.min(inp.targetBytes, total);
   const split = new ChunkSplit(boxes, cost, viewHitChance(inp));
-  split.split(0, n, Math.max(1, Math.round(total / target)), total);
+  split.split(0, n, chunksFor(total, inp.targetBytes), total);
   const start = [...split.start, n];
   // The chunks' items in the order of the first axis list (any list holds the same sets).
   const chunkOf = new Int32Array(n);
@@ -118,6 +117,9 @@ export function splitEvenly(boxes: TriangleBoxes, cost: Float64Array, inp: ViewM
   for (let c = 0; c + 1 < start.length; c++) for (let k = start[c]!; k < start[c + 1]!; k++) chunkOf[x[k]!] = c;
   return { chunkOf, start };
 }
+
+/** How many chunks of about `targetBytes` `total` bytes make (at least one). */
+const chunksFor = (total: number, targetBytes: number): number => Math.max(1, Math.round(total / Math.min(targetBytes, total)));
 
 /** Per triangle: its ground box and its z range. */
 function triangleBoxes(s: Surfaces, xs: Float64Array, ys: Float64Array): TriangleBoxes {

@@ -32,17 +32,17 @@ export const RETRY_AFTER_MAX_MS = 60_000;
 
 /**
  * The wait a response's Retry-After asks for, in ms from `now` (ms since the epoch): delay
- * seconds or an HTTP date (RFC 9110 §10.2.3); null when it has none, or none that reads. A
+ * seconds or an HTTP date (RFC 9110 §10.2.3); undefined when it has none, or none that reads. A
  * cross-origin host must list the header in Access-Control-Expose-Headers for the map to see it.
  */
-export function retryAfterMs(res: Response, now: number): number | null {
+export function retryAfterMs(res: Response, now: number): number | undefined {
   const v = res.headers.get('Retry-After')?.trim();
-  if (!v) return null;
+  if (!v) return undefined;
   if (/^\d+$/.test(v)) return Number(v) * 1000;
   // Only an IMF-fixdate, as servers send it: Date.parse reads much else ("1.5", "soon 2030").
-  if (!/^[A-Z][a-z]{2}, \d{2} [A-Z][a-z]{2} \d{4} \d{2}:\d{2}:\d{2} GMT$/.test(v)) return null;
+  if (!/^[A-Z][a-z]{2}, \d{2} [A-Z][a-z]{2} \d{4} \d{2}:\d{2}:\d{2} GMT$/.test(v)) return undefined;
   const at = Date.parse(v);
-  return Number.isNaN(at) ? null : Math.max(0, at - now);
+  return Number.isNaN(at) ? undefined : Math.max(0, at - now);
 }
 
 /** The wait before asking again: the backoff's, or longer where the server asked for it (capped). */
@@ -129,8 +129,8 @@ export async function fetchBytes(url: string, opts: RetryOptions, signal?: Abort
       }
       // Drain nothing: the body of an error is not needed; cancel it to free the connection.
       void res.body?.cancel().catch(() => undefined);
-      failure = httpFailure(url, res.status, attempt, isLasting(res.status) ? undefined : retryAfterMs(res, Date.now()) ?? undefined);
-      if (isLasting(res.status)) throw failure;
+      if (isLasting(res.status)) throw httpFailure(url, res.status, attempt);
+      failure = httpFailure(url, res.status, attempt, retryAfterMs(res, Date.now()));
     } catch (err) {
       if (err instanceof FetchFailure) throw err;
       if (isAbort(err) || signal?.aborted) throw new FetchFailure('aborted', 'abort', url, undefined, attempt);
@@ -145,7 +145,7 @@ export async function fetchBytes(url: string, opts: RetryOptions, signal?: Abort
 async function sleepOrAbort(ms: number, url: string, attempts: number, signal?: AbortSignal): Promise<void> {
   if (ms <= 0) return;
   try {
-    await sleep(Math.max(0, ms), signal);
+    await sleep(ms, signal);
   } catch {
     throw new FetchFailure('aborted', 'abort', url, undefined, attempts);
   }
