@@ -31,22 +31,20 @@ export const isLasting = (status: number): boolean => status < 500 && status !==
 export const RETRY_AFTER_MAX_MS = 60_000;
 
 /**
- * The wait a response's Retry-After asks for, in ms from `now` (ms since the epoch): delay
- * seconds or an HTTP date (RFC 9110 §10.2.3); undefined when it has none, or none that reads. A
- * cross-origin host must list the header in Access-Control-Expose-Headers for the map to see it.
+ * The wait a response's Retry-After asks for, in ms from `now` (ms since the epoch), at most
+ * RETRY_AFTER_MAX_MS: delay seconds or an HTTP date (RFC 9110 §10.2.3); undefined when it has
+ * none, or none that reads. A cross-origin host must list the header in
+ * Access-Control-Expose-Headers for the map to see it.
  */
 export function retryAfterMs(res: Response, now: number): number | undefined {
   const v = res.headers.get('Retry-After')?.trim();
   if (!v) return undefined;
-  if (/^\d+$/.test(v)) return Number(v) * 1000;
+  if (/^\d+$/.test(v)) return Math.min(RETRY_AFTER_MAX_MS, Number(v) * 1000);
   // Only an IMF-fixdate, as servers send it: Date.parse reads much else ("1.5", "soon 2030").
   if (!/^[A-Z][a-z]{2}, \d{2} [A-Z][a-z]{2} \d{4} \d{2}:\d{2}:\d{2} GMT$/.test(v)) return undefined;
   const at = Date.parse(v);
-  return Number.isNaN(at) ? undefined : Math.max(0, at - now);
+  return Number.isNaN(at) ? undefined : Math.min(RETRY_AFTER_MAX_MS, Math.max(0, at - now));
 }
-
-/** The wait before asking again: the backoff's, or longer where the server asked for it (capped). */
-const waitBeforeRetry = (backoffMs: number, retryAfter: number | undefined): number => (retryAfter === undefined ? backoffMs : Math.max(backoffMs, Math.min(retryAfter, RETRY_AFTER_MAX_MS)));
 
 export class FetchFailure extends Error {
   constructor(
@@ -55,7 +53,7 @@ export class FetchFailure extends Error {
     readonly url: string,
     readonly status?: number,
     readonly attempts = 1,
-    /** A passing failure's Retry-After, ms from when it came. */
+    /** A passing failure's Retry-After, ms from when it came (retryAfterMs). */
     readonly retryAfterMs?: number,
   ) {
     super(message);
@@ -114,7 +112,7 @@ export async function fetchBytes(url: string, opts: RetryOptions, signal?: Abort
       opts.onLoaded?.(url);
       return result;
     }
-    if (result) await sleepOrAbort(Math.min(RETRY_AFTER_MAX_MS, result.retryAt - Date.now()), url, 0, signal);
+    if (result) await sleepOrAbort(result.retryAt - Date.now(), url, 0, signal);
   }
   let attempt = 0;
   for (;;) {
@@ -137,7 +135,9 @@ export async function fetchBytes(url: string, opts: RetryOptions, signal?: Abort
       failure = new FetchFailure(`network error for ${url}: ${(err as Error).message}`, 'network', url, undefined, attempt);
     }
     if (attempt > opts.retries) throw failure;
-    await sleepOrAbort(waitBeforeRetry(Math.min(opts.maxBackoffMs, opts.backoffMs * 2 ** (attempt - 1)), failure.retryAfterMs), url, attempt, signal);
+    // The backoff, or longer where the server asked for it.
+    const backoff = Math.min(opts.maxBackoffMs, opts.backoffMs * 2 ** (attempt - 1));
+    await sleepOrAbort(Math.max(backoff, failure.retryAfterMs ?? 0), url, attempt, signal);
   }
 }
 
