@@ -98,22 +98,45 @@ test('input smaller than one chunk is one chunk', () => {
   assert.deepEqual(p.start, [0, N * N]);
 });
 
-test('the triangles covered above the whole extent\'s z are chunked apart from the rest, each set in compact chunks', () => {
-  // A checkerboard: the dark cells' triangles are covered at z 10, the light cells' at z 2.
+/** A checkerboard: the dark cells' triangles are covered at z 10, the light cells' at z 2. */
+function checkerboard(): Grid {
   const g = grid();
   for (let cy = 0; cy < N; cy++) for (let cx = 0; cx < N; cx++) g.surfaces.zEnd[cy * N + cx] = (cx + cy) % 2 === 0 ? 10 : 2;
-  const lasting = (t: number): boolean => g.surfaces.zEnd[t]! > 5;
-  const mixed = (p: ChunkPlan): number => Array.from({ length: chunkCount(p) }, (_, c) => chunk(p, c)).filter((ts) => ts.some(lasting) && !ts.every(lasting)).length;
+  return g;
+}
+
+/** Whether triangle t is covered above z 5 (a dark cell of the checkerboard). */
+const lasting = (g: Grid, t: number): boolean => g.surfaces.zEnd[t]! > 5;
+
+/** The chunks that mix lasting triangles with others. */
+const mixed = (g: Grid, p: ChunkPlan): number => Array.from({ length: chunkCount(p) }, (_, c) => chunk(p, c)).filter((ts) => ts.some((t) => lasting(g, t)) && !ts.every((t) => lasting(g, t))).length;
+
+test('the triangles covered above the whole extent\'s z are chunked apart from the rest, each set in compact chunks', () => {
+  const g = checkerboard();
   // The premise: this model (the extent fits at the base scale) gives no reason to cut by z.
-  assert.ok(mixed(plan(g, 32 * TRI_BYTES)) > 0, 'without the cut, chunks mix the two');
+  assert.ok(mixed(g, plan(g, 32 * TRI_BYTES)) > 0, 'without the cut, chunks mix the two');
   const p = plan(g, 32 * TRI_BYTES, 5);
-  assert.equal(mixed(p), 0, 'no chunk mixes the two');
+  assert.equal(mixed(g, p), 0, 'no chunk mixes the two');
   assert.equal(chunkCount(p), 8);
   assert.deepEqual([...p.order].sort((a, b) => a - b), Array.from({ length: N * N }, (_, i) => i));
   // The lasting triangles first, in 4 chunks of 32, then the rest; each set's chunks tile the
   // grid (the checkerboard's cells counted whole: 2 x 256).
-  for (let c = 0; c < 8; c++) assert.ok(chunk(p, c).length === 32 && chunk(p, c).every((t) => lasting(t) === c < 4), `chunk ${c}`);
+  for (let c = 0; c < 8; c++) assert.ok(chunk(p, c).length === 32 && chunk(p, c).every((t) => lasting(g, t) === c < 4), `chunk ${c}`);
   assert.equal(boxArea(g, p), 2 * N * N);
+});
+
+test('the triangles above the whole extent\'s z take at most the chunks allowed them, larger ones; the rest keep the chunk size', () => {
+  const g = checkerboard();
+  // 128 lasting triangles: 4 chunks' worth at 32 a chunk, allowed 2 (and 4, 5: as many as they need).
+  const capped = planChunks(input(g, 32 * TRI_BYTES), 5, 2);
+  assert.deepEqual(capped.start, [0, 64, 128, 160, 192, 224, 256]);
+  assert.equal(mixed(g, capped), 0, 'no chunk mixes the two');
+  for (let c = 0; c < 2; c++) assert.ok(chunk(capped, c).every((t) => lasting(g, t)), `chunk ${c} holds lasting triangles only`);
+  assert.equal(boxArea(g, capped), 2 * N * N, 'each set\'s chunks tile the grid');
+  for (const max of [4, 5]) {
+    const p = planChunks(input(g, 32 * TRI_BYTES), 5, max), q = plan(g, 32 * TRI_BYTES, 5);
+    assert.deepEqual([[...p.order], p.start], [[...q.order], q.start], `at most ${max}`);
+  }
 });
 
 test('a cut that leaves one side empty, or a cube of one chunk, leaves the plan as it was', () => {
