@@ -49,6 +49,18 @@ export const DEFAULT_CHUNK_BYTES = 64 * 1024;
  * floor chunk files, boundaries, are a quarter to a third smaller.)
  */
 export const FLOOR_CHUNK_FACTOR = 2;
+
+/**
+ * A phone held upright, in CSS px. The map opens showing the whole extent, which on a phone lies
+ * at a coarser scale than on the 1280 x 720 px view of the chunking's model; the chunks keep the
+ * triangles covered above either apart (planChunks). bgt_otterlo_1800m's phone view queried
+ * 147 kB (gzip) of surface chunks with the one cut and 102 kB with both, nlcd_zion's 1,740 and
+ * 1,073 kB (docs/FORMAT.md, "index.json").
+ */
+const PHONE_VIEW_PX: [number, number] = [390, 844];
+
+/** Ground width and height of a view of `width` x `height` px per unit of scale denominator. */
+const viewPerScale = (width: number, height: number): [number, number] => [(width * PIXEL_SIZE_MM) / 1000, (height * PIXEL_SIZE_MM) / 1000];
 /**
  * Line chunks are planned at this share of the chunk size: a line lives over much of the z
  * range, so a line chunk of the surface chunks' size spans a quarter of bgt_otterlo_1800m's
@@ -109,11 +121,12 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const view = {
     extent: t.meta.extent,
     scaleAt: (z: number) => scaleAtZ(info, z),
-    viewPerScale: [(1280 * PIXEL_SIZE_MM) / 1000, (720 * PIXEL_SIZE_MM) / 1000] as [number, number],
+    viewPerScale: viewPerScale(1280, 720),
     targetBytes: opts.chunkBytes ?? DEFAULT_CHUNK_BYTES,
   };
   const chunking = { surfaces, xs: surfaces.xs, ys: surfaces.ys, ...view };
-  const plan = planChunks(chunking, zAtScale(info, wholeExtentScale(view)));
+  const phone = { ...view, viewPerScale: viewPerScale(...PHONE_VIEW_PX) };
+  const plan = planChunks(chunking, [view, phone].map((v) => zAtScale(info, wholeExtentScale(v))));
   lap('plan');
   const files = new Map<string, Uint8Array>();
   /** A file of the cube kept under its name by hash (hashName); returns the name. */

@@ -41,7 +41,7 @@ const input = (g: Grid, targetBytes: number): Parameters<typeof planChunks>[0] =
 
 /** The plan, with no first cut for the whole extent unless `wholeExtentZ` is given. */
 function plan(g: Grid, targetBytes: number, wholeExtentZ = Infinity): ChunkPlan {
-  return planChunks(input(g, targetBytes), wholeExtentZ);
+  return planChunks(input(g, targetBytes), [wholeExtentZ]);
 }
 
 /** The triangles of chunk c. */
@@ -128,15 +128,32 @@ test('the triangles covered above the whole extent\'s z are chunked apart from t
 test('the triangles above the whole extent\'s z take at most the chunks allowed them, larger ones; the rest keep the chunk size', () => {
   const g = checkerboard();
   // 128 lasting triangles: 4 chunks' worth at 32 a chunk, allowed 2 (and 4, 5: as many as they need).
-  const capped = planChunks(input(g, 32 * TRI_BYTES), 5, 2);
+  const capped = planChunks(input(g, 32 * TRI_BYTES), [5], 2);
   assert.deepEqual(capped.start, [0, 64, 128, 160, 192, 224, 256]);
   assert.equal(mixed(g, capped), 0, 'no chunk mixes the two');
   for (let c = 0; c < 2; c++) assert.ok(chunk(capped, c).every((t) => lasting(g, t)), `chunk ${c} holds lasting triangles only`);
   assert.equal(boxArea(g, capped), 2 * N * N, 'each set\'s chunks tile the grid');
   for (const max of [4, 5]) {
-    const p = planChunks(input(g, 32 * TRI_BYTES), 5, max), q = plan(g, 32 * TRI_BYTES, 5);
+    const p = planChunks(input(g, 32 * TRI_BYTES), [5], max), q = plan(g, 32 * TRI_BYTES, 5);
     assert.deepEqual([[...p.order], p.start], [[...q.order], q.start], `at most ${max}`);
   }
+});
+
+test('a higher cut (a phone\'s whole extent) keeps the triangles covered above it apart again, first; all above the lowest share one chunk size', () => {
+  // Three bands of 8 columns, 4 and 4: covered at z 2, 6 and 10.
+  const g = grid();
+  const band = (t: number): number => (t % N < 8 ? 2 : t % N < 12 ? 6 : 10);
+  for (let t = 0; t < N * N; t++) g.surfaces.zEnd[t] = band(t);
+  const bands = (p: ChunkPlan): number[][] => Array.from({ length: chunkCount(p) }, (_, c) => [...new Set(chunk(p, c).map(band))].sort((a, b) => a - b));
+  // The premise: with the one cut, chunks mix the two upper bands.
+  assert.ok(bands(plan(g, 32 * TRI_BYTES, 5)).some((b) => b.length > 1), 'one cut mixes z 6 and 10');
+  const p = planChunks(input(g, 32 * TRI_BYTES), [8, 5]);
+  assert.deepEqual(bands(p), [[10], [10], [6], [6], [2], [2], [2], [2]]);
+  assert.equal(boxArea(g, p), N * N, 'each band\'s chunks tile it');
+  // Allowed 2 chunks above z 5 (4 chunks' worth): 64 triangles a chunk there, so one a band.
+  const capped = planChunks(input(g, 32 * TRI_BYTES), [5, 8], 2);
+  assert.deepEqual(capped.start, [0, 64, 128, 160, 192, 224, 256]);
+  assert.deepEqual(bands(capped), [[10], [6], [2], [2], [2], [2]]);
 });
 
 test('a cut that leaves one side empty, or a cube of one chunk, leaves the plan as it was', () => {

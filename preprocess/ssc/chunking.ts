@@ -2,9 +2,9 @@
 // cut (each goes to exactly one chunk). A recursive best split, like a kd-tree built with a
 // cost model: every set is halved (in bytes) along the axis - x, y, the z a triangle appears
 // at or the z it is covered at - that makes the two halves least likely to be fetched
-// (view-hit-chance.ts). The first cut is fixed: the triangles the map's default first view (the
-// whole extent) needs are chunked apart from the rest, as the model, spread over all scales,
-// gives that one view no weight of its own.
+// (view-hit-chance.ts). The first cuts are fixed: the triangles the map's default first view (the
+// whole extent, on a desktop screen and on a phone) needs are chunked apart from the rest, as
+// the model, spread over all scales, gives that one view no weight of its own.
 import { candidateCuts, sideBoxes, type SortedRange, type TriangleBoxes } from './chunk-cuts.js';
 import { sortedBy } from './sorted-by-key.js';
 import type { Surfaces } from './surfaces.js';
@@ -38,26 +38,31 @@ const EVEN_WITHIN = 0.15;
 export const WHOLE_EXTENT_MAX_CHUNKS = 48;
 
 /**
- * The cube's chunks: those of the triangles covered above `wholeExtentZ` (all that a slice there
- * or higher needs; the z at which the whole extent fits the model's view, wholeExtentScale), in
- * at most `maxAbove` chunks, then those of the rest, so that a first view of the whole extent
- * fetches little it does not need, in few requests (docs/FORMAT.md, "index.json": the figures).
+ * The cube's chunks, so that a first view of the whole extent fetches little it does not need,
+ * in few requests (docs/FORMAT.md, "index.json": the figures). `wholeExtentZs` are the z at
+ * which the whole extent fits each default view (the model's, a phone's; wholeExtentScale): the
+ * triangles covered above the lowest of them (all that a slice there or higher needs) go into at
+ * most `maxAbove` chunks, apart from the rest, and those covered above each higher one apart
+ * again, highest first.
  */
-export function planChunks(inp: ChunkingInput, wholeExtentZ: number, maxAbove = WHOLE_EXTENT_MAX_CHUNKS): ChunkPlan {
+export function planChunks(inp: ChunkingInput, wholeExtentZs: readonly number[], maxAbove = WHOLE_EXTENT_MAX_CHUNKS): ChunkPlan {
   const s = inp.surfaces;
   const boxes = triangleBoxes(s, inp.xs, inp.ys), bytes = triangleBytes(s);
-  const above: number[] = [], below: number[] = [];
+  const cuts = [...new Set(wholeExtentZs)].sort((a, b) => b - a);
+  // sets[k] holds the triangles covered above cuts[k] and not above cuts[k - 1]; the last, the rest.
+  const sets: number[][] = Array.from({ length: cuts.length + 1 }, () => []);
   let aboveBytes = 0;
   for (let i = 0; i < s.count; i++) {
-    if (s.zEnd[i]! > wholeExtentZ) {
-      above.push(i);
-      aboveBytes += bytes[i]!;
-    } else below.push(i);
+    let k = 0;
+    while (k < cuts.length && !(s.zEnd[i]! > cuts[k]!)) k++;
+    sets[k]!.push(i);
+    if (k < cuts.length) aboveBytes += bytes[i]!;
   }
+  const below = sets[cuts.length]!;
   // A cube of one chunk stays one.
-  if (above.length === 0 || below.length === 0 || chunksFor(bytes.reduce((a, b) => a + b, 0), inp.targetBytes) === 1) return planOver(inp, Uint32Array.from({ length: s.count }, (_, i) => i), boxes, bytes);
-  const aboveTarget = Math.max(inp.targetBytes, aboveBytes / maxAbove);
-  return joinPlans([planOver({ ...inp, targetBytes: aboveTarget }, Uint32Array.from(above), boxes, bytes), planOver(inp, Uint32Array.from(below), boxes, bytes)]);
+  if (aboveBytes === 0 || below.length === 0 || chunksFor(bytes.reduce((a, b) => a + b, 0), inp.targetBytes) === 1) return planOver(inp, Uint32Array.from({ length: s.count }, (_, i) => i), boxes, bytes);
+  const above = { ...inp, targetBytes: Math.max(inp.targetBytes, aboveBytes / maxAbove) };
+  return joinPlans(sets.filter((set) => set.length > 0).map((set) => planOver(set === below ? inp : above, Uint32Array.from(set), boxes, bytes)));
 }
 
 /** Plans of disjoint sets of triangles, as one: their chunks one set after the other. */
