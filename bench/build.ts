@@ -5,7 +5,9 @@ import { spawnSync } from 'node:child_process';
 import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
+import { groundPerScale } from '../format/pixel-size.js';
 import { zAtScale } from '../format/scale.js';
+import { wholeExtentScale } from '../preprocess/ssc/view-hit-chance.js';
 import { inspectCube } from '../preprocess/ssc/inspect-cube.js';
 import { CubeReader } from '../preprocess/ssc/read-cube.js';
 import { benchArgs, datasets, median, root } from './datasets.js';
@@ -30,7 +32,7 @@ async function queryTime(cubeDir: string): Promise<{ chunks: number; medianUs: n
   const [x0, y0, x1, y1] = meta.extent;
   let seed = 12345;
   const rnd = (): number => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
-  const sFull = Math.max((x1 - x0) / 0.3584, (y1 - y0) / 0.2016);
+  const sFull = wholeExtentScale({ extent: meta.extent, viewPerScale: groundPerScale(1280, 720) });
   const times: number[] = [];
   let hits = 0;
   for (let i = 0; i < 2000; i++) {

@@ -7,15 +7,14 @@ import type { CubeIndex } from '../format/cube-index.js';
 import { decodeLineChunk, lineOfChunk } from '../format/line-chunk.js';
 import { linePathsAtZ } from '../format/line-record.js';
 import { lineRuleDrawnAt } from '../format/line-style.js';
-import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
+import { viewBox } from './triangles-in-view.js';
 import { zAtScale } from '../format/scale.js';
 
 /** Line vertices inside a `width` x `height` px view at 1:scale centred on `centre`. */
 export async function linesInView(cubeDir: string, index: CubeIndex, scale: number, centre: [number, number], width = 1280, height = 720): Promise<number> {
   const meta = index.meta;
   const z = zAtScale(meta, scale);
-  const res = (scale * PIXEL_SIZE_MM) / 1000;
-  const [x0, y0, x1, y1] = [centre[0] - (width / 2) * res, centre[1] - (height / 2) * res, centre[0] + (width / 2) * res, centre[1] + (height / 2) * res];
+  const [x0, y0, x1, y1] = viewBox(scale, centre, width, height);
   let n = 0;
   for (const leaf of index.lines ?? []) {
     const [bx0, by0, bz0, bx1, by1, bz1] = leaf.bbox;

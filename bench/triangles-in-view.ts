@@ -10,7 +10,7 @@
 // sessionNeeds takes the union over the views of a session: the bytes of the chunks they query,
 // of the share of each chunk's triangles some view needs, and of that the share some view's
 // slice cuts (bench:session).
-import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
+import { groundPerScale } from '../format/pixel-size.js';
 import { zAtScale } from '../format/scale.js';
 import { CpuSlicer, sliceChunk } from '../preprocess/ssc/cpu-slicer.js';
 import { CubeReader } from '../preprocess/ssc/read-cube.js';
@@ -52,8 +52,8 @@ export async function trianglesInView(cubeDir: string): Promise<TrianglesInView>
 
 /** The ground box of a `width` x `height` px view at 1:scale centred on `centre`. */
 export function viewBox(scale: number, centre: [number, number], width: number, height: number): [number, number, number, number] {
-  const res = (scale * PIXEL_SIZE_MM) / 1000;
-  return [centre[0] - (width / 2) * res, centre[1] - (height / 2) * res, centre[0] + (width / 2) * res, centre[1] + (height / 2) * res];
+  const [w, h] = groundPerScale(width, height);
+  return [centre[0] - (w / 2) * scale, centre[1] - (h / 2) * scale, centre[0] + (w / 2) * scale, centre[1] + (h / 2) * scale];
 }
 
 /** Each face's end (its stepHigh, at or just above its true end), read from the cube's face pages once. */

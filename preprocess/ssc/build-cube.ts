@@ -6,7 +6,7 @@ import { promises as fs } from 'node:fs';
 import path from 'node:path';
 import { brotliCompressSync, constants as zc, gzipSync } from 'node:zlib';
 import { encodeIndex, hashedName, INDEX_FORMAT, INDEX_VERSION, type ChunkLeaf, type CubeIndexJson, type LineChunkLeaf } from '../../format/cube-index.js';
-import { PIXEL_SIZE_MM } from '../../format/pixel-size.js';
+import { groundPerScale, PIXEL_SIZE_MM } from '../../format/pixel-size.js';
 import { scaleAtZ, zAtScale } from '../../format/scale.js';
 import { writeDirAtomic } from '../io/atomic-write.js';
 import { proj4Definition } from '../io/crs-definition.js';
@@ -59,8 +59,6 @@ export const FLOOR_CHUNK_FACTOR = 2;
  */
 const PHONE_VIEW_PX: [number, number] = [390, 844];
 
-/** Ground width and height of a view of `width` x `height` px per unit of scale denominator. */
-const viewPerScale = (width: number, height: number): [number, number] => [(width * PIXEL_SIZE_MM) / 1000, (height * PIXEL_SIZE_MM) / 1000];
 /**
  * Line chunks are planned at this share of the chunk size: a line lives over much of the z
  * range, so a line chunk of the surface chunks' size spans a quarter of bgt_otterlo_1800m's
@@ -121,11 +119,11 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const view = {
     extent: t.meta.extent,
     scaleAt: (z: number) => scaleAtZ(info, z),
-    viewPerScale: viewPerScale(1280, 720),
+    viewPerScale: groundPerScale(1280, 720),
     targetBytes: opts.chunkBytes ?? DEFAULT_CHUNK_BYTES,
   };
   const chunking = { surfaces, xs: surfaces.xs, ys: surfaces.ys, ...view };
-  const phone = { ...view, viewPerScale: viewPerScale(...PHONE_VIEW_PX) };
+  const phone = { ...view, viewPerScale: groundPerScale(...PHONE_VIEW_PX) };
   const plan = planChunks(chunking, [view, phone].map((v) => zAtScale(info, wholeExtentScale(v))));
   lap('plan');
   const files = new Map<string, Uint8Array>();

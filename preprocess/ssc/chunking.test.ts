@@ -154,6 +154,10 @@ test('a higher cut (a phone\'s whole extent) keeps the triangles covered above i
   const capped = planChunks(input(g, 32 * TRI_BYTES), [5, 8], 2);
   assert.deepEqual(capped.start, [0, 64, 128, 160, 192, 224, 256]);
   assert.deepEqual(bands(capped), [[10], [6], [2], [2], [2], [2]]);
+  // Cuts in any order, a NaN among them ignored; a lower cut with nothing below it leaves the higher one.
+  const same = planChunks(input(g, 32 * TRI_BYTES), [5, Number.NaN, 8, 8]);
+  assert.deepEqual([[...same.order], same.start], [[...p.order], p.start]);
+  assert.ok(bands(planChunks(input(g, 32 * TRI_BYTES), [8, -1])).every((b) => b.length === 1 || !b.includes(10)), 'z 10 apart from the rest');
 });
 
 test('a cut that leaves one side empty, or a cube of one chunk, leaves the plan as it was', () => {

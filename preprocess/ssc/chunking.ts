@@ -28,12 +28,12 @@ export interface ChunkingInput extends ViewModel {
 const EVEN_WITHIN = 0.15;
 
 /**
- * The most chunks the triangles above the whole extent's z take: as a first view of the whole
- * extent needs all of them, a large set of them goes into fewer, larger chunks (8 rounds of the 6
- * requests a browser makes to a host at once over HTTP/1.1). Each chunk repeats the points,
- * z values and faces it shares with its neighbours: nlcd_zion's whole-extent view queried
- * 212 chunks, 1,692 kB gzip, with chunks of the usual size, and 49, 1,463 kB, with at most
- * 48 (docs/FORMAT.md, "index.json").
+ * The chunks' worth the triangles above the whole extent's z take at most (each band of them
+ * rounded to whole chunks): as a first view of the whole extent needs all of them, a large set
+ * of them goes into fewer, larger chunks (8 rounds of the 6 requests a browser makes to a host
+ * at once over HTTP/1.1). Each chunk repeats the points, z values and faces it shares with its
+ * neighbours: nlcd_zion's whole-extent view queried 212 chunks, 1,692 kB gzip, with chunks of
+ * the usual size, and 39, 1,463 kB, with 48 (docs/FORMAT.md, "index.json").
  */
 export const WHOLE_EXTENT_MAX_CHUNKS = 48;
 
@@ -48,7 +48,7 @@ export const WHOLE_EXTENT_MAX_CHUNKS = 48;
 export function planChunks(inp: ChunkingInput, wholeExtentZs: readonly number[], maxAbove = WHOLE_EXTENT_MAX_CHUNKS): ChunkPlan {
   const s = inp.surfaces;
   const boxes = triangleBoxes(s, inp.xs, inp.ys), bytes = triangleBytes(s);
-  const cuts = [...new Set(wholeExtentZs)].sort((a, b) => b - a);
+  const cuts = [...new Set(wholeExtentZs.filter((z) => !Number.isNaN(z)))].sort((a, b) => b - a);
   // sets[k] holds the triangles covered above cuts[k] and not above cuts[k - 1]; the last, the rest.
   const sets: number[][] = Array.from({ length: cuts.length + 1 }, () => []);
   let aboveBytes = 0;
@@ -59,10 +59,11 @@ export function planChunks(inp: ChunkingInput, wholeExtentZs: readonly number[],
     if (k < cuts.length) aboveBytes += bytes[i]!;
   }
   const below = sets[cuts.length]!;
-  // A cube of one chunk stays one.
-  if (aboveBytes === 0 || below.length === 0 || chunksFor(bytes.reduce((a, b) => a + b, 0), inp.targetBytes) === 1) return planOver(inp, Uint32Array.from({ length: s.count }, (_, i) => i), boxes, bytes);
+  const nonEmpty = sets.filter((set) => set.length > 0);
+  // Cuts that leave all on one side change nothing; a cube of one chunk stays one.
+  if (nonEmpty.length < 2 || chunksFor(bytes.reduce((a, b) => a + b, 0), inp.targetBytes) === 1) return planOver(inp, Uint32Array.from({ length: s.count }, (_, i) => i), boxes, bytes);
   const above = { ...inp, targetBytes: Math.max(inp.targetBytes, aboveBytes / maxAbove) };
-  return joinPlans(sets.filter((set) => set.length > 0).map((set) => planOver(set === below ? inp : above, Uint32Array.from(set), boxes, bytes)));
+  return joinPlans(nonEmpty.map((set) => planOver(set === below ? inp : above, Uint32Array.from(set), boxes, bytes)));
 }
 
 /** Plans of disjoint sets of triangles, as one: their chunks one set after the other. */

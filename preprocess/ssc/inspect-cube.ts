@@ -5,7 +5,8 @@ import { promises as fs } from 'node:fs';
 import path from 'node:path';
 import { isExternal, isLeaf, type IndexNode } from '../../format/cube-index.js';
 import { scaleAtZ, zAtScale } from '../../format/scale.js';
-import { PIXEL_SIZE_MM } from '../../format/pixel-size.js';
+import { groundPerScale } from '../../format/pixel-size.js';
+import { wholeExtentScale } from './view-hit-chance.js';
 import { boxMeets, EVERYWHERE } from '../../format/index-query.js';
 import { lineOfChunk } from '../../format/line-chunk.js';
 import { groundBox, lineAliveAt } from '../../format/line-record.js';
@@ -87,13 +88,13 @@ export async function inspectCube(dir: string): Promise<CubeReport> {
   }));
   const views: ViewRow[] = [];
   const [x0, y0, x1, y1] = meta.extent;
-  const px = PIXEL_SIZE_MM / 1000;
+  const [vw, vh] = groundPerScale(1280, 720);
   const sBase = meta.baseScale;
-  const sFull = Math.max((x1 - x0) / (1280 * px), (y1 - y0) / (720 * px), sBase);
+  const sFull = Math.max(wholeExtentScale({ extent: meta.extent, viewPerScale: [vw, vh] }), sBase);
   for (let i = 0; i < 8; i++) {
     const scale = sBase * Math.pow(sFull / sBase, i / 7);
     const z = zAtScale(meta, scale);
-    const hw = 640 * px * scale, hh = 360 * px * scale;
+    const hw = (vw / 2) * scale, hh = (vh / 2) * scale;
     // The mean over a 5 x 5 grid of view centres over the extent (a view at one place alone can
     // sit on the very edges where chunks meet).
     let tris = 0, bytes = 0, chunks = 0, lines = 0, lineBytes = 0;

@@ -14,7 +14,7 @@ export interface ViewModel {
 }
 
 /** The scale denominator at which the whole extent fits the model's view. */
-export function wholeExtentScale(m: ViewModel): number {
+export function wholeExtentScale(m: Pick<ViewModel, 'extent' | 'viewPerScale'>): number {
   const [vw, vh] = m.viewPerScale;
   const [ex0, ey0, ex1, ey1] = m.extent;
   return Math.max((ex1 - ex0) / vw, (ey1 - ey0) / vh);
