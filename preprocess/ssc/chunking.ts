@@ -41,9 +41,9 @@ export const WHOLE_EXTENT_MAX_CHUNKS = 48;
  * The cube's chunks, so that a first view of the whole extent fetches little it does not need,
  * in few requests (docs/FORMAT.md, "index.json": the figures). `wholeExtentZs` are the z at
  * which the whole extent fits each default view (the model's, a phone's; wholeExtentScale): the
- * triangles covered above the lowest of them (all that a slice there or higher needs) go into at
- * most `maxAbove` chunks, apart from the rest, and those covered above each higher one apart
- * again, highest first.
+ * triangles covered above the lowest of them (all that a slice there or higher needs) go into
+ * `maxAbove` chunks' worth at most (WHOLE_EXTENT_MAX_CHUNKS), apart from the rest, and those
+ * covered above each higher one apart again, highest first.
  */
 export function planChunks(inp: ChunkingInput, wholeExtentZs: readonly number[], maxAbove = WHOLE_EXTENT_MAX_CHUNKS): ChunkPlan {
   const s = inp.surfaces;
