@@ -11,6 +11,7 @@ import { wholeExtentScale } from '../preprocess/ssc/view-hit-chance.js';
 import { inspectCube } from '../preprocess/ssc/inspect-cube.js';
 import { CubeReader } from '../preprocess/ssc/read-cube.js';
 import { benchArgs, datasets, median, root } from './datasets.js';
+import { viewBox } from './triangles-in-view.js';
 
 const { runs, filter } = benchArgs(3);
 // Before any work: a missing dataset or a filter matching none is an error at once.
@@ -39,9 +40,9 @@ async function queryTime(cubeDir: string): Promise<{ chunks: number; medianUs: n
     const scale = meta.baseScale * Math.pow(sFull / meta.baseScale, rnd());
     const z = zAtScale(meta, scale);
     const cx = x0 + rnd() * (x1 - x0), cy = y0 + rnd() * (y1 - y0);
-    const hw = 0.1792 * scale, hh = 0.1008 * scale;
+    const ground = viewBox(scale, [cx, cy], 1280, 720);
     const t = performance.now();
-    const leaves = cube.queryLoaded({ ground: [cx - hw, cy - hh, cx + hw, cy + hh], zMin: z, zMax: z });
+    const leaves = cube.queryLoaded({ ground, zMin: z, zMax: z });
     times.push((performance.now() - t) * 1000);
     hits += leaves.length;
   }
