@@ -15,7 +15,7 @@ import { recommendBaseScale } from './style-scaffold/base-scale.js';
 import { describeColourSources } from './style-scaffold/class-colours.js';
 import { featureShape, guessClassProperty } from './style-scaffold/class-stats.js';
 import { lapTimer } from './lap-timer.js';
-import { coarsestGrid, defaultPrecision } from './ssc/position-grid.js';
+import { coarsestGrid, inputPrecision } from './ssc/position-grid.js';
 import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
 
 /**
@@ -112,7 +112,7 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
   const allowHoles = opts.allowHoles ?? style.allowHoles;
   // The base scale before the topology: it sets the snapping grid and the sliver width.
   const baseScale = opts.baseScale ?? (style.baseScale > 0 ? style.baseScale : autoBaseScale(raw.features, style.resolutionMm));
-  const precision = opts.precision ?? defaultPrecision(baseScale, PIXEL_SIZE_MM);
+  const precision = opts.precision ?? inputPrecision(baseScale, PIXEL_SIZE_MM, rings(raw.features));
   // Rounded to 12 digits: the tGAP's options say 0.014, not 0.014000000000000002.
   const sliverWidth = opts.sliverWidth ?? Number(((SLIVER_PX * style.resolutionMm * baseScale) / 1000).toPrecision(12));
   const topo = buildTopology(raw.features, {
@@ -207,6 +207,11 @@ function checkDuplicates(features: InputFeature[], problems: ProblemList, drop: 
     problems.add({ kind: 'duplicate', message: `is an exact duplicate of ${describeFeature(features[i]!.ref)} (--drop-duplicates drops the later one)`, feature: features[j]!.ref, ...firstPoint(features[j]!) });
   }
   return 0;
+}
+
+/** Every ring of the features: flat x, y pairs. */
+function* rings(features: readonly InputFeature[]): Generator<Float64Array> {
+  for (const f of features) for (const polygon of f.polygons) yield* polygon;
 }
 
 /** A feature's first point, to find it on a map. */

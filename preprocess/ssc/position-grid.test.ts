@@ -1,6 +1,6 @@
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { chooseGrid, coarsestGrid, cubeGridExponent, defaultPrecision } from './position-grid.js';
+import { chooseGrid, coarsestGrid, cubeGridExponent, defaultPrecision, inputPrecision } from './position-grid.js';
 
 describe('cubeGridExponent', () => {
   test('a 256th of a base pixel, rounded down to a power of two', () => {
@@ -38,6 +38,22 @@ describe('defaultPrecision and coarsestGrid', () => {
     assert.equal(defaultPrecision(50000, 0.28), 0.25);
     assert.equal(defaultPrecision(150000, 0.28), 1);
     assert.throws(() => defaultPrecision(0, 0.28), /no position grid for base scale 0/);
+  });
+  test('an input on a coarser grid of its own keeps it, up to an 8th of a base pixel and 1 unit', () => {
+    const ring = (...xy: number[]): Float64Array => Float64Array.from(xy);
+    // 1:50,000: a pixel is 14 m, an 8th 1.75 m, so whole metres (a raster's corners) stay 1 m.
+    const metres = [ring(304205, 4154086, 304237, 4154055), ring(304300, 4154086)];
+    assert.equal(inputPrecision(50000, 0.28, metres), 1);
+    // Half metres somewhere: 0.5; a coordinate off every power-of-two grid: the default.
+    assert.equal(inputPrecision(50000, 0.28, [...metres, ring(304205.5, 4154055)]), 0.5);
+    assert.equal(inputPrecision(50000, 0.28, [...metres, ring(304205.1, 4154055)]), defaultPrecision(50000, 0.28));
+    // 1:1,000: an 8th of a pixel is 3.5 cm, so whole metres give 2^-5 m; millimetres the default 2^-7.
+    assert.equal(inputPrecision(1000, 0.28, metres), 2 ** -5);
+    assert.equal(inputPrecision(1000, 0.28, [ring(181082.695, 456831.109)]), 2 ** -7);
+    // 1:150,000: the default is 1 unit already, and no grid is coarser than that.
+    assert.equal(inputPrecision(150000, 0.28, [ring(2609050, 1243550)]), 1);
+    // No coordinates: nothing to keep off the coarsest grid allowed.
+    assert.equal(inputPrecision(50000, 0.28, []), 1);
   });
   test('the chunks may be as coarse as a power-of-two precision, never coarser than 1 unit', () => {
     assert.equal(coarsestGrid(1000, 0.28, 2 ** -7), -7);
