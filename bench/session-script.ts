@@ -14,11 +14,17 @@ export interface Session {
   frames: { phase: string; view: ProjectedView }[];
 }
 
+/** The scale at which the whole extent fits a view of `width` x `height` px of the cube's pixel size. */
+export function fitScale(meta: Pick<CubeMeta, 'extent' | 'pixelSizeMm'>, width: number, height: number): number {
+  const [x0, y0, x1, y1] = meta.extent;
+  return (Math.max((x1 - x0) / width, (y1 - y0) / height) * 1000) / meta.pixelSizeMm;
+}
+
 export function scriptedSession(meta: CubeMeta, zoomOutFrames: number): Session {
   const [x0, y0, x1, y1] = meta.extent;
   const centre: [number, number] = [(x0 + x1) / 2, (y0 + y1) / 2];
   const base = meta.baseScale;
-  const full = (Math.max((x1 - x0) / SESSION_WIDTH, (y1 - y0) / SESSION_HEIGHT) * 1000) / meta.pixelSizeMm;
+  const full = fitScale(meta, SESSION_WIDTH, SESSION_HEIGHT);
   const frames: Session['frames'] = [];
   for (let i = 1; i <= zoomOutFrames; i++) frames.push({ phase: 'zoom out', view: { center: centre, scale: base * (full / base) ** (i / zoomOutFrames) } });
   // A quarter of the data's width: at the full extent half the view would leave the data

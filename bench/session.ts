@@ -14,9 +14,10 @@
 // Lighthouse's "Slow 4G": 1.6 Mbit/s down, 150 ms more per request) and times its first map:
 // there the bytes and requests before the first map, code and data, count as on a phone. It does
 // so again with the map opened at the start's scale times each of `starts` (1.414 and 4, and
-// `extent`: the whole extent, the map's default first view; `starts=` for none), at the same
-// centre: a first view above the base scale takes the cube's own chunks (or, up to twice the base
-// scale, first the floor's: the interim floor), where MapLibre takes tiles of a lower zoom.
+// `extent`: the whole extent, the map's default first view; `phone`: the whole extent on a phone
+// held upright, 390x844, the page that size; `starts=` for none), at the same centre: a first
+// view above the base scale takes the cube's own chunks (or, up to twice the base scale, first
+// the floor's: the interim floor), where MapLibre takes tiles of a lower zoom.
 // Prints, per dataset, the medians over `runs` runs (3) and their ratio, the vario map's data
 // bytes by kind of file, and what the session's views need of the surface chunks
 // (triangles-in-view.ts: a floor for the chunk encoding as it is); `csv=<file>` also
@@ -41,7 +42,8 @@ import { logResponses, type Sent } from './response-log.js';
 import { toMapLibreView, type LngLatView, type ProjectedView } from './scale-zoom.js';
 import { startQuery, writeSessionPages, type FirstMap, type FrameResult } from './session-pages.js';
 import { printTable } from './table.js';
-import { scriptedSession, SESSION_HEIGHT as HEIGHT, SESSION_WIDTH as WIDTH } from './session-script.js';
+import { fitScale, scriptedSession, SESSION_HEIGHT as HEIGHT, SESSION_WIDTH as WIDTH } from './session-script.js';
+import { PHONE_VIEW_PX } from '../preprocess/ssc/build-cube.js';
 import { sessionNeeds } from './triangles-in-view.js';
 import { buildTiles, tippecanoeVersion, TIPPECANOE_MISSING, writeWgs84GeoJson } from './tippecanoe-tiles.js';
 
@@ -97,9 +99,23 @@ interface OpenPage {
   arrivals: { path: string; at: number }[];
 }
 
+/** A page's size, CSS px. */
+interface Viewport {
+  width: number;
+  height: number;
+}
+
+const SESSION_VIEWPORT: Viewport = { width: WIDTH, height: HEIGHT };
+
+/** A first view of bench:session, and the size of the page it opens in. */
+interface Start<V> {
+  view: V;
+  viewport: Viewport;
+}
+
 /** Opens `url` in a fresh context (an empty cache; on `network`'s conditions when given) up to its first complete map; `log` starts empty. */
-async function openToFirstMap(browser: Browser, url: string, log: Sent[], network?: typeof SLOW_NETWORK): Promise<OpenPage> {
-  const context = await browser.newContext({ viewport: { width: WIDTH, height: HEIGHT } });
+async function openToFirstMap(browser: Browser, url: string, log: Sent[], network?: typeof SLOW_NETWORK, viewport = SESSION_VIEWPORT): Promise<OpenPage> {
+  const context = await browser.newContext({ viewport });
   try {
     const page = await context.newPage();
     const problems: string[] = [];
@@ -130,7 +146,7 @@ async function openToFirstMap(browser: Browser, url: string, log: Sent[], networ
 }
 
 /** Opens `page` in a fresh context (an empty cache), runs the session, and sums up the server's log. */
-async function runPage(browser: Browser, url: string, views: (ProjectedView | LngLatView)[], starts: (ProjectedView | LngLatView)[], log: Sent[], isData: (p: string) => boolean): Promise<RunResult> {
+async function runPage(browser: Browser, url: string, views: (ProjectedView | LngLatView)[], starts: Start<ProjectedView | LngLatView>[], log: Sent[], isData: (p: string) => boolean): Promise<RunResult> {
   const { context, page, first, problems } = await openToFirstMap(browser, url, log);
   let session: Omit<RunResult, 'slowFirstMs' | 'slowBytesBeforeFirst' | 'slowResponses' | 'slowFirstAt'>;
   try {
@@ -163,16 +179,16 @@ async function runPage(browser: Browser, url: string, views: (ProjectedView | Ln
   // is closed, so that nothing of it runs beside them.
   const slow = await firstOnSlowNetwork(browser, url, log);
   const slowFirstAt: RunResult['slowFirstAt'] = [];
-  for (const v of starts) {
-    const other = await firstOnSlowNetwork(browser, url + startQuery(v), log);
+  for (const st of starts) {
+    const other = await firstOnSlowNetwork(browser, url + startQuery(st.view), log, st.viewport);
     slowFirstAt.push({ ms: other.slowFirstMs, bytes: other.slowBytesBeforeFirst });
   }
   return { ...session, ...slow, slowFirstAt };
 }
 
 /** The page opened in a fresh context on SLOW_NETWORK, to its first complete map. */
-async function firstOnSlowNetwork(browser: Browser, url: string, log: Sent[]): Promise<Pick<RunResult, 'slowFirstMs' | 'slowBytesBeforeFirst' | 'slowResponses'>> {
-  const { context, first, problems, arrivals } = await openToFirstMap(browser, url, log, SLOW_NETWORK);
+async function firstOnSlowNetwork(browser: Browser, url: string, log: Sent[], viewport?: Viewport): Promise<Pick<RunResult, 'slowFirstMs' | 'slowBytesBeforeFirst' | 'slowResponses'>> {
+  const { context, first, problems, arrivals } = await openToFirstMap(browser, url, log, SLOW_NETWORK, viewport);
   try {
     if (problems.length > 0) throw new Error(`${url} on a slow network: ${problems.join('; ')}`);
     // Each response the server sent, with when the browser had it whole (the next arrival of its
@@ -199,8 +215,8 @@ async function firstOnSlowNetwork(browser: Browser, url: string, log: Sent[]): P
 const mb = (b: number): string => `${(b / 1e6).toFixed(2)} MB`;
 const ratio = (a: number, b: number): string => `${(a / b).toFixed(2)}x`;
 
-/** A first view of bench:session: a factor of the start's scale, or the whole extent. */
-type StartAt = number | 'extent';
+/** A first view of bench:session: a factor of the start's scale, or the whole extent (1280x720, or a phone's). */
+type StartAt = number | 'extent' | 'phone';
 
 async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFrames: number, startFactors: StartAt[], csv: string[], waterfall: boolean): Promise<void> {
   const tmp = await mkdtemp(path.join(tmpdir(), 'ssc-bench-session-'));
@@ -216,10 +232,14 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
     const toLngLat = toMapLibreView(meta.proj4, WIDTH, meta.pixelSizeMm);
     const s = scriptedSession(meta, zoomOutFrames);
     // The other first views: the session's start, zoomed out by each factor.
-    const starts: ProjectedView[] = startFactors.map((f) => ({ center: s.start.center, scale: f === 'extent' ? s.fullScale : s.start.scale * f }));
+    const phone: Viewport = { width: PHONE_VIEW_PX[0], height: PHONE_VIEW_PX[1] };
+    const starts: Start<ProjectedView>[] = startFactors.map((f) => ({
+      view: { center: s.start.center, scale: f === 'extent' ? s.fullScale : f === 'phone' ? fitScale(meta, phone.width, phone.height) : s.start.scale * f },
+      viewport: f === 'phone' ? phone : SESSION_VIEWPORT,
+    }));
     // MapLibre draws a 512-px vector source's tiles of floor(zoom): the tiles span the zooms
     // the session shows, the highest holding the full detail.
-    const zooms = [s.start, ...starts, ...s.frames.map((f) => f.view)].map((v) => toLngLat(v).zoom);
+    const zooms = [s.start, ...starts.map((st) => st.view), ...s.frames.map((f) => f.view)].map((v) => toLngLat(v).zoom);
     const geojson = path.join(tmp, `${d.name}.wgs84.geojson`);
     await writeWgs84GeoJson(d.file, classProperty, geojson);
     process.stderr.write(`tiling ${d.name}... `);
@@ -243,7 +263,7 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
         for (const which of r % 2 === 0 ? (['vario', 'maplibre'] as const) : (['maplibre', 'vario'] as const)) {
           const views = which === 'vario' ? s.frames.map((f) => f.view) : s.frames.map((f) => toLngLat(f.view));
           const prefix = which === 'vario' ? '/cube/' : '/tiles/';
-          const res = await runPage(browser, `${server.url}${which}.html`, views, which === 'vario' ? starts : starts.map(toLngLat), log, (p) => p.startsWith(prefix));
+          const res = await runPage(browser, `${server.url}${which}.html`, views, which === 'vario' ? starts : starts.map((st) => ({ ...st, view: toLngLat(st.view) })), log, (p) => p.startsWith(prefix));
           results[which].push(res);
           process.stderr.write(`  ${d.name} run ${r + 1} ${which}: first map ${res.firstMs.toFixed(0)} ms, ${mb(res.bytesSoFar[res.bytesSoFar.length - 1]!)}, frame median ${median(res.frames.map((f) => f.ms)).toFixed(0)} ms\n`);
         }
@@ -311,8 +331,9 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
         ...starts.map((st, k) => {
           const varioMs = medianAt(results.vario, k, (a) => a.ms), mapLibreMs = medianAt(results.maplibre, k, (a) => a.ms);
           const varioBytes = medianAt(results.vario, k, (a) => a.bytes), mapLibreBytes = medianAt(results.maplibre, k, (a) => a.bytes);
-          const at = startFactors[k] === 'extent' ? 'the whole extent, the default view' : `${startFactors[k]}x the start`;
-          return [`1:${Math.round(st.scale).toLocaleString('en')} (${at})`, `${(varioMs / 1000).toFixed(2)} s`, `${(mapLibreMs / 1000).toFixed(2)} s`, ratio(varioMs, mapLibreMs), mb(varioBytes), mb(mapLibreBytes), ratio(varioBytes, mapLibreBytes)];
+          const f = startFactors[k];
+          const at = f === 'extent' ? 'the whole extent, the default view' : f === 'phone' ? `the whole extent on a phone, ${st.viewport.width}x${st.viewport.height}` : `${f}x the start`;
+          return [`1:${Math.round(st.view.scale).toLocaleString('en')} (${at})`, `${(varioMs / 1000).toFixed(2)} s`, `${(mapLibreMs / 1000).toFixed(2)} s`, ratio(varioMs, mapLibreMs), mb(varioBytes), mb(mapLibreBytes), ratio(varioBytes, mapLibreBytes)];
         }),
       ]);
     }
@@ -351,9 +372,9 @@ async function main(): Promise<void> {
   const frames = Number(args.find((a) => a.startsWith('frames='))?.slice(7) ?? 120);
   if (!Number.isInteger(frames) || frames < 1) throw new Error('frames= takes a whole number >= 1');
   const csvFile = args.find((a) => a.startsWith('csv='))?.slice(4);
-  const startsArg = args.find((a) => a.startsWith('starts='))?.slice(7) ?? '1.414,4,extent';
-  const startFactors: StartAt[] = startsArg === '' ? [] : startsArg.split(',').map((w) => (w === 'extent' ? w : Number(w)));
-  if (startFactors.some((f) => f !== 'extent' && !(f > 0))) throw new Error(`starts=${startsArg}: a comma-separated list of factors > 0 (of the start's scale) or "extent", or nothing`);
+  const startsArg = args.find((a) => a.startsWith('starts='))?.slice(7) ?? '1.414,4,extent,phone';
+  const startFactors: StartAt[] = startsArg === '' ? [] : startsArg.split(',').map((w) => (w === 'extent' || w === 'phone' ? w : Number(w)));
+  if (startFactors.some((f) => typeof f === 'number' && !(f > 0))) throw new Error(`starts=${startsArg}: a comma-separated list of factors > 0 (of the start's scale), "extent" or "phone", or nothing`);
   const sets = datasets(filter?.includes('=') || filter === 'waterfall' ? undefined : filter, ['bgt_otterlo_1800m', 'nlcd_zion']);
   process.stderr.write(`${version}\n`);
   const csv = ['dataset,frame,phase,scale,vario bytes so far,maplibre bytes so far,vario ms,maplibre ms,vario triangles,maplibre triangles'];

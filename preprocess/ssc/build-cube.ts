@@ -57,7 +57,7 @@ export const FLOOR_CHUNK_FACTOR = 2;
  * 147 kB (gzip) of surface chunks with the one cut and 102 kB with both, nlcd_zion's 1,740 and
  * 1,073 kB (docs/FORMAT.md, "index.json").
  */
-const PHONE_VIEW_PX: [number, number] = [390, 844];
+export const PHONE_VIEW_PX: readonly [number, number] = [390, 844];
 
 /**
  * Line chunks are planned at this share of the chunk size: a line lives over much of the z
