@@ -16,9 +16,11 @@ export async function settle(turns = 5): Promise<void> {
  * on the thread pool), so this waits for it; the limit only stops a hang, it measures nothing.
  */
 export async function eventually(cond: () => boolean, what: string): Promise<void> {
-  const giveUp = performance.now() + 10_000;
+  // Either clock may be a test's fake (fake-clock.ts mocks performance.now, a fake Date stands
+  // still): the one that moves ends the wait.
+  const giveUp = performance.now() + 10_000, giveUpDate = Date.now() + 10_000;
   while (!cond()) {
-    if (performance.now() > giveUp) throw new Error(`never happened: ${what}`);
+    if (performance.now() > giveUp || Date.now() > giveUpDate) throw new Error(`never happened: ${what}`);
     await turn();
   }
 }

@@ -9,6 +9,7 @@ import { describe, test, type TestContext } from 'node:test';
 import { parseIndex, type Box3, type ChunkLeaf } from '../../../format/cube-index.js';
 import { boxMeets, queryIndex, type QueryBox } from '../../../format/index-query.js';
 import { eventually, settle } from '../../../testing/event-loop.js';
+import { fakeClock } from '../../../testing/fake-clock.js';
 import { installFakeFetch, status, type Answer, type FakeFetch } from '../../../testing/fake-fetch.js';
 import { handMadeCube, serveFiles, squareChunk, twoLevelCube, type ChunkSpec } from '../../../testing/hand-made-cube.js';
 import { ChunkScheduler } from './chunk-scheduler.js';
@@ -174,45 +175,49 @@ describe('the chunk scheduler', () => {
   });
 
   test('the margin waits until the view has rested: a new view before then starts the wait again', async (t) => {
-    // Long enough that a timer firing late on a busy machine does not reach the next step.
     const rest = 800;
-    const h = await harness(t, handMadeCube(row(4)).files, { concurrency: 4, marginRestMs: rest }, undefined, true);
+    const h = await harness(t, handMadeCube(row(4)).files, { concurrency: 4, marginRestMs: rest });
+    const clock = fakeClock(t);
     // On screen: c-0 (x 0..9.5); the margin (to x 29) holds c-1, c-2.
     h.scheduler.setView(view(1, 0, 9.5, { centerX: 5, margin: [0, 29] }));
     await eventually(() => h.received().length === 1, 'the chunk on screen');
-    await new Promise((r) => setTimeout(r, rest / 2));
+    h.uploadAll();
+    clock.advance(rest / 2);
+    await settle();
     assert.deepEqual(h.fetched(), ['c-0.bin'], 'the view has not rested yet');
     // The view moves a little (a new view, the same chunks): the rest starts again.
-    const moved = performance.now();
     h.scheduler.setView(view(2, 0.5, 9.5, { centerX: 5.5, margin: [0, 29] }));
-    await new Promise((r) => setTimeout(r, (3 * rest) / 4));
+    clock.advance(rest - 1);
+    await settle();
     assert.deepEqual(h.fetched(), ['c-0.bin'], 'rested since the first view, not since the second');
-    await eventually(() => h.fetched().length === 3, 'the margin requested');
-    assert.ok(performance.now() - moved >= rest - 1, 'not before the second view has rested');
+    clock.advance(1);
+    await eventually(() => h.fetched().length === 3, 'the margin requested once the second view has rested');
     assert.deepEqual(h.fetched().slice(1), ['c-1.bin', 'c-2.bin']);
   });
 
   test('where the map\'s frames take longer than the rest (a slow device), the margin waits one and a half frames; a rest of 0 waits for nothing', async (t) => {
-    // A frame long against a timer firing late on a busy machine.
     const rest = 300;
     const frameMs = 700;
-    const h = await harness(t, handMadeCube(row(4)).files, { concurrency: 4, marginRestMs: rest }, undefined, true);
+    const h = await harness(t, handMadeCube(row(4)).files, { concurrency: 4, marginRestMs: rest });
+    const clock = fakeClock(t);
     // On screen: c-0 (x 0..9.5); the margin (to x 29) holds c-1, c-2.
-    const since = performance.now();
     h.scheduler.setView(view(1, 0, 9.5, { centerX: 5, margin: [0, 29], frameMs }));
     await eventually(() => h.received().length === 1, 'the chunk on screen');
-    await new Promise((r) => setTimeout(r, 2 * rest - (performance.now() - since)));
-    assert.deepEqual(h.fetched(), ['c-0.bin'], 'rested twice marginRestMs, less than one and a half frames');
-    await eventually(() => h.fetched().length === 3, 'the margin requested');
-    assert.ok(performance.now() - since >= 1.5 * frameMs - 1, 'not before one and a half frames');
+    h.uploadAll();
+    clock.advance(1.5 * frameMs - 1);
+    await settle();
+    assert.deepEqual(h.fetched(), ['c-0.bin'], 'rested more than marginRestMs, less than one and a half frames');
+    clock.advance(1);
+    await eventually(() => h.fetched().length === 3, 'the margin requested after one and a half frames');
     assert.deepEqual(h.fetched().slice(1), ['c-1.bin', 'c-2.bin']);
 
-    const none = await harness(t, handMadeCube(row(4)).files, { concurrency: 4, marginRestMs: 0 }, undefined, true);
-    const noneSince = performance.now();
+    const none = await harness(t, handMadeCube(row(4)).files, { concurrency: 4, marginRestMs: 0 });
     none.scheduler.setView(view(1, 0, 9.5, { centerX: 5, margin: [0, 29], frameMs }));
-    await eventually(() => none.fetched().length === 3, 'the margin requested');
-    assert.ok(performance.now() - noneSince < 1.5 * frameMs, 'without waiting for the frames');
+    await eventually(() => none.received().length === 1, 'the chunk on screen');
+    none.uploadAll();
+    await eventually(() => none.fetched().length === 3, 'the margin requested without the clock moving');
   });
+
 
   test('the margin waits until every chunk on screen is on the GPU, even with requests to spare; a flight\'s path does not wait', async (t) => {
     const h = await harness(t, handMadeCube(row(7)).files, { concurrency: 4 }, () => 'hold');

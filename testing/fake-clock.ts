@@ -1,0 +1,21 @@
+// A fake clock for code that reads performance.now() and waits on setTimeout: both mocked and
+// moved together by advance(), so that a test of a wait looks just before its end and at it,
+// instead of sleeping and hoping a busy machine fires the timer on time. Restored with the test.
+import type { TestContext } from 'node:test';
+
+export interface FakeClock {
+  /** Moves performance.now() on by `ms` and runs the timers due by then. */
+  advance(ms: number): void;
+}
+
+export function fakeClock(t: TestContext): FakeClock {
+  let now = performance.now();
+  t.mock.timers.enable({ apis: ['setTimeout'] });
+  t.mock.method(performance, 'now', () => now);
+  return {
+    advance(ms) {
+      now += ms;
+      t.mock.timers.tick(ms);
+    },
+  };
+}
