@@ -15,7 +15,7 @@ import { recommendBaseScale } from './style-scaffold/base-scale.js';
 import { describeColourSources } from './style-scaffold/class-colours.js';
 import { featureShape, guessClassProperty } from './style-scaffold/class-stats.js';
 import { lapTimer } from './lap-timer.js';
-import { coarsestGrid, inputPrecision } from './ssc/position-grid.js';
+import { coarsestGrid, defaultPrecision, pointGrid } from './ssc/position-grid.js';
 import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
 
 /**
@@ -112,7 +112,7 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
   const allowHoles = opts.allowHoles ?? style.allowHoles;
   // The base scale before the topology: it sets the snapping grid and the sliver width.
   const baseScale = opts.baseScale ?? (style.baseScale > 0 ? style.baseScale : autoBaseScale(raw.features, style.resolutionMm));
-  const precision = opts.precision ?? inputPrecision(baseScale, PIXEL_SIZE_MM, rings(raw.features));
+  const precision = opts.precision ?? defaultPrecision(baseScale, PIXEL_SIZE_MM);
   // Rounded to 12 digits: the tGAP's options say 0.014, not 0.014000000000000002.
   const sliverWidth = opts.sliverWidth ?? Number(((SLIVER_PX * style.resolutionMm * baseScale) / 1000).toPrecision(12));
   const topo = buildTopology(raw.features, {
@@ -123,6 +123,9 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
   // The coordinates now live in the topology; let the input's go.
   raw.features.length = 0;
   lap('topology');
+  // The grid every point lies on: the precision, or the input's own where coarser (position-grid.ts).
+  const n = topo.vertexCount;
+  const grid = Math.max(precision, pointGrid(baseScale, PIXEL_SIZE_MM, [topo.xs.subarray(0, n), topo.ys.subarray(0, n)]) ?? 0);
   log(`topology: ${topo.faceCount - 1} faces, ${topo.edges.length} edges, ${topo.nodeCount} nodes, ${topo.vertexCount} vertices`);
 
   let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
@@ -140,7 +143,7 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
   const g = generalize(topo, (f) => classes[topo.featureOfFace[f]! + 1]!, style, {
     baseScale,
     resolutionMm: style.resolutionMm,
-    snapStep: 2 ** coarsestGrid(baseScale, PIXEL_SIZE_MM, precision),
+    snapStep: 2 ** coarsestGrid(baseScale, PIXEL_SIZE_MM, grid),
     ...(opts.group !== undefined ? { group: opts.group } : {}),
     onProgress: (k, alive) => log(`generalize: step ${k}, ${alive} faces left`),
   });
@@ -162,7 +165,7 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
     source: path.basename(input),
     style: styleToJson({ ...style, baseScale }),
     attributes,
-    options: { precision, allowHoles, group: opts.group ?? 1, sliverWidth },
+    options: { precision, grid, allowHoles, group: opts.group ?? 1, sliverWidth },
   };
   const report: PipelineReport = {
     topology: { vertexCount: topo.vertexCount, nodeCount: topo.nodeCount, faceCount: topo.faceCount - 1, edges: topo.edges.length, repairs: topo.repairs, holes: topo.holes, droppedDuplicates },
@@ -207,11 +210,6 @@ function checkDuplicates(features: InputFeature[], problems: ProblemList, drop: 
     problems.add({ kind: 'duplicate', message: `is an exact duplicate of ${describeFeature(features[i]!.ref)} (--drop-duplicates drops the later one)`, feature: features[j]!.ref, ...firstPoint(features[j]!) });
   }
   return 0;
-}
-
-/** Every ring of the features: flat x, y pairs. */
-function* rings(features: readonly InputFeature[]): Generator<Float64Array> {
-  for (const f of features) for (const polygon of f.polygons) yield* polygon;
 }
 
 /** A feature's first point, to find it on a map. */

@@ -20,10 +20,8 @@ export const usage = `ssc generalize <input> --out <file.tgap> [options]
                             object to read (default: all)
   --precision <units>       snapping grid and T-junction tolerance (default: a power of two,
                             at most 1/32 pixel of 0.28 mm at the base scale and at most 1,
-                            7.8 mm at 1:1,000, or the input's own power-of-two grid when
-                            coarser, up to 1/8 pixel and 1: whole metres at 1:50,000 keep 1;
-                            a power of two lets the cube keep every input point exactly, see
-                            docs/FORMAT.md)
+                            7.8 mm at 1:1,000; a power of two lets the cube keep every input
+                            point exactly, see docs/FORMAT.md)
   --base-scale <n>          scale denominator of the input (default: the style's, else derived)
   --sliver-width <units>    parts of a face thinner than this (2 x area / perimeter) are
                             slivers, dissolved into the neighbour with the longest shared

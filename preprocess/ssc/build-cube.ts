@@ -6,7 +6,7 @@ import { promises as fs } from 'node:fs';
 import path from 'node:path';
 import { brotliCompressSync, constants as zc, gzipSync } from 'node:zlib';
 import { encodeIndex, hashedName, INDEX_FORMAT, INDEX_VERSION, type ChunkLeaf, type CubeIndexJson, type LineChunkLeaf } from '../../format/cube-index.js';
-import { groundPerScale, PIXEL_SIZE_MM } from '../../format/pixel-size.js';
+import { groundPerScale, PHONE_VIEW_PX, PIXEL_SIZE_MM } from '../../format/pixel-size.js';
 import { scaleAtZ, zAtScale } from '../../format/scale.js';
 import { writeDirAtomic } from '../io/atomic-write.js';
 import { proj4Definition } from '../io/crs-definition.js';
@@ -49,15 +49,6 @@ export const DEFAULT_CHUNK_BYTES = 64 * 1024;
  * floor chunk files, boundaries, are a quarter to a third smaller.)
  */
 export const FLOOR_CHUNK_FACTOR = 2;
-
-/**
- * A phone held upright, in CSS px. The map opens showing the whole extent, which on a phone lies
- * at a coarser scale than on the 1280 x 720 px view of the chunking's model; the chunks keep the
- * triangles covered above either apart (planChunks). bgt_otterlo_1800m's phone view queried
- * 147 kB (gzip) of surface chunks with the one cut and 102 kB with both, nlcd_zion's 1,740 and
- * 1,073 kB (docs/FORMAT.md, "index.json").
- */
-export const PHONE_VIEW_PX: readonly [number, number] = [390, 844];
 
 /**
  * Line chunks are planned at this share of the chunk size: a line lives over much of the z
@@ -109,8 +100,10 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const { timings, lap } = lapTimer();
   const smooth = opts.smooth ?? true;
   // The faces the surfaces name: a smooth build skips some re-emits (late-reemits.ts).
-  const precision = typeof t.meta.options.precision === 'number' ? t.meta.options.precision : 0;
-  const coarsest = coarsestGrid(t.meta.baseScale, PIXEL_SIZE_MM, precision);
+  // The grid the tGAP's points lie on (its precision in a tGAP written before `grid`).
+  const o = t.meta.options;
+  const pointsOn = typeof o.grid === 'number' ? o.grid : typeof o.precision === 'number' ? o.precision : 0;
+  const coarsest = coarsestGrid(t.meta.baseScale, PIXEL_SIZE_MM, pointsOn);
   const { surfaces, stats, tgap: cubeTgap } = buildSurfaces(t, { smooth, snapStep: 2 ** coarsest });
   const { faces } = cubeTgap;
   lap('surfaces');

@@ -13,8 +13,8 @@
 // (chooseGrid).
 //
 // The input is snapped by default to a coarser power of two, 1/32 of a base pixel (2^-7 m, 7.8 mm,
-// at 1:1,000; 2^-2 m at 1:50,000) or the input's own when coarser (inputPrecision: 1 m for
-// nlcd_zion's whole metres), and the chunks' grid may then be that one: every input point
+// at 1:1,000; 2^-2 m at 1:50,000), and the chunks' grid may then be that one, or the input's
+// own when coarser (pointGrid: 1 m for nlcd_zion's whole metres): every input point
 // lies on it exactly, and the points the generalization and the surfaces make (split midpoints
 // and centres) are put on it where they can be (snap-new-vertices.ts). On bgt_otterlo_1800m the chunks
 // took 2.31 MB gzip with the input snapped to 1 mm and the chunks on 2^-10 m, 2.08 MB with both
@@ -51,30 +51,28 @@ export const cubeGridExponent = (baseScale: number, pixelSizeMm: number): number
 /** The input's snapping grid when none is given (`ssc generalize --precision`): 2^e at most a 32nd of a base pixel, at most 1 unit. */
 export const defaultPrecision = (baseScale: number, pixelSizeMm: number): number => 2 ** gridExponentPerPixel(baseScale, pixelSizeMm, SNAP_STEPS_PER_PIXEL);
 
-/** The coarsest grid of its own an input may keep as its precision, in steps per base pixel (inputPrecision). */
-export const INPUT_GRID_STEPS_PER_PIXEL = 8;
+/** The coarsest grid of its own an input's points may keep (pointGrid), in steps per base pixel. */
+export const POINT_GRID_STEPS_PER_PIXEL = 8;
 
 /**
- * The snapping grid when none is given, for an input with these coordinates: the input's own
- * grid (the largest power of two of which every coordinate is a whole multiple) when that is
- * coarser than defaultPrecision, up to an 8th of a base pixel and 1 unit; else
- * defaultPrecision. Snapping such an input moves no point, and the points the build makes go to
- * the same grid, so the chunks may take it: on nlcd_zion (whole metres, 1:50,000) 1 m instead of
- * 2^-2 m, about a 14th of a pixel, and the chunks of its whole-extent view 1,520 -> 1,447 kB gzip
- * (docs/FORMAT.md, "Chunk file").
+ * The coarsest power of two coarser than defaultPrecision, up to an 8th of a base pixel and 1
+ * unit, of which every coordinate is a whole multiple; null when there is none. The snapped
+ * input's points (topology vertices) of nlcd_zion, in whole metres at 1:50,000, lie on 1 m; the
+ * points the build makes then go to that grid, and so may the chunks (coarsestGrid): 1 m
+ * instead of 2^-2 m, about a 14th of a pixel, and the chunks of its whole-extent view 1,520 ->
+ * 1,447 kB gzip (docs/FORMAT.md, "Chunk file"). The snapping precision, also the tolerance of
+ * the topology's repairs, stays as it was.
  */
-export function inputPrecision(baseScale: number, pixelSizeMm: number, coordinates: Iterable<ArrayLike<number>>): number {
+export function pointGrid(baseScale: number, pixelSizeMm: number, coordinates: Iterable<ArrayLike<number>>): number | null {
   const finest = gridExponentPerPixel(baseScale, pixelSizeMm, SNAP_STEPS_PER_PIXEL);
-  let e = gridExponentPerPixel(baseScale, pixelSizeMm, INPUT_GRID_STEPS_PER_PIXEL);
+  let e = gridExponentPerPixel(baseScale, pixelSizeMm, POINT_GRID_STEPS_PER_PIXEL);
   for (const run of coordinates) {
-    for (let i = 0; i < run.length && e > finest; i++) {
-      const v = run[i]!;
+    for (let i = 0; i < run.length; i++) {
       // Dividing by a power of two is exact: v is a multiple of 2^e exactly when the quotient is whole.
-      while (e > finest && !Number.isInteger(v / 2 ** e)) e--;
+      while (!Number.isInteger(run[i]! / 2 ** e)) if (--e <= finest) return null;
     }
-    if (e <= finest) break;
   }
-  return 2 ** e;
+  return e > finest ? 2 ** e : null;
 }
 
 /**
