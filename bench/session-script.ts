@@ -3,6 +3,8 @@
 // encodings on the same views).
 import type { CubeMeta } from '../format/cube-index.js';
 import type { ProjectedView } from './scale-zoom.js';
+import { groundPerScale } from '../format/pixel-size.js';
+import { wholeExtentScale } from '../preprocess/ssc/view-hit-chance.js';
 
 export const SESSION_WIDTH = 1280, SESSION_HEIGHT = 720;
 
@@ -15,10 +17,8 @@ export interface Session {
 }
 
 /** The scale at which the whole extent fits a view of `width` x `height` px of the cube's pixel size. */
-export function fitScale(meta: Pick<CubeMeta, 'extent' | 'pixelSizeMm'>, width: number, height: number): number {
-  const [x0, y0, x1, y1] = meta.extent;
-  return (Math.max((x1 - x0) / width, (y1 - y0) / height) * 1000) / meta.pixelSizeMm;
-}
+export const fitScale = (meta: Pick<CubeMeta, 'extent' | 'pixelSizeMm'>, width: number, height: number): number =>
+  wholeExtentScale({ extent: meta.extent, viewPerScale: groundPerScale(width, height, meta.pixelSizeMm) });
 
 export function scriptedSession(meta: CubeMeta, zoomOutFrames: number): Session {
   const [x0, y0, x1, y1] = meta.extent;

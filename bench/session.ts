@@ -43,7 +43,7 @@ import { toMapLibreView, type LngLatView, type ProjectedView } from './scale-zoo
 import { startQuery, writeSessionPages, type FirstMap, type FrameResult } from './session-pages.js';
 import { printTable } from './table.js';
 import { fitScale, scriptedSession, SESSION_HEIGHT as HEIGHT, SESSION_WIDTH as WIDTH } from './session-script.js';
-import { PHONE_VIEW_PX } from '../preprocess/ssc/build-cube.js';
+import { PHONE_VIEW_PX } from '../format/pixel-size.js';
 import { sessionNeeds } from './triangles-in-view.js';
 import { buildTiles, tippecanoeVersion, TIPPECANOE_MISSING, writeWgs84GeoJson } from './tippecanoe-tiles.js';
 
@@ -237,6 +237,8 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
       view: { center: s.start.center, scale: f === 'extent' ? s.fullScale : f === 'phone' ? fitScale(meta, phone.width, phone.height) : s.start.scale * f },
       viewport: f === 'phone' ? phone : SESSION_VIEWPORT,
     }));
+    const proj4Def = meta.proj4;
+    const mapLibreStarts = starts.map((st) => ({ ...st, view: toMapLibreView(proj4Def, st.viewport.width, meta.pixelSizeMm)(st.view) }));
     // MapLibre draws a 512-px vector source's tiles of floor(zoom): the tiles span the zooms
     // the session shows, the highest holding the full detail.
     const zooms = [s.start, ...starts.map((st) => st.view), ...s.frames.map((f) => f.view)].map((v) => toLngLat(v).zoom);
@@ -263,7 +265,7 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
         for (const which of r % 2 === 0 ? (['vario', 'maplibre'] as const) : (['maplibre', 'vario'] as const)) {
           const views = which === 'vario' ? s.frames.map((f) => f.view) : s.frames.map((f) => toLngLat(f.view));
           const prefix = which === 'vario' ? '/cube/' : '/tiles/';
-          const res = await runPage(browser, `${server.url}${which}.html`, views, which === 'vario' ? starts : starts.map((st) => ({ ...st, view: toLngLat(st.view) })), log, (p) => p.startsWith(prefix));
+          const res = await runPage(browser, `${server.url}${which}.html`, views, which === 'vario' ? starts : mapLibreStarts, log, (p) => p.startsWith(prefix));
           results[which].push(res);
           process.stderr.write(`  ${d.name} run ${r + 1} ${which}: first map ${res.firstMs.toFixed(0)} ms, ${mb(res.bytesSoFar[res.bytesSoFar.length - 1]!)}, frame median ${median(res.frames.map((f) => f.ms)).toFixed(0)} ms\n`);
         }
@@ -332,7 +334,7 @@ async function runDataset(browser: Browser, d: Dataset, runs: number, zoomOutFra
           const varioMs = medianAt(results.vario, k, (a) => a.ms), mapLibreMs = medianAt(results.maplibre, k, (a) => a.ms);
           const varioBytes = medianAt(results.vario, k, (a) => a.bytes), mapLibreBytes = medianAt(results.maplibre, k, (a) => a.bytes);
           const f = startFactors[k];
-          const at = f === 'extent' ? 'the whole extent, the default view' : f === 'phone' ? `the whole extent on a phone, ${st.viewport.width}x${st.viewport.height}` : `${f}x the start`;
+          const at = f === 'extent' ? 'the whole extent, the default view' : f === 'phone' ? `the whole extent in a ${st.viewport.width}x${st.viewport.height} page` : `${f}x the start`;
           return [`1:${Math.round(st.view.scale).toLocaleString('en')} (${at})`, `${(varioMs / 1000).toFixed(2)} s`, `${(mapLibreMs / 1000).toFixed(2)} s`, ratio(varioMs, mapLibreMs), mb(varioBytes), mb(mapLibreBytes), ratio(varioBytes, mapLibreBytes)];
         }),
       ]);
