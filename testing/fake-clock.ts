@@ -4,7 +4,7 @@
 import type { TestContext } from 'node:test';
 
 export interface FakeClock {
-  /** Moves performance.now() on by `ms` and runs the timers due by then. */
+  /** Moves performance.now() on by `ms`, then runs the timers due by then (they read the new time, as with node's fake Date). */
   advance(ms: number): void;
 }
 

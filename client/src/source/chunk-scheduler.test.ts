@@ -218,7 +218,6 @@ describe('the chunk scheduler', () => {
     await eventually(() => none.fetched().length === 3, 'the margin requested without the clock moving');
   });
 
-
   test('the margin waits until every chunk on screen is on the GPU, even with requests to spare; a flight\'s path does not wait', async (t) => {
     const h = await harness(t, handMadeCube(row(7)).files, { concurrency: 4 }, () => 'hold');
     // On screen: c-0 and c-1 (x 0..19.5); the margin (to x 50) holds c-2, c-3, c-4; a view ahead c-6.
