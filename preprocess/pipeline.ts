@@ -123,7 +123,8 @@ export async function generalizeFile(input: string, opts: PipelineOptions = {}):
   // The coordinates now live in the topology; let the input's go.
   raw.features.length = 0;
   lap('topology');
-  // The grid every point lies on: the precision, or the input's own where coarser (position-grid.ts).
+  // The grid every input point lies on: the precision, or the input's own where coarser
+  // (position-grid.ts); the points the build makes go to it where they can.
   const n = topo.vertexCount;
   const grid = Math.max(precision, pointGrid(baseScale, PIXEL_SIZE_MM, [topo.xs.subarray(0, n), topo.ys.subarray(0, n)]) ?? 0);
   log(`topology: ${topo.faceCount - 1} faces, ${topo.edges.length} edges, ${topo.nodeCount} nodes, ${topo.vertexCount} vertices`);

@@ -99,11 +99,11 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const log = opts.log ?? (() => {});
   const { timings, lap } = lapTimer();
   const smooth = opts.smooth ?? true;
-  // The faces the surfaces name: a smooth build skips some re-emits (late-reemits.ts).
-  // The grid the tGAP's points lie on (its precision in a tGAP written before `grid`).
+  // The grid the tGAP's input points lie on (its precision in a tGAP written before `grid`).
   const o = t.meta.options;
   const pointsOn = typeof o.grid === 'number' ? o.grid : typeof o.precision === 'number' ? o.precision : 0;
   const coarsest = coarsestGrid(t.meta.baseScale, PIXEL_SIZE_MM, pointsOn);
+  // The faces the surfaces name: a smooth build skips some re-emits (late-reemits.ts).
   const { surfaces, stats, tgap: cubeTgap } = buildSurfaces(t, { smooth, snapStep: 2 ** coarsest });
   const { faces } = cubeTgap;
   lap('surfaces');
