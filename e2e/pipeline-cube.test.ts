@@ -285,8 +285,12 @@ test('bgt_otterlo_400m cube', async (t) => {
     assert.ok(rep.bytes.cv <= 0.25, `chunk sizes vary too much (CV ${rep.bytes.cv})`);
     // Compressed chunks (version 2) pay for chunking also in their codecs starting afresh and
     // sharing points only within a chunk; the default 64 KiB chunks (build-cube.ts says why)
-    // start afresh four times as often as the 256 KiB ones did, which cost 1.15.
-    assert.ok(rep.overhead <= 1.25, `chunking costs ${rep.overhead}`);
+    // start afresh four times as often as the 256 KiB ones did, which cost 1.15. Level pieces
+    // as rings (version 6) cost more where a chunk border cuts them: each side stores its part's
+    // rings along the border, where one file stores the whole piece's. This classic cube is all
+    // level: its chunks went from 133,032 to 89,776 bytes and the one file from 111,184 to
+    // 67,336, so the cost went from 1.20 to 1.33.
+    assert.ok(rep.overhead <= 1.4, `chunking costs ${rep.overhead}`);
     assert.equal(rep.views.length, 8);
   });
 });

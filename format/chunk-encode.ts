@@ -1,4 +1,4 @@
-// The chunk file's encoder (docs/FORMAT.md, "Chunk file", version 5), beside the decoder in
+// The chunk file's encoder (docs/FORMAT.md, "Chunk file", version 6), beside the decoder in
 // chunk.ts: a file of its own so that the map, which only decodes, does not load the
 // encoder's WebAssembly. Used by the build (Node). Same input, same bytes.
 //
@@ -9,8 +9,9 @@
 // stream doubled (floor 42 -> 85 kB), as a face's own vertices are what keep its triangles in
 // the runs the index codec codes cheaply. Triangles grouped by face: 191 kB in the floor.
 import { MeshoptEncoder } from 'meshoptimizer/encoder';
+import { findRingPieces } from './chunk-rings.js';
 import {
-  CHUNK_MAGIC, CHUNK_VERSION, chunkSections, encodedVertexBytes, FACE_RECORD_BYTES, gridExponentFor, gridPointKey, gridSteps, indexSizeFor,
+  CHUNK_MAGIC, CHUNK_VERSION, chunkSections, type ChunkStreams, encodedVertexBytes, FACE_RECORD_BYTES, gridExponentFor, gridPointKey, gridSteps, indexSizeFor,
   NO_CLASS, POINT_BYTES, tableIndexSizeFor, Z_BYTES,
 } from './chunk.js';
 
@@ -76,28 +77,41 @@ export interface ChunkInput {
   gridExponent?: number;
 }
 
-/** The faces named by the vertices, in order of first mention (upper before lower), with their classes. */
-function faceTable(c: ChunkInput): { ids: number[]; classes: number[]; local: Map<number, number> } {
-  const local = new Map<number, number>();
-  const ids: number[] = [], classes: number[] = [];
-  const add = (face: number, cls: number): void => {
-    const i = local.get(face);
+/** The faces named, in order of first mention, with their classes; a face has one class. */
+class FaceTable {
+  readonly ids: number[] = [];
+  readonly classes: number[] = [];
+  readonly local = new Map<number, number>();
+
+  add(face: number, cls: number): number {
+    const i = this.local.get(face);
     if (i === undefined) {
       // A u32 id and a class of the decoder's u16 column (NO_CLASS, 0xffff, is face 0's).
       if (!(Number.isInteger(face) && face >= 0 && face <= 0xffffffff)) throw new Error(`chunk encoder: face id ${face} is not a u32`);
       if (!(Number.isInteger(cls) && cls >= 0 && cls <= NO_CLASS)) throw new Error(`chunk encoder: face ${face} has class ${cls}, a class index is 0 to ${NO_CLASS}`);
-      local.set(face, ids.length);
-      ids.push(face);
-      classes.push(cls);
-    } else if (classes[i] !== cls) {
-      throw new Error(`chunk encoder: face ${face} has class ${classes[i]} at one vertex and ${cls} at another`);
+      this.local.set(face, this.ids.length);
+      this.ids.push(face);
+      this.classes.push(cls);
+      return this.ids.length - 1;
     }
-  };
-  for (let k = 0; k < c.upper.length; k++) {
-    add(c.upper[k]!, c.upperClass[k]!);
-    add(c.lower[k]!, c.lowerClass[k]!);
+    if (this.classes[i] !== cls) throw new Error(`chunk encoder: face ${face} has class ${this.classes[i]} at one vertex and ${cls} at another`);
+    return i;
   }
-  return { ids, classes, local };
+}
+
+/** Each value's place in a table of the values in order of first use. */
+class FirstUse<K> {
+  readonly values: K[] = [];
+  private readonly at = new Map<K, number>();
+
+  add(v: K): number {
+    let i = this.at.get(v);
+    if (i === undefined) {
+      this.at.set(v, (i = this.values.length));
+      this.values.push(v);
+    }
+    return i;
+  }
 }
 
 /** Every vertex is used by a triangle (a reader relies on it to bound the counts). */
@@ -116,84 +130,104 @@ export function encodeChunk(c: ChunkInput): Uint8Array {
   const V = c.upper.length, T = c.indices.length / 3;
   if (!Number.isInteger(T)) throw new Error(`chunk encoder: ${c.indices.length} indices are not whole triangles`);
   checkUsed(c.indices, V);
-  const faces = faceTable(c);
-  const F = faces.ids.length;
-  const indexSize = indexSizeFor(V);
   const e = gridExponentFor(c.box, c.gridExponent);
 
-  // The points (x, y on the grid) and z values (float32), each once, in order of first use by
-  // the vertices, as docs/FORMAT.md lays them out; a vertex names them by index.
-  const pointIds = new Map<number, number>(), zIds = new Map<number, number>();
-  const points: number[] = [], zs: number[] = [];
-  const pointOf = new Uint32Array(V), zOf = new Uint32Array(V);
+  // Each vertex's point (x, y on the grid, by first mention) and z (float32).
+  const grid = new FirstUse<number>();
+  const xs: number[] = [], ys: number[] = [];
+  const gridPoint = new Uint32Array(V), zOf = new Float32Array(V);
   for (let k = 0; k < V; k++) {
     const qx = gridSteps(c.positions[3 * k]!, e), qy = gridSteps(c.positions[3 * k + 1]!, e);
     if (Number.isNaN(qx) || Number.isNaN(qy)) throw new Error(`chunk encoder: vertex ${k} lies outside the chunk's box`);
     const z = Math.fround(c.positions[3 * k + 2]!);
     if (!Number.isFinite(z)) throw new Error(`chunk encoder: vertex ${k} has z ${c.positions[3 * k + 2]}`);
-    const key = gridPointKey(qx, qy);
-    let p = pointIds.get(key);
-    if (p === undefined) {
-      pointIds.set(key, (p = points.length / 2));
-      points.push(qx, qy);
+    const p = grid.add(gridPointKey(qx, qy));
+    if (p === xs.length) {
+      xs.push(qx);
+      ys.push(qy);
     }
-    let zi = zIds.get(z);
-    if (zi === undefined) {
-      zIds.set(z, (zi = zs.length));
-      zs.push(z);
-    }
-    pointOf[k] = p;
-    zOf[k] = zi;
+    gridPoint[k] = p;
+    zOf[k] = z;
   }
-  const P = points.length / 2, Z = zs.length;
-  const size = tableIndexSizeFor(F);
-  const records = size === 2 ? new Uint16Array(2 * V) : new Uint32Array(2 * V);
+  const { pieces, ringed } = findRingPieces({ indices: c.indices, pointOf: gridPoint, zOf, upper: c.upper, lower: c.lower, xs, ys });
+  // Each face's class, checked to be one wherever the face is named.
+  const named = new FaceTable();
   for (let k = 0; k < V; k++) {
-    records[2 * k] = faces.local.get(c.upper[k]!)!;
-    records[2 * k + 1] = faces.local.get(c.lower[k]!)!;
+    named.add(c.upper[k]!, c.upperClass[k]!);
+    named.add(c.lower[k]!, c.lowerClass[k]!);
   }
-  const tri = indexSize === 2 ? Uint16Array.from(c.indices) : Uint32Array.from(c.indices);
+  const classOf = (face: number): number => named.classes[named.local.get(face)!]!;
+
+  // The tables in order of first use, as docs/FORMAT.md lays them out: by the ring pieces, then
+  // by the vertices of the triangles given as such.
+  const faces = new FaceTable(), points = new FirstUse<number>(), zs = new FirstUse<number>();
+  const pieceRecords: number[] = [], ringLengths: number[] = [], ringPoints: number[] = [];
+  for (const piece of pieces) {
+    pieceRecords.push(zs.add(piece.z), faces.add(piece.upper, classOf(piece.upper)), faces.add(piece.lower, classOf(piece.lower)), piece.rings.length);
+    for (const r of piece.rings) {
+      ringLengths.push(r.length);
+      for (const q of r) ringPoints.push(points.add(q));
+    }
+  }
+  // The vertices of the triangles given as such, in the caller's order.
+  const vertexOf = new Int32Array(V).fill(-1), kept: number[] = [], tri: number[] = [];
+  for (let t = 0; t < T; t++) if (!ringed[t]) for (let j = 0; j < 3; j++) vertexOf[c.indices[3 * t + j]!] = 0;
+  for (let v = 0; v < V; v++) if (vertexOf[v] === 0) vertexOf[v] = kept.push(v) - 1;
+  for (let t = 0; t < T; t++) if (!ringed[t]) for (let j = 0; j < 3; j++) tri.push(vertexOf[c.indices[3 * t + j]!]!);
+  const Vg = kept.length, Tg = tri.length / 3;
+  const pointOf = new Uint32Array(Vg), zIndexOf = new Uint32Array(Vg), faceOf = new Uint32Array(2 * Vg);
+  kept.forEach((v, k) => {
+    pointOf[k] = points.add(gridPoint[v]!);
+    zIndexOf[k] = zs.add(zOf[v]!);
+    faceOf[2 * k] = faces.add(c.upper[v]!, c.upperClass[v]!);
+    faceOf[2 * k + 1] = faces.add(c.lower[v]!, c.lowerClass[v]!);
+  });
+  const F = faces.ids.length, P = points.values.length, Z = zs.values.length;
+  const size = tableIndexSizeFor(F);
+  const records = size === 2 ? Uint16Array.from(faceOf) : faceOf;
+  const pointRecords = new Int32Array(2 * P);
+  points.values.forEach((q, i) => {
+    pointRecords[2 * i] = xs[q]!;
+    pointRecords[2 * i + 1] = ys[q]!;
+  });
+  const indexSize = indexSizeFor(Vg);
+  const triArray = indexSize === 2 ? Uint16Array.from(tri) : Uint32Array.from(tri);
+
   const faceStream = encodeFaceStream(faces.ids, faces.classes);
-  const pointStream = encodeRecords(Int32Array.from(points).buffer, P, POINT_BYTES);
-  const zStream = encodeRecords(Float32Array.from(zs).buffer, Z, Z_BYTES);
+  const pointStream = encodeRecords(pointRecords.buffer, P, POINT_BYTES);
+  const zStream = encodeRecords(Float32Array.from(zs.values).buffer, Z, Z_BYTES);
   // Mostly the next new point or z, else one named shortly before: the index sequence codec
   // codes such a run a byte an index (bgt_otterlo_1800m, gzip: the point indices 310 -> 231 kB,
   // the z indices 120 -> 100 kB, against lanes of the vertex codec).
   const vertexPointStream = encodeSequence(pointOf);
-  const vertexZStream = encodeSequence(zOf);
-  const vertexStream = encodeRecords(records.buffer, V, encodedVertexBytes(size));
-  const indexStream = MeshoptEncoder.encodeIndexBuffer(new Uint8Array(tri.buffer), 3 * T, indexSize);
+  const vertexZStream = encodeSequence(zIndexOf);
+  const vertexStream = encodeRecords(records.buffer, Vg, encodedVertexBytes(size));
+  const indexStream = MeshoptEncoder.encodeIndexBuffer(new Uint8Array(triArray.buffer), 3 * Tg, indexSize);
+  const pieceStream = encodeSequence(Uint32Array.from(pieceRecords));
+  const ringLengthStream = encodeSequence(Uint32Array.from(ringLengths));
+  const ringPointStream = encodeSequence(Uint32Array.from(ringPoints));
 
-  const sec = chunkSections({
-    faceTable: 0, faces: faceStream.byteLength, points: pointStream.byteLength, zs: zStream.byteLength, vertexPoints: vertexPointStream.byteLength, vertexZs: vertexZStream.byteLength,
-    vertices: vertexStream.byteLength, indices: indexStream.byteLength,
-  });
+  // Each stream with the header field that gives its length and the section it goes to.
+  const streams: [number, Uint8Array, Exclude<keyof ChunkStreams, 'faceTable'>][] = [
+    [72, faceStream, 'faces'], [76, pointStream, 'points'], [80, zStream, 'zs'], [84, vertexPointStream, 'vertexPoints'], [88, vertexZStream, 'vertexZs'],
+    [92, vertexStream, 'vertices'], [96, indexStream, 'indices'], [112, pieceStream, 'pieces'], [116, ringLengthStream, 'ringLengths'], [120, ringPointStream, 'ringPoints'],
+  ];
+  const lengths: ChunkStreams = { faceTable: 0, faces: 0, points: 0, zs: 0, vertexPoints: 0, vertexZs: 0, vertices: 0, indices: 0, pieces: 0, ringLengths: 0, ringPoints: 0 };
+  for (const [, bytes, name] of streams) lengths[name] = bytes.byteLength;
+  const sec = chunkSections(lengths);
   const out = new Uint8Array(sec.end);
   const dv = new DataView(out.buffer);
   dv.setUint32(0, CHUNK_MAGIC, true);
   dv.setUint32(4, CHUNK_VERSION, true);
-  dv.setUint32(8, V, true);
-  dv.setUint32(12, T, true);
   dv.setFloat64(16, c.originX, true);
   dv.setFloat64(24, c.originY, true);
   for (let i = 0; i < 6; i++) dv.setFloat32(32 + 4 * i, c.box[i]!, true);
   dv.setInt32(56, e, true);
-  dv.setUint32(60, F, true);
-  dv.setUint32(64, P, true);
-  dv.setUint32(68, Z, true);
-  dv.setUint32(72, faceStream.byteLength, true);
-  dv.setUint32(76, pointStream.byteLength, true);
-  dv.setUint32(80, zStream.byteLength, true);
-  dv.setUint32(84, vertexPointStream.byteLength, true);
-  dv.setUint32(88, vertexZStream.byteLength, true);
-  dv.setUint32(92, vertexStream.byteLength, true);
-  dv.setUint32(96, indexStream.byteLength, true);
-  out.set(faceStream, sec.faces);
-  out.set(pointStream, sec.points);
-  out.set(zStream, sec.zs);
-  out.set(vertexPointStream, sec.vertexPoints);
-  out.set(vertexZStream, sec.vertexZs);
-  out.set(vertexStream, sec.vertices);
-  out.set(indexStream, sec.indices);
+  const counts = [[8, Vg], [12, Tg], [60, F], [64, P], [68, Z], [100, pieces.length], [104, ringLengths.length], [108, ringPoints.length]] as const;
+  for (const [at, n] of counts) dv.setUint32(at, n, true);
+  for (const [at, bytes, name] of streams) {
+    dv.setUint32(at, bytes.byteLength, true);
+    out.set(bytes, sec[name]);
+  }
   return out;
 }

@@ -1,7 +1,8 @@
-// The chunk file, version 5: the encoder writes the header and face table of docs/FORMAT.md
+// The chunk file, version 6: the encoder writes the header and face table of docs/FORMAT.md
 // (checked at offsets worked out by hand), the decoder gives back what went in (positions
-// within half a grid step, everything else exactly), and a damaged, truncated or old file is
-// refused with a message that says what is wrong.
+// within half a grid step, everything else exactly; a level piece as other triangles over the
+// same ground), and a damaged, truncated or old file is refused with a message that says what
+// is wrong.
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
@@ -10,6 +11,7 @@ import { fileURLToPath } from 'node:url';
 import { encodeChunk, encodeFaceStream, orderForCodecs, type ChunkInput } from './chunk-encode.js';
 import { VERTEX_BYTES, VERTEX_COLUMNS, vertexColumnOffset } from './chunk-layout.js';
 import { MeshoptDecoder } from 'meshoptimizer/decoder';
+import { MeshoptEncoder } from 'meshoptimizer/encoder';
 import { CHUNK_MAGIC, ChunkFormatError, chunkLayout, decodeChunk, type DecodedChunk } from './chunk.js';
 
 const fixture = (name: string): string => path.join(path.dirname(fileURLToPath(import.meta.url)), 'testdata', name);
@@ -26,6 +28,51 @@ function square(): ChunkInput & { positions: Float32Array } {
     upperClass: new Uint16Array([2, 2, 4, 2]),
     lowerClass: new Uint16Array([0xffff, 0xffff, 2, 0xffff]),
     indices: new Uint16Array([0, 1, 2, 0, 2, 3]),
+  };
+}
+
+/**
+ * Level pieces and others at z 2 and 3: a square frame (0..4 with a hole 1..3, 8 triangles, face
+ * 5 over nothing), a square fanned round its centre (10..12, 4 triangles, face 6 over 5), two
+ * triangles of one piece that overlap (face 9), one turned over (face 10) and a tilted one (face 11).
+ */
+function levelChunk(): ChunkInput {
+  const pos: number[] = [], up: number[] = [], low: number[] = [], idx: number[] = [];
+  const cls = (f: number): number => (f === 0 ? 0xffff : f % 4);
+  const tri = (pts: [number, number, number][], u: number, l: number): void => {
+    for (const [x, y, z] of pts) {
+      idx.push(up.length);
+      pos.push(x, y, z);
+      up.push(u);
+      low.push(l);
+    }
+  };
+  const o: [number, number][] = [[0, 0], [4, 0], [4, 4], [0, 4]], h: [number, number][] = [[1, 1], [3, 1], [3, 3], [1, 3]];
+  for (let k = 0; k < 4; k++) {
+    const [a, b, p, q] = [o[k]!, o[(k + 1) % 4]!, h[(k + 1) % 4]!, h[k]!];
+    tri([[...a, 2], [...b, 2], [...p, 2]], 5, 0);
+    tri([[...a, 2], [...p, 2], [...q, 2]], 5, 0);
+  }
+  const f: [number, number][] = [[10, 10], [12, 10], [12, 12], [10, 12]];
+  for (let k = 0; k < 4; k++) tri([[...f[k]!, 2], [...f[(k + 1) % 4]!, 2], [11, 11, 2]], 6, 5);
+  tri([[20, 0, 3], [22, 0, 3], [20, 2, 3]], 9, 0);
+  tri([[20, 0, 3], [22, 0, 3], [21, 2, 3]], 9, 0);
+  tri([[30, 0, 3], [30, 2, 3], [32, 0, 3]], 10, 0);
+  tri([[40, 0, 2], [42, 0, 3], [40, 2, 3]], 11, 10);
+  // One vertex per point of a piece, as a built chunk shares them.
+  const key = (i: number): string => `${pos[3 * i]},${pos[3 * i + 1]},${pos[3 * i + 2]},${up[i]},${low[i]}`;
+  const at = new Map<string, number>(), keep: number[] = [];
+  const indices = idx.map((i) => {
+    let v = at.get(key(i));
+    if (v === undefined) at.set(key(i), (v = keep.push(i) - 1));
+    return v;
+  });
+  const U = keep.map((i) => up[i]!), D = keep.map((i) => low[i]!);
+  return {
+    originX: 1000, originY: 2000, box: Float32Array.of(0, 0, 2, 42, 12, 3),
+    positions: Float64Array.from(keep.flatMap((i) => [pos[3 * i]!, pos[3 * i + 1]!, pos[3 * i + 2]!])),
+    upper: Uint32Array.from(U), lower: Uint32Array.from(D), upperClass: Uint16Array.from(U, cls), lowerClass: Uint16Array.from(D, cls),
+    indices: Uint16Array.from(indices),
   };
 }
 
@@ -92,25 +139,84 @@ function triangles(indices: ArrayLike<number>): string[] {
   return out;
 }
 
-/** Asserts the decoded chunk is the input, positions within `tol` ground units. */
+type Columns = Pick<ChunkInput, 'positions' | 'upper' | 'lower' | 'upperClass' | 'lowerClass' | 'indices'>;
+
+/**
+ * A chunk as what it draws: its triangles that are not level, each as its three corners (x, y
+ * through `round`, z as float32, faces, classes) from its smallest corner on; and its level
+ * triangles by piece (z, faces and classes), as corner coordinates.
+ */
+function drawn(c: Columns, round: (v: number) => number): { tilted: string[]; level: Map<string, number[][]> } {
+  const tilted: string[] = [];
+  const level = new Map<string, number[][]>();
+  for (let t = 0; t < c.indices.length / 3; t++) {
+    const vs = [0, 1, 2].map((j) => c.indices[3 * t + j]!);
+    const zs = vs.map((v) => Math.fround(c.positions[3 * v + 2]!));
+    const corner = (v: number): string => `${round(c.positions[3 * v]!)},${round(c.positions[3 * v + 1]!)},${Math.fround(c.positions[3 * v + 2]!)},${c.upper[v]},${c.lower[v]},${c.upperClass[v]},${c.lowerClass[v]}`;
+    if (zs[0] === zs[1] && zs[1] === zs[2]) {
+      const v = vs[0]!;
+      const key = `${zs[0]}|${c.upper[v]}|${c.lower[v]}|${c.upperClass[v]}|${c.lowerClass[v]}`;
+      if (!level.has(key)) level.set(key, []);
+      // From its lowest corner (x, then y) on: the codec may turn a triangle.
+      const xy = vs.map((u) => [round(c.positions[3 * u]!), round(c.positions[3 * u + 1]!)] as const);
+      const m = xy.reduce((b, p, i) => (p[0] < xy[b]![0] || (p[0] === xy[b]![0] && p[1] < xy[b]![1]) ? i : b), 0);
+      level.get(key)!.push([0, 1, 2].flatMap((j) => xy[(m + j) % 3]!));
+      continue;
+    }
+    const s = vs.map(corner);
+    const m = s.indexOf([...s].sort()[0]!);
+    tilted.push([s[m], s[(m + 1) % 3], s[(m + 2) % 3]].join(' '));
+  }
+  return { tilted: tilted.sort(), level };
+}
+
+const area2 = (t: number[]): number => (t[2]! - t[0]!) * (t[5]! - t[1]!) - (t[4]! - t[0]!) * (t[3]! - t[1]!);
+
+/** How many of `tris` hold (x, y) strictly inside. */
+function cover(tris: number[][], x: number, y: number): number {
+  let n = 0;
+  for (const t of tris) {
+    const s = (i: number, j: number): number => (t[2 * j]! - t[2 * i]!) * (y - t[2 * i + 1]!) - (t[2 * j + 1]! - t[2 * i + 1]!) * (x - t[2 * i]!);
+    if (s(0, 1) > 0 && s(1, 2) > 0 && s(2, 0) > 0) n++;
+  }
+  return n;
+}
+
+/**
+ * Asserts the decoded chunk draws what the input does, its positions on the input's within
+ * `tol` ground units: the same triangles that are not level, exactly (positions on the grid);
+ * and per level piece the same area, with every triangle of either side, at its centre, under
+ * exactly one triangle of the other's piece and of its own (the reader may cut a level piece
+ * into other triangles).
+ */
 function assertSame(d: DecodedChunk, c: ChunkInput, tol: number): void {
-  const V = c.upper.length;
-  assert.equal(d.vertexCount, V);
-  assert.equal(d.triangleCount, c.indices.length / 3);
   assert.equal(d.originX, c.originX);
   assert.equal(d.originY, c.originY);
   assert.deepEqual([...d.box], [...c.box]);
+  const step = 2 ** d.gridExponent;
+  const round = (v: number): number => Math.round(v / step) * step;
   let worst = 0;
-  for (let k = 0; k < V; k++) {
-    worst = Math.max(worst, Math.abs(d.positions[3 * k]! - c.positions[3 * k]!), Math.abs(d.positions[3 * k + 1]! - c.positions[3 * k + 1]!));
-    assert.equal(d.positions[3 * k + 2], Math.fround(c.positions[3 * k + 2]!), `z of vertex ${k} is its float32`);
-  }
+  for (let k = 0; k < c.upper.length; k++) worst = Math.max(worst, Math.abs(round(c.positions[3 * k]!) - c.positions[3 * k]!), Math.abs(round(c.positions[3 * k + 1]!) - c.positions[3 * k + 1]!));
   assert.ok(worst <= tol, `positions off by up to ${worst}, at most ${tol} allowed`);
-  assert.deepEqual([...d.upper], Array.from(c.upper));
-  assert.deepEqual([...d.lower], Array.from(c.lower));
-  assert.deepEqual([...d.upperClass], Array.from(c.upperClass));
-  assert.deepEqual([...d.lowerClass], Array.from(c.lowerClass));
-  assert.deepEqual(triangles(d.indices), triangles(c.indices));
+  const got = drawn(d, (v) => v), want = drawn(c, round);
+  assert.deepEqual(got.tilted, want.tilted);
+  assert.deepEqual([...got.level.keys()].sort(), [...want.level.keys()].sort());
+  for (const [key, tris] of want.level) {
+    const back = got.level.get(key)!;
+    const sum = (ts: number[][]): number => ts.reduce((a, t) => a + area2(t), 0);
+    assert.equal(sum(back), sum(tris), `piece ${key}: area`);
+    // A piece that overlaps itself, or has a triangle turned over or of no area, stays as its triangles.
+    const same = String(back.map(String).sort()) === String(tris.map(String).sort());
+    if (!tris.every((t) => area2(t) > 0)) assert.ok(same, `piece ${key}: its own triangles`);
+    if (same) continue;
+    assert.ok(back.every((t) => area2(t) > 0), `piece ${key}: every triangle counterclockwise`);
+    for (const t of [...tris, ...back].filter((u) => area2(u) > 0)) {
+      // A point inside, off the centre (which may lie on a side of the other cut).
+      const x = 0.6 * t[0]! + 0.25 * t[2]! + 0.15 * t[4]!, y = 0.6 * t[1]! + 0.25 * t[3]! + 0.15 * t[5]!;
+      assert.equal(cover(back, x, y), 1, `piece ${key}: (${x}, ${y}) under one decoded triangle`);
+      assert.equal(cover(tris, x, y), 1, `piece ${key}: (${x}, ${y}) under one of the input's`);
+    }
+  }
 }
 
 describe('chunk file', () => {
@@ -118,7 +224,7 @@ describe('chunk file', () => {
     const bytes = encodeChunk(square());
     const dv = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
     assert.equal(dv.getUint32(0, true), 0x43435353);
-    assert.equal(dv.getUint32(4, true), 5, 'version');
+    assert.equal(dv.getUint32(4, true), 6, 'version');
     assert.equal(dv.getUint32(8, true), 4, 'vertices');
     assert.equal(dv.getUint32(12, true), 2, 'triangles');
     assert.equal(dv.getFloat64(16, true), 181000.5);
@@ -130,13 +236,16 @@ describe('chunk file', () => {
     assert.equal(dv.getUint32(64, true), 4, 'points: the four corners');
     assert.equal(dv.getUint32(68, true), 2, 'z values 3 and 5');
     const [faceStream, pointStream, zStream, vertexPoints, vertexZs, vertexStream, indexStream] = [72, 76, 80, 84, 88, 92, 96].map((o) => dv.getUint32(o, true));
-    // The face stream at 100: records of u32 id, u32 class through the vertex codec.
-    assert.equal(bytes[100], 0xa1, 'the face stream starts at 100 with the vertex codec\'s version-1 header byte');
+    // Both triangles are tilted: no ring piece.
+    assert.deepEqual([100, 104, 108].map((o) => dv.getUint32(o, true)), [0, 0, 0], 'ring pieces, rings, ring points');
+    const [pieceStream, ringLengthStream, ringPointStream] = [112, 116, 120].map((o) => dv.getUint32(o, true));
+    // The face stream at 124: records of u32 id, u32 class through the vertex codec.
+    assert.equal(bytes[124], 0xa1, 'the face stream starts at 124 with the vertex codec\'s version-1 header byte');
     await MeshoptDecoder.ready;
     const faces = new Uint32Array(6);
-    MeshoptDecoder.decodeVertexBuffer(new Uint8Array(faces.buffer), 3, 8, bytes.subarray(100, 100 + faceStream!));
+    MeshoptDecoder.decodeVertexBuffer(new Uint8Array(faces.buffer), 3, 8, bytes.subarray(124, 124 + faceStream!));
     assert.deepEqual([...faces], [7, 2, 0, 0xffff, 8, 4], 'ids in order of first mention (upper before lower), each with its class');
-    const pointAt = (100 + faceStream! + 3) & ~3;
+    const pointAt = (124 + faceStream! + 3) & ~3;
     assert.equal(bytes[pointAt], 0xa1, 'the point stream at the next multiple of 4');
     const zAt = (pointAt + pointStream! + 3) & ~3;
     assert.equal(bytes[zAt], 0xa1, 'the z stream at the next multiple of 4');
@@ -159,7 +268,56 @@ describe('chunk file', () => {
     assert.deepEqual([...faceLanes], [0, 1, 0, 1, 2, 0, 0, 1], 'upper, then lower, u16 each');
     const indexAt = (vertexAt + vertexStream! + 3) & ~3;
     assert.equal(bytes[indexAt], 0xe1, 'the index stream at the next multiple of 4, with the index codec\'s header byte');
-    assert.equal(bytes.byteLength, (indexAt + indexStream! + 3) & ~3);
+    // The three ring streams, empty: index sequences of no index (the codec's header byte and its tail).
+    const pieceAt = (indexAt + indexStream! + 3) & ~3;
+    const ringLengthAt = (pieceAt + pieceStream! + 3) & ~3, ringPointAt = (ringLengthAt + ringLengthStream! + 3) & ~3;
+    for (const at of [pieceAt, ringLengthAt, ringPointAt]) assert.equal(bytes[at], 0xd1);
+    assert.equal(bytes.byteLength, (ringPointAt + ringPointStream! + 3) & ~3);
+  });
+
+  test('a level piece goes as the rings round it, which the reader cuts into triangles over the same ground', async () => {
+    const c = levelChunk();
+    const bytes = encodeChunk(c);
+    const dv = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+    // Given as triangles: the tilted one, the two that overlap and the one turned over.
+    assert.equal(dv.getUint32(12, true), 4, 'triangles given as such');
+    assert.deepEqual([100, 104, 108].map((o) => dv.getUint32(o, true)), [2, 3, 12], 'two pieces: the frame (outer ring and hole), the fan\'s square');
+    const d = await decodeChunk(bytes);
+    assertSame(d, c, 0);
+    // A frame of 8 corners and a hole: 8 triangles; the fan's square without its centre: 2.
+    assert.equal(d.triangleCount, 4 + 8 + 2);
+    assert.equal(d.vertexCount, 10 + 8 + 4);
+    assert.deepEqual(encodeChunk(levelChunk()), bytes, 'the same input, the same bytes');
+    assert.deepEqual(encodeChunk(d), bytes, 'and a decoded chunk re-encodes to them');
+  });
+
+  test('a damaged ring piece is refused and the message says why', async () => {
+    const good = encodeChunk(levelChunk());
+    const dv = new DataView(good.buffer, good.byteOffset, good.byteLength);
+    const damaged = (edit: (d: DataView, b: Uint8Array) => void): Uint8Array => {
+      const b = good.slice();
+      edit(new DataView(b.buffer), b);
+      return b;
+    };
+    const refuses = async (b: Uint8Array, pattern: RegExp): Promise<void> => {
+      await assert.rejects(decodeChunk(b, 'c-r.bin'), (e: unknown) => e instanceof ChunkFormatError && e.message.startsWith('c-r.bin: ') && pattern.test(e.message));
+    };
+    await refuses(damaged((d) => d.setUint32(100, 4, true)), /ring counts out of bounds \(4 pieces, 3 rings, 12 ring points/);
+    await refuses(damaged((d) => d.setUint32(108, 2 ** 30, true)), /ring counts out of bounds \(2 pieces, 3 rings, 1073741824 ring points in \d+ \+ \d+ \+ \d+ bytes\)/);
+    await refuses(damaged((d) => d.setUint32(64, 100, true)), /counts out of bounds \(4 triangles, 10 vertices, 100 points, 2 z values, 6 faces, 2 ring pieces, 12 ring points\)/);
+    // The ring point stream, the last, replaced by one whose last index is beyond the points.
+    const P = dv.getUint32(64, true);
+    assert.equal(P, 22, 'the 12 ring points, then the 10 of the triangles given as such');
+    const sec = [72, 76, 80, 84, 88, 92, 96, 112, 116].reduce((at, o) => at + ((dv.getUint32(o, true) + 3) & ~3), 124);
+    assert.equal(good[sec], 0xd1, 'the ring point stream where the header says');
+    await MeshoptEncoder.ready;
+    const far = Uint32Array.from({ length: 12 }, (_, i) => (i < 11 ? i : P));
+    const stream = MeshoptEncoder.encodeIndexSequence(new Uint8Array(far.buffer), 12, 4);
+    const bad = new Uint8Array(sec + ((stream.length + 3) & ~3));
+    bad.set(good.subarray(0, sec));
+    bad.set(stream, sec);
+    new DataView(bad.buffer).setUint32(120, stream.length, true);
+    await refuses(bad, /a ring names point 22 of 22/);
   });
 
   test('the decoded vertex columns are the ones the renderer binds', async () => {
@@ -189,12 +347,12 @@ describe('chunk file', () => {
     const c = gridChunk(60, 1800);
     const d = await decodeChunk(encodeChunk(c));
     assertSame(d, c, 2 ** -14);
-    for (let k = 0; k < d.vertexCount; k++) {
+    for (let k = 0; k < d.vertexCount; k++) for (const j of [0, 1]) assert.ok(Number.isInteger(d.positions[3 * k + j]! * 8192), `vertex ${k} on the grid`);
+    // From 1024 on, float32 itself keeps 1/8192: there the grid is exactly float32's rounding.
+    for (let k = 0; k < c.upper.length; k++) {
       for (const j of [0, 1]) {
-        const x = c.positions[3 * k + j]!, got = d.positions[3 * k + j]!;
-        assert.ok(Number.isInteger(got * 8192), `vertex ${k} on the grid`);
-        // From 1024 on, float32 itself keeps 1/8192: there the grid is exactly float32's rounding.
-        if (x >= 1024) assert.equal(got, Math.fround(x), `vertex ${k}: as float32 would keep ${x}`);
+        const x = c.positions[3 * k + j]!;
+        if (x >= 1024) assert.equal(Math.round(x * 8192) / 8192, Math.fround(x), `vertex ${k}: as float32 would keep ${x}`);
       }
     }
   });
@@ -301,11 +459,11 @@ describe('chunk file', () => {
     const refuses = async (b: Uint8Array, pattern: RegExp): Promise<void> => {
       await assert.rejects(decodeChunk(b, 'c-x.bin'), (e: unknown) => e instanceof ChunkFormatError && e.message.startsWith('c-x.bin: ') && pattern.test(e.message));
     };
-    await refuses(good.subarray(0, 40), /truncated \(40 bytes, the header alone is 100\)/);
+    await refuses(good.subarray(0, 40), /truncated \(40 bytes, the header alone is 124\)/);
     await refuses(good.subarray(0, 3), /truncated/);
     await refuses(damaged((dv) => dv.setUint32(0, CHUNK_MAGIC + 1, true)), /bad magic/);
-    await refuses(damaged((dv) => dv.setUint32(4, 1, true)), /chunk version 1, this reader knows only versions 2 to 5 \(rebuild the cube with ssc build\)/);
-    await refuses(damaged((dv) => dv.setUint32(4, 6, true)), /chunk version 6/);
+    await refuses(damaged((dv) => dv.setUint32(4, 1, true)), /chunk version 1, this reader knows only versions 2 to 6 \(rebuild the cube with ssc build\)/);
+    await refuses(damaged((dv) => dv.setUint32(4, 7, true)), /chunk version 7/);
     await refuses(good.subarray(0, good.length - 4), new RegExp(`${good.length - 4} bytes, its header .* needs ${good.length}`));
     // An index stream length near 2^32 would wrap the sum of the lengths round to the file's length.
     await refuses(damaged((dv) => dv.setUint32(96, 2 ** 32 - 64, true)), /bytes, its header .* needs 4\d{9}$/);
@@ -320,24 +478,24 @@ describe('chunk file', () => {
     await refuses(v3.subarray(0, 60), /truncated \(60 bytes, the header alone is 80\)/);
     await refuses(damaged((dv) => dv.setUint32(8, 2 ** 30, true)), /counts out of bounds \(2 triangles, 1073741824 vertices/);
     await refuses(damaged((dv) => dv.setUint32(12, 2 ** 30, true)), /1073741824 triangles cannot fit an index stream of \d+ bytes/);
-    await refuses(damaged((dv) => dv.setUint32(64, 5, true)), /counts out of bounds \(2 triangles, 4 vertices, 5 points, 2 z values, 3 faces\)/);
-    await refuses(damaged((dv) => dv.setUint32(68, 5, true)), /counts out of bounds \(2 triangles, 4 vertices, 4 points, 5 z values, 3 faces\)/);
+    await refuses(damaged((dv) => dv.setUint32(64, 5, true)), /counts out of bounds \(2 triangles, 4 vertices, 5 points, 2 z values, 3 faces, 0 ring pieces, 0 ring points\)/);
+    await refuses(damaged((dv) => dv.setUint32(68, 5, true)), /counts out of bounds \(2 triangles, 4 vertices, 4 points, 5 z values, 3 faces, 0 ring pieces, 0 ring points\)/);
     await refuses(damaged((dv) => dv.setUint32(84, 3, true)), /4 vertices cannot fit point and z index streams of 3 and 9 bytes/);
     await refuses(damaged((dv) => dv.setUint32(88, 3, true)), /4 vertices cannot fit point and z index streams of 9 and 3 bytes/);
-    await refuses(damaged((_, b) => { b[100] = 0; }), /compressed faces, points, z values, vertices or triangles do not decode/);
+    await refuses(damaged((_, b) => { b[124] = 0; }), /compressed faces, points, z values, vertices, triangles or ring pieces do not decode/);
     // A face stream whose second face has a class beyond the u16 column (0xffff is face 0's).
     const oldFaces = new DataView(good.buffer, good.byteOffset).getUint32(72, true);
     const badFaces = encodeFaceStream([7, 0, 8], [2, 0x10000, 4]);
-    const rest = good.subarray((100 + oldFaces + 3) & ~3);
-    const withBad = new Uint8Array(((100 + badFaces.length + 3) & ~3) + rest.length);
-    withBad.set(good.subarray(0, 100));
+    const rest = good.subarray((124 + oldFaces + 3) & ~3);
+    const withBad = new Uint8Array(((124 + badFaces.length + 3) & ~3) + rest.length);
+    withBad.set(good.subarray(0, 124));
     new DataView(withBad.buffer).setUint32(72, badFaces.length, true);
-    withBad.set(badFaces, 100);
-    withBad.set(rest, (100 + badFaces.length + 3) & ~3);
+    withBad.set(badFaces, 124);
+    withBad.set(rest, (124 + badFaces.length + 3) & ~3);
     await refuses(withBad, /face 0 has class 65536/);
     // A vertex's point index beyond the 4 points (the first index's delta made 2 larger).
     const head = new DataView(good.buffer, good.byteOffset);
-    const vp = [72, 76, 80].reduce((at, o) => at + ((head.getUint32(o, true) + 3) & ~3), 100);
+    const vp = [72, 76, 80].reduce((at, o) => at + ((head.getUint32(o, true) + 3) & ~3), 124);
     assert.equal(good[vp], 0xd1, 'the point index stream where the header says');
     await refuses(damaged((_, b) => { b[vp + 1] = 8; }), /vertex \d names point [4-9] of 4/);
     // Likewise a z index beyond the 2 z values.
@@ -354,7 +512,17 @@ describe('chunk file', () => {
     dv.setUint32(4, 1, true);
     dv.setUint32(8, 4, true);
     dv.setUint32(12, 2, true);
-    await assert.rejects(decodeChunk(v1, 'c-old.bin'), /c-old\.bin: chunk version 1, this reader knows only versions 2 to 5/);
+    await assert.rejects(decodeChunk(v1, 'c-old.bin'), /c-old\.bin: chunk version 1, this reader knows only versions 2 to 6/);
+  });
+
+  test('a file of version 5 (every triangle given as such, 100-byte header) is still read', async () => {
+    // Written by the version-5 encoder from this chunk on a grid of 2^-12 (testdata/README.md).
+    const v5 = readFileSync(fixture('chunk-v5.bin'));
+    assert.equal(new DataView(v5.buffer, v5.byteOffset).getUint32(4, true), 5);
+    const d = await decodeChunk(v5);
+    assert.equal(d.gridExponent, -12);
+    assertSame(d, gridChunk(12, 700, 8), 2 ** -13);
+    await assert.rejects(decodeChunk(v5.subarray(0, 98)), /truncated \(98 bytes, the header alone is 100\)/);
   });
 
   test('a file of version 4 (one vertex stream of four lanes, 88-byte header) is still read', async () => {
@@ -375,9 +543,11 @@ describe('chunk file', () => {
       return [s, l.stride(s), l.faceLane(s)];
     };
     const big = 70_000;
-    // Version 5: two face indices, 2 bytes each while F <= 65535; points and z values elsewhere.
-    assert.deepEqual(record(5, 10, big, big), [2, 4, 0]);
-    assert.deepEqual(record(5, big, 10, 10), [4, 8, 0]);
+    // Versions 6 and 5: two face indices, 2 bytes each while F <= 65535; points and z values elsewhere.
+    for (const v of [6, 5]) {
+      assert.deepEqual(record(v, 10, big, big), [2, 4, 0]);
+      assert.deepEqual(record(v, big, 10, 10), [4, 8, 0]);
+    }
     // Version 4: 4s bytes (point, z, upper, lower), s = 2 while P, Z and F are all <= 65535.
     assert.deepEqual(record(4, 10, 10, 10), [2, 8, 2]);
     for (const [F, P, Z] of [[big, 10, 10], [10, big, 10], [10, 10, big]] as const) assert.deepEqual(record(4, F, P, Z), [4, 16, 2]);
@@ -386,8 +556,9 @@ describe('chunk file', () => {
       assert.deepEqual(record(v, 10, big, 10), [2, 12, 4]);
       assert.deepEqual(record(v, big, 10, 10), [4, 16, 2]);
     }
-    assert.deepEqual([5, 4, 3, 2].map((v) => chunkLayout(v)!.headerBytes), [100, 88, 80, 80]);
-    assert.deepEqual([5, 4, 3, 2].map((v) => chunkLayout(v)!.boxOwnGrid), [false, false, false, true]);
+    assert.deepEqual([6, 5, 4, 3, 2].map((v) => chunkLayout(v)!.headerBytes), [124, 100, 88, 80, 80]);
+    assert.deepEqual([6, 5, 4, 3, 2].map((v) => chunkLayout(v)!.boxOwnGrid), [false, false, false, false, true]);
+    assert.deepEqual([6, 5, 4, 3, 2].map((v) => chunkLayout(v)!.rings), [true, false, false, false, false]);
     assert.equal(chunkLayout(1), undefined);
   });
 

@@ -1,19 +1,23 @@
-// The chunk file (docs/FORMAT.md, "Chunk file", version 5): surface triangles of one chunk,
+// The chunk file (docs/FORMAT.md, "Chunk file", version 6): surface triangles of one chunk,
 // compact. Ground points relative to the chunk's origin on a power-of-two grid, each once (the
 // corners of several surfaces share it), and each z (float32) once; a vertex is a point, a z
 // and the faces above and below, all as indices into chunk-local tables (the face table gives
 // each face's class). The face table, points, z values and the vertices' faces are compressed
 // with meshoptimizer's vertex codec, the vertices' point and z indices with its index sequence
-// codec and the triangles with its index codec (the glTF EXT_meshopt_compression codecs). The
+// codec and the triangles with its index codec (the glTF EXT_meshopt_compression codecs). A
+// level piece comes as the rings round it, which the decoder cuts (chunk-rings.ts). The
 // decoder expands a file to the vertex columns the GPU binds as they are (chunk-layout.ts).
 // Pure: used by the CPU slicer and the map's worker; the encoder is in chunk-encode.ts so that
 // the map does not load its WebAssembly.
 import { MeshoptDecoder } from 'meshoptimizer/decoder';
 import { VERTEX_BYTES, vertexColumnOffset, type VertexColumn } from './chunk-layout.js';
+import { cutRingPiece } from './chunk-rings.js';
 import { FormatError } from './format-error.js';
 
 export const CHUNK_MAGIC = 0x43435353; // "SSCC"
-export const CHUNK_VERSION = 5;
+export const CHUNK_VERSION = 6;
+/** An older version this reader still reads: every triangle given as such (100-byte header). */
+export const CHUNK_VERSION_5 = 5;
 /** An older version this reader still reads: one vertex stream of four lanes (88-byte header). */
 export const CHUNK_VERSION_4 = 4;
 /** An older version this reader still reads: no z table, a vertex holds its z (80-byte header). */
@@ -24,7 +28,7 @@ export const CHUNK_VERSION_2 = 2;
 export const MAX_POSITION_EXPONENT = 64;
 export const NO_CLASS = 0xffff;
 /** Header bytes (docs/FORMAT.md). */
-export const CHUNK_HEADER_BYTES = 100;
+export const CHUNK_HEADER_BYTES = 124;
 /**
  * Bits of the position grid: x and y are whole steps of `2^e`, with `e` at least the box's own
  * exponent, the smallest with its largest |x| or |y| below `2^(e + POSITION_BITS)`. Every grid
@@ -145,6 +149,10 @@ export interface ChunkSections {
   /** The vertex stream: the vertices' faces (version 5), or all of each vertex (versions 2 to 4). */
   vertices: number;
   indices: number;
+  /** The ring pieces: their records, their rings' lengths, the rings' points (version 6). */
+  pieces: number;
+  ringLengths: number;
+  ringPoints: number;
   /** The file's length. */
   end: number;
 }
@@ -161,6 +169,10 @@ export interface ChunkStreams {
   vertexZs: number;
   vertices: number;
   indices: number;
+  /** Bytes of the ring piece streams (version 6). */
+  pieces: number;
+  ringLengths: number;
+  ringPoints: number;
 }
 
 export function chunkSections(s: ChunkStreams, headerBytes = CHUNK_HEADER_BYTES): ChunkSections {
@@ -173,7 +185,10 @@ export function chunkSections(s: ChunkStreams, headerBytes = CHUNK_HEADER_BYTES)
   const vertexZs = pad4(vertexPoints + s.vertexPoints);
   const vertices = pad4(vertexZs + s.vertexZs);
   const indices = pad4(vertices + s.vertices);
-  return { faceIds, faceClasses, faces, points, zs, vertexPoints, vertexZs, vertices, indices, end: pad4(indices + s.indices) };
+  const pieces = pad4(indices + s.indices);
+  const ringLengths = pad4(pieces + s.pieces);
+  const ringPoints = pad4(ringLengths + s.ringLengths);
+  return { faceIds, faceClasses, faces, points, zs, vertexPoints, vertexZs, vertices, indices, pieces, ringLengths, ringPoints, end: pad4(ringPoints + s.ringPoints) };
 }
 
 /**
@@ -216,6 +231,8 @@ export interface ChunkLayout {
   headerBytes: number;
   /** The stream lengths its header gives, the face table's entries `F` among them when the table is raw. */
   streams(u32: (offset: number) => number, F: number): ChunkStreams;
+  /** It has ring pieces (version 6). */
+  rings: boolean;
   /** Its z count is in the header (a z table); else each vertex holds its z. */
   zTable: boolean;
   /** The vertices' point and z indices are index sequence streams of their own; else they are in the vertex stream. */
@@ -230,10 +247,13 @@ export interface ChunkLayout {
   faceLane(size: 2 | 4): number;
 }
 
+const NO_RINGS = { pieces: 0, ringLengths: 0, ringPoints: 0 };
+
 /** Versions 2 and 3 (which differ only in their grid rule). */
 const V2_V3: Omit<ChunkLayout, 'boxOwnGrid'> = {
   headerBytes: 80,
-  streams: (u32, F) => ({ faceTable: F, faces: 0, points: u32(68), zs: 0, vertexPoints: 0, vertexZs: 0, vertices: u32(72), indices: u32(76) }),
+  streams: (u32, F) => ({ ...NO_RINGS, faceTable: F, faces: 0, points: u32(68), zs: 0, vertexPoints: 0, vertexZs: 0, vertices: u32(72), indices: u32(76) }),
+  rings: false,
   zTable: false,
   sequences: false,
   laneSize: (F) => tableIndexSizeFor(F),
@@ -241,25 +261,34 @@ const V2_V3: Omit<ChunkLayout, 'boxOwnGrid'> = {
   faceLane: (size) => 8 / size,
 };
 /**
- * Version 5: the face table through the codec; a vertex's point and z in sequence streams, its
+ * Version 6: version 5 and ring pieces after the triangles. Version 5: the face table through the codec; a vertex's point and z in sequence streams, its
  * faces in the vertex stream. Version 4: the raw face table; point, z and faces in the vertex
  * stream, on lanes sized for the largest table. Versions 2 and 3: no z table; a vertex is a u32
  * point, an f32 z and its faces.
  */
+const V5: ChunkLayout = {
+  headerBytes: 100,
+  streams: (u32) => ({ ...NO_RINGS, faceTable: 0, faces: u32(72), points: u32(76), zs: u32(80), vertexPoints: u32(84), vertexZs: u32(88), vertices: u32(92), indices: u32(96) }),
+  rings: false,
+  zTable: true,
+  sequences: true,
+  boxOwnGrid: false,
+  laneSize: (F) => tableIndexSizeFor(F),
+  stride: encodedVertexBytes,
+  faceLane: () => 0,
+};
 const LAYOUTS: ReadonlyMap<number, ChunkLayout> = new Map([
   [CHUNK_VERSION, {
+    ...V5,
     headerBytes: CHUNK_HEADER_BYTES,
-    streams: (u32) => ({ faceTable: 0, faces: u32(72), points: u32(76), zs: u32(80), vertexPoints: u32(84), vertexZs: u32(88), vertices: u32(92), indices: u32(96) }),
-    zTable: true,
-    sequences: true,
-    boxOwnGrid: false,
-    laneSize: (F) => tableIndexSizeFor(F),
-    stride: encodedVertexBytes,
-    faceLane: () => 0,
+    streams: (u32, F) => ({ ...V5.streams(u32, F), pieces: u32(112), ringLengths: u32(116), ringPoints: u32(120) }),
+    rings: true,
   }],
+  [CHUNK_VERSION_5, V5],
   [CHUNK_VERSION_4, {
     headerBytes: 88,
-    streams: (u32, F) => ({ faceTable: F, faces: 0, points: u32(72), zs: u32(76), vertexPoints: 0, vertexZs: 0, vertices: u32(80), indices: u32(84) }),
+    streams: (u32, F) => ({ ...NO_RINGS, faceTable: F, faces: 0, points: u32(72), zs: u32(76), vertexPoints: 0, vertexZs: 0, vertices: u32(80), indices: u32(84) }),
+    rings: false,
     zTable: true,
     sequences: false,
     boxOwnGrid: false,
@@ -297,7 +326,7 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   const version = dv.getUint32(4, true);
   const layout = chunkLayout(version);
   if (!layout) throw fail(`chunk version ${version}, this reader knows only versions ${CHUNK_VERSION_2} to ${CHUNK_VERSION} (rebuild the cube with ssc build)`);
-  const { headerBytes, zTable, sequences } = layout;
+  const { headerBytes, zTable, sequences, rings } = layout;
   if (b.byteLength < headerBytes) throw fail(`truncated (${b.byteLength} bytes, the header alone is ${headerBytes})`);
   const V = dv.getUint32(8, true), T = dv.getUint32(12, true);
   const box = new Float32Array(6);
@@ -309,23 +338,31 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   const F = dv.getUint32(60, true), P = dv.getUint32(64, true);
   const u32 = (o: number): number => dv.getUint32(o, true);
   const Z = zTable ? u32(68) : 0;
+  // Ring pieces, their rings and the rings' points (version 6).
+  const G = rings ? u32(100) : 0, R = rings ? u32(104) : 0, RP = rings ? u32(108) : 0;
   const streams = layout.streams(u32, F);
-  // Bounds that hold in every chunk (each point and z used by a vertex, each vertex by a
-  // triangle, the index codecs' byte per triangle and per index): a damaged count is refused
-  // before anything is allocated.
+  // Bounds that hold in every chunk (each point and z used by a vertex or a ring piece, each
+  // vertex by a triangle, a piece's rings of 3 points or more, the codecs' byte per triangle and
+  // per index): a damaged count is refused before anything is allocated.
   if (T > streams.indices) throw fail(`${T} triangles cannot fit an index stream of ${streams.indices} bytes`);
-  if (V > 3 * T || P > V || Z > V || F > 2 * V) {
-    throw fail(`counts out of bounds (${T} triangles, ${V} vertices, ${P} points,${zTable ? ` ${Z} z values,` : ''} ${F} faces)`);
+  if (V > 3 * T || P > V + RP || Z > V + G || F > 2 * (V + G)) {
+    throw fail(`counts out of bounds (${T} triangles, ${V} vertices, ${P} points,${zTable ? ` ${Z} z values,` : ''} ${F} faces${rings ? `, ${G} ring pieces, ${RP} ring points` : ''})`);
   }
   if (sequences && (V > streams.vertexPoints || V > streams.vertexZs)) {
     throw fail(`${V} vertices cannot fit point and z index streams of ${streams.vertexPoints} and ${streams.vertexZs} bytes`);
   }
+  if (G > R || 3 * R > RP || 4 * G > streams.pieces || R > streams.ringLengths || RP > streams.ringPoints) {
+    throw fail(`ring counts out of bounds (${G} pieces, ${R} rings, ${RP} ring points in ${streams.pieces} + ${streams.ringLengths} + ${streams.ringPoints} bytes)`);
+  }
   const sec = chunkSections(streams, headerBytes);
   if (b.byteLength !== sec.end) {
-    const lengths = [...(sequences ? [streams.faces] : []), streams.points, ...(zTable ? [streams.zs] : []), ...(sequences ? [streams.vertexPoints, streams.vertexZs] : []), streams.vertices, streams.indices].join(' + ');
+    const lengths = [
+      ...(sequences ? [streams.faces] : []), streams.points, ...(zTable ? [streams.zs] : []), ...(sequences ? [streams.vertexPoints, streams.vertexZs] : []), streams.vertices, streams.indices,
+      ...(rings ? [streams.pieces, streams.ringLengths, streams.ringPoints] : []),
+    ].join(' + ');
     throw fail(`${b.byteLength} bytes, its header (${F} faces, ${lengths} bytes of streams) needs ${sec.end}`);
   }
-  const localSize = layout.laneSize(F, P, Z), indexSize = indexSizeFor(V);
+  const localSize = layout.laneSize(F, P, Z);
   await MeshoptDecoder.ready;
 
   const stride = layout.stride(localSize);
@@ -334,22 +371,30 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   const rawZs = new Uint8Array(Z * Z_BYTES);
   const pointOf = new Uint32Array(sequences ? V : 0), zOf = new Uint32Array(sequences ? V : 0);
   const raw = new Uint8Array(V * stride);
-  const out = new ArrayBuffer(decodedByteLength(V, T));
-  const indexOffset = pad4(V * VERTEX_BYTES);
-  const indexBytes = new Uint8Array(out, indexOffset, 3 * T * indexSize);
+  const tri = new Uint32Array(3 * T);
+  const pieceRecords = new Uint32Array(4 * G), ringLengths = new Uint32Array(R), ringPoints = new Uint32Array(RP);
   const stream = (at: number, length: number): Uint8Array => b.subarray(at, at + length);
+  const sequence = (to: Uint32Array, at: number, length: number): void => {
+    if (to.length > 0) MeshoptDecoder.decodeIndexSequence(new Uint8Array(to.buffer), to.length, SEQUENCE_INDEX_BYTES, stream(at, length));
+  };
   try {
     if (sequences && F > 0) MeshoptDecoder.decodeVertexBuffer(new Uint8Array(rawFaces.buffer), F, FACE_RECORD_BYTES, stream(sec.faces, streams.faces));
     if (P > 0) MeshoptDecoder.decodeVertexBuffer(rawPoints, P, POINT_BYTES, stream(sec.points, streams.points));
     if (Z > 0) MeshoptDecoder.decodeVertexBuffer(rawZs, Z, Z_BYTES, stream(sec.zs, streams.zs));
-    if (sequences && V > 0) {
-      MeshoptDecoder.decodeIndexSequence(new Uint8Array(pointOf.buffer), V, SEQUENCE_INDEX_BYTES, stream(sec.vertexPoints, streams.vertexPoints));
-      MeshoptDecoder.decodeIndexSequence(new Uint8Array(zOf.buffer), V, SEQUENCE_INDEX_BYTES, stream(sec.vertexZs, streams.vertexZs));
+    if (sequences) {
+      sequence(pointOf, sec.vertexPoints, streams.vertexPoints);
+      sequence(zOf, sec.vertexZs, streams.vertexZs);
     }
     if (V > 0) MeshoptDecoder.decodeVertexBuffer(raw, V, stride, stream(sec.vertices, streams.vertices));
-    if (T > 0) MeshoptDecoder.decodeIndexBuffer(indexBytes, 3 * T, indexSize, stream(sec.indices, streams.indices));
+    if (T > 0) MeshoptDecoder.decodeIndexBuffer(new Uint8Array(tri.buffer), 3 * T, 4, stream(sec.indices, streams.indices));
+    sequence(pieceRecords, sec.pieces, streams.pieces);
+    sequence(ringLengths, sec.ringLengths, streams.ringLengths);
+    sequence(ringPoints, sec.ringPoints, streams.ringPoints);
   } catch (err) {
-    throw fail(`its compressed ${sequences ? 'faces, ' : ''}points, z values, vertices or triangles do not decode (${(err as Error).message})`);
+    throw fail(`its compressed ${sequences ? 'faces, ' : ''}points, z values, vertices${rings ? ', triangles or ring pieces' : ' or triangles'} do not decode (${(err as Error).message})`);
+  }
+  for (let i = 0; i < tri.length; i++) {
+    if (tri[i]! >= V) throw fail(`triangle ${Math.floor(i / 3)} names vertex ${tri[i]} of ${V}`);
   }
 
   let faceIds: Uint32Array, faceClasses: Uint16Array;
@@ -360,15 +405,27 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
     faceIds = new Uint32Array(b.buffer, b.byteOffset + sec.faceIds, F);
     faceClasses = new Uint16Array(b.buffer, b.byteOffset + sec.faceClasses, F);
   }
-  const { positions, upper, lower, upperClass, lowerClass } = columnViews(out, V);
   const points = new Int32Array(rawPoints.buffer);
   const zs = new Float32Array(rawZs.buffer);
+  const cut = cutPieces(pieceRecords, ringLengths, ringPoints, points, P, Z, F, fail);
+  const Vt = V + cut.vertexPoints.length, Tt = T + cut.triangles.length / 3;
+  const out = new ArrayBuffer(decodedByteLength(Vt, Tt));
+  const { positions, upper, lower, upperClass, lowerClass } = columnViews(out, Vt);
   const lanes = localSize === 2 ? new Uint16Array(raw.buffer) : new Uint32Array(raw.buffer);
   const words = new Uint32Array(raw.buffer), floats = new Float32Array(raw.buffer);
   const w = stride / 4, h = stride / localSize, faceLane = layout.faceLane(localSize);
   const step = 2 ** e;
-  // A vertex's point and z: from the sequence streams (version 5), its record's first two lanes
-  // (version 4), or its record's u32 and f32 (versions 2 and 3).
+  const put = (k: number, p: number, z: number, u: number, d: number): void => {
+    positions[3 * k] = points[2 * p]! * step;
+    positions[3 * k + 1] = points[2 * p + 1]! * step;
+    positions[3 * k + 2] = z;
+    upper[k] = faceIds[u]!;
+    lower[k] = faceIds[d]!;
+    upperClass[k] = faceClasses[u]!;
+    lowerClass[k] = faceClasses[d]!;
+  };
+  // A vertex's point and z: from the sequence streams (versions 5 and 6), its record's first two
+  // lanes (version 4), or its record's u32 and f32 (versions 2 and 3).
   for (let k = 0; k < V; k++) {
     const p = sequences ? pointOf[k]! : zTable ? lanes[k * h]! : words[k * w]!;
     if (p >= P) throw fail(`vertex ${k} names point ${p} of ${P}`);
@@ -381,23 +438,71 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
       z = floats[k * w + 1]!;
     }
     if (!Number.isFinite(z)) throw fail(`vertex ${k} has a non-finite coordinate`);
-    positions[3 * k] = points[2 * p]! * step;
-    positions[3 * k + 1] = points[2 * p + 1]! * step;
-    positions[3 * k + 2] = z;
     const u = lanes[k * h + faceLane]!, d = lanes[k * h + faceLane + 1]!;
     if (u >= F || d >= F) throw fail(`vertex ${k} names face ${Math.max(u, d)} of a table of ${F}`);
-    upper[k] = faceIds[u]!;
-    lower[k] = faceIds[d]!;
-    upperClass[k] = faceClasses[u]!;
-    lowerClass[k] = faceClasses[d]!;
+    put(k, p, z, u, d);
   }
-  const indices = indexSize === 2 ? new Uint16Array(out, indexOffset, 3 * T) : new Uint32Array(out, indexOffset, 3 * T);
-  for (let i = 0; i < indices.length; i++) {
-    if (indices[i]! >= V) throw fail(`triangle ${Math.floor(i / 3)} names vertex ${indices[i]} of ${V}`);
+  // The ring pieces' vertices: a point once per piece.
+  for (let k = 0; k < cut.vertexPoints.length; k++) {
+    const g = cut.vertexPiece[k]!;
+    const z = zs[pieceRecords[4 * g]!]!;
+    if (!Number.isFinite(z)) throw fail(`ring piece ${g} has a non-finite z`);
+    put(V + k, cut.vertexPoints[k]!, z, pieceRecords[4 * g + 1]!, pieceRecords[4 * g + 2]!);
   }
+  const indexOffset = pad4(Vt * VERTEX_BYTES);
+  const indices = indexSizeFor(Vt) === 2 ? new Uint16Array(out, indexOffset, 3 * Tt) : new Uint32Array(out, indexOffset, 3 * Tt);
+  indices.set(tri);
+  for (let i = 0; i < cut.triangles.length; i++) indices[3 * T + i] = V + cut.triangles[i]!;
   return {
-    vertexCount: V, triangleCount: T,
+    vertexCount: Vt, triangleCount: Tt,
     originX: dv.getFloat64(16, true), originY: dv.getFloat64(24, true), box, positions, upper, lower, upperClass, lowerClass, indices, gridExponent: e,
-    vertexByteOffset: 0, vertexByteLength: VERTEX_BYTES * V,
+    vertexByteOffset: 0, vertexByteLength: VERTEX_BYTES * Vt,
   };
+}
+
+/**
+ * The ring pieces cut into triangles (cutRingPiece, on the points' whole steps, as the writer
+ * cut them): each piece's vertices (a point once per piece: its point and its piece) and the
+ * triangles as indices into those vertices. Checks every index against its table.
+ */
+function cutPieces(
+  records: Uint32Array, lengths: Uint32Array, ringPoints: Uint32Array, points: Int32Array, P: number, Z: number, F: number, fail: (why: string) => Error,
+): { vertexPoints: number[]; vertexPiece: number[]; triangles: number[] } {
+  const vertexPoints: number[] = [], vertexPiece: number[] = [], triangles: number[] = [];
+  if (records.length === 0) return { vertexPoints, vertexPiece, triangles };
+  const xs = new Int32Array(P), ys = new Int32Array(P);
+  for (let p = 0; p < P; p++) {
+    xs[p] = points[2 * p]!;
+    ys[p] = points[2 * p + 1]!;
+  }
+  for (const p of ringPoints) if (p >= P) throw fail(`a ring names point ${p} of ${P}`);
+  // The vertex of each point in the current piece: vertexOf[p], valid where seenIn[p] is the piece + 1.
+  const seenIn = new Uint32Array(P), vertexOf = new Uint32Array(P);
+  const pieceTris: number[] = [];
+  let r = 0, q = 0;
+  for (let g = 0; g < records.length / 4; g++) {
+    const zi = records[4 * g]!, u = records[4 * g + 1]!, d = records[4 * g + 2]!, n = records[4 * g + 3]!;
+    if (zi >= Z || u >= F || d >= F) throw fail(`ring piece ${g} names z value ${zi} of ${Z} or faces ${u} and ${d} of ${F}`);
+    if (n === 0 || r + n > lengths.length) throw fail(`ring piece ${g} has ${n} rings, ${lengths.length - r} are left`);
+    const rings: number[][] = [];
+    for (let i = 0; i < n; i++, r++) {
+      const len = lengths[r]!;
+      if (len < 3 || q + len > ringPoints.length) throw fail(`ring ${r} has ${len} points, ${ringPoints.length - q} are left`);
+      rings.push(Array.from(ringPoints.subarray(q, q + len)));
+      q += len;
+    }
+    pieceTris.length = 0;
+    cutRingPiece(rings, xs, ys, pieceTris);
+    for (const p of pieceTris) {
+      if (seenIn[p] !== g + 1) {
+        seenIn[p] = g + 1;
+        vertexOf[p] = vertexPoints.length;
+        vertexPoints.push(p);
+        vertexPiece.push(g);
+      }
+      triangles.push(vertexOf[p]!);
+    }
+  }
+  if (r !== lengths.length || q !== ringPoints.length) throw fail(`${lengths.length - r} rings and ${ringPoints.length - q} ring points belong to no piece`);
+  return { vertexPoints, vertexPiece, triangles };
 }
