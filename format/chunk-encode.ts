@@ -77,28 +77,6 @@ export interface ChunkInput {
   gridExponent?: number;
 }
 
-/** The faces named, in order of first mention, with their classes; a face has one class. */
-class FaceTable {
-  readonly ids: number[] = [];
-  readonly classes: number[] = [];
-  readonly local = new Map<number, number>();
-
-  add(face: number, cls: number): number {
-    const i = this.local.get(face);
-    if (i === undefined) {
-      // A u32 id and a class of the decoder's u16 column (NO_CLASS, 0xffff, is face 0's).
-      if (!(Number.isInteger(face) && face >= 0 && face <= 0xffffffff)) throw new Error(`chunk encoder: face id ${face} is not a u32`);
-      if (!(Number.isInteger(cls) && cls >= 0 && cls <= NO_CLASS)) throw new Error(`chunk encoder: face ${face} has class ${cls}, a class index is 0 to ${NO_CLASS}`);
-      this.local.set(face, this.ids.length);
-      this.ids.push(face);
-      this.classes.push(cls);
-      return this.ids.length - 1;
-    }
-    if (this.classes[i] !== cls) throw new Error(`chunk encoder: face ${face} has class ${this.classes[i]} at one vertex and ${cls} at another`);
-    return i;
-  }
-}
-
 /** Each value's place in a table of the values in order of first use. */
 class FirstUse<K> {
   readonly values: K[] = [];
@@ -111,6 +89,33 @@ class FirstUse<K> {
       this.values.push(v);
     }
     return i;
+  }
+
+  place(v: K): number | undefined {
+    return this.at.get(v);
+  }
+}
+
+/** The faces named, in order of first mention, with their classes; a face has one class. */
+class FaceTable {
+  readonly ids = new FirstUse<number>();
+  readonly classes: number[] = [];
+
+  add(face: number, cls: number): number {
+    const known = this.ids.place(face);
+    if (known !== undefined) {
+      if (this.classes[known] !== cls) throw new Error(`chunk encoder: face ${face} has class ${this.classes[known]} at one vertex and ${cls} at another`);
+      return known;
+    }
+    // A u32 id and a class of the decoder's u16 column (NO_CLASS, 0xffff, is face 0's).
+    if (!(Number.isInteger(face) && face >= 0 && face <= 0xffffffff)) throw new Error(`chunk encoder: face id ${face} is not a u32`);
+    if (!(Number.isInteger(cls) && cls >= 0 && cls <= NO_CLASS)) throw new Error(`chunk encoder: face ${face} has class ${cls}, a class index is 0 to ${NO_CLASS}`);
+    this.classes.push(cls);
+    return this.ids.add(face);
+  }
+
+  classOf(face: number): number {
+    return this.classes[this.ids.place(face)!]!;
   }
 }
 
@@ -156,14 +161,13 @@ export function encodeChunk(c: ChunkInput): Uint8Array {
     named.add(c.upper[k]!, c.upperClass[k]!);
     named.add(c.lower[k]!, c.lowerClass[k]!);
   }
-  const classOf = (face: number): number => named.classes[named.local.get(face)!]!;
 
   // The tables in order of first use, as docs/FORMAT.md lays them out: by the ring pieces, then
   // by the vertices of the triangles given as such.
   const faces = new FaceTable(), points = new FirstUse<number>(), zs = new FirstUse<number>();
   const pieceRecords: number[] = [], ringLengths: number[] = [], ringPoints: number[] = [];
   for (const piece of pieces) {
-    pieceRecords.push(zs.add(piece.z), faces.add(piece.upper, classOf(piece.upper)), faces.add(piece.lower, classOf(piece.lower)), piece.rings.length);
+    pieceRecords.push(zs.add(piece.z), faces.add(piece.upper, named.classOf(piece.upper)), faces.add(piece.lower, named.classOf(piece.lower)), piece.rings.length);
     for (const r of piece.rings) {
       ringLengths.push(r.length);
       for (const q of r) ringPoints.push(points.add(q));
@@ -182,7 +186,7 @@ export function encodeChunk(c: ChunkInput): Uint8Array {
     faceOf[2 * k] = faces.add(c.upper[v]!, c.upperClass[v]!);
     faceOf[2 * k + 1] = faces.add(c.lower[v]!, c.lowerClass[v]!);
   });
-  const F = faces.ids.length, P = points.values.length, Z = zs.values.length;
+  const F = faces.ids.values.length, P = points.values.length, Z = zs.values.length;
   const size = tableIndexSizeFor(F);
   const records = size === 2 ? Uint16Array.from(faceOf) : faceOf;
   const pointRecords = new Int32Array(2 * P);
@@ -193,7 +197,7 @@ export function encodeChunk(c: ChunkInput): Uint8Array {
   const indexSize = indexSizeFor(Vg);
   const triArray = indexSize === 2 ? Uint16Array.from(tri) : Uint32Array.from(tri);
 
-  const faceStream = encodeFaceStream(faces.ids, faces.classes);
+  const faceStream = encodeFaceStream(faces.ids.values, faces.classes);
   const pointStream = encodeRecords(pointRecords.buffer, P, POINT_BYTES);
   const zStream = encodeRecords(Float32Array.from(zs.values).buffer, Z, Z_BYTES);
   // Mostly the next new point or z, else one named shortly before: the index sequence codec

@@ -1,9 +1,10 @@
 // The chunk file's ring pieces: which level triangles go as rings, the rings they go as (round
 // the triangles, the same whatever order the triangles come in), and that the reader's cut of
-// those rings covers what the triangles covered.
+// those rings covers each point as often as the triangles did (sampled).
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
-import { cutRingPiece, findRingPieces, type PieceInput } from './chunk-rings.js';
+import { cutRingPieces, findRingPieces, type PieceInput } from './chunk-rings.js';
+import { cover } from '../testing/triangle-cover.js';
 
 /** Triangles of points (x, y on whole steps), each vertex its own, at z values and faces given per triangle. */
 function input(tris: { pts: [number, number][]; z: number; upper: number; lower?: number }[]): PieceInput {
@@ -57,16 +58,45 @@ describe('chunk ring pieces', () => {
     assert.deepEqual(findRingPieces(b).pieces[0]!.rings.map((r) => coords(b, r)), findRingPieces(a).pieces[0]!.rings.map((r) => coords(a, r)));
   });
 
-  test("the reader's cut covers the piece: the same area, every triangle counterclockwise", () => {
-    const c = input(frame());
-    const out: number[] = [];
-    // Twice the area: 16 less the hole's 4.
-    assert.equal(cutRingPiece(findRingPieces(c).pieces[0]!.rings, c.xs, c.ys, out), 24);
-    assert.equal(out.length / 3, 8);
-    for (let t = 0; t < out.length; t += 3) {
-      const [a, b, d] = [out[t]!, out[t + 1]!, out[t + 2]!];
-      assert.ok((c.xs[b]! - c.xs[a]!) * (c.ys[d]! - c.ys[a]!) - (c.xs[d]! - c.xs[a]!) * (c.ys[b]! - c.ys[a]!) > 0);
+  test("the reader's cut covers each point as often as the triangles: a frame, two squares touching at a corner, an island in a hole", () => {
+    const sq = (x: number, y: number, w: number, upper = 5): { pts: [number, number][]; z: number; upper: number }[] => [
+      { pts: [[x, y], [x + w, y], [x + w, y + w]], z: 2, upper },
+      { pts: [[x, y], [x + w, y + w], [x, y + w]], z: 2, upper },
+    ];
+    // A frame round a 4 x 4 hole, and a 2 x 2 square of the same piece inside the hole.
+    const big: { pts: [number, number][]; z: number; upper: number }[] = [];
+    const o: [number, number][] = [[0, 0], [6, 0], [6, 6], [0, 6]], h: [number, number][] = [[1, 1], [5, 1], [5, 5], [1, 5]];
+    for (let k = 0; k < 4; k++) {
+      big.push({ pts: [o[k]!, o[(k + 1) % 4]!, h[(k + 1) % 4]!], z: 2, upper: 5 }, { pts: [o[k]!, h[(k + 1) % 4]!, h[k]!], z: 2, upper: 5 });
     }
+    const cases = { frame: frame(), touching: [...sq(0, 0, 2), ...sq(2, 2, 2)], island: [...big, ...sq(2, 2, 2)] };
+    for (const [name, tris] of Object.entries(cases)) {
+      const c = input(tris);
+      const { pieces, ringed } = findRingPieces(c);
+      assert.equal(pieces.length, 1, name);
+      assert.ok(ringed.every((r) => r === 1), name);
+      const cut = cutRingPieces([pieces[0]!.rings.length], pieces[0]!.rings.map((r) => r.length), Uint32Array.from(pieces[0]!.rings.flat()), c.xs, c.ys, (why) => new Error(why));
+      const triangles = (ids: number[]): number[][] => ids.flatMap((_, i) => (i % 3 ? [] : [[ids[i]!, ids[i + 1]!, ids[i + 2]!].flatMap((p) => [c.xs[p]!, c.ys[p]!])]));
+      const got = triangles(cut.triangles.map((v) => cut.vertexPoints[v]!)), want = triangles(Array.from(c.indices, (v) => c.pointOf[v]!));
+      // Off every line through two points of the grid that the cut could use.
+      for (let x = 0.3137; x < 6; x += 0.5) for (let y = 0.2718; y < 6; y += 0.5) assert.equal(cover(got, x, y), cover(want, x, y), `${name}: (${x}, ${y})`);
+    }
+  });
+
+  test('a piece with a point on a straight side keeps it, or stays as triangles', () => {
+    // A 2 x 1 rectangle whose lower side has a point at (1, 0) where a neighbour's corner is.
+    const c = input([
+      { pts: [[0, 0], [1, 0], [0, 1]], z: 2, upper: 5 },
+      { pts: [[1, 0], [2, 0], [2, 1]], z: 2, upper: 5 },
+      { pts: [[1, 0], [2, 1], [0, 1]], z: 2, upper: 5 },
+    ]);
+    const { pieces, ringed } = findRingPieces(c);
+    if (pieces.length === 0) {
+      assert.ok(ringed.every((r) => r === 0));
+      return;
+    }
+    const cut = cutRingPieces([1], [pieces[0]!.rings[0]!.length], Uint32Array.from(pieces[0]!.rings[0]!), c.xs, c.ys, (why) => new Error(why));
+    assert.ok(cut.vertexPoints.some((p) => c.xs[p] === 1 && c.ys[p] === 0), 'the point on the side is a corner of the cut');
   });
 
   test('pieces are told apart by z and faces; tilted triangles stay', () => {
@@ -79,7 +109,7 @@ describe('chunk ring pieces', () => {
     assert.equal(ringed[ringed.length - 1], 0);
   });
 
-  test('a piece stays as triangles where they overlap, one is turned over or of no area', () => {
+  test('a piece stays as triangles where two use a side the same way, one is turned over or of no area', () => {
     const overlap = input([
       { pts: [[0, 0], [2, 0], [0, 2]], z: 1, upper: 9 },
       { pts: [[0, 0], [2, 0], [1, 2]], z: 1, upper: 9 },

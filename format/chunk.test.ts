@@ -13,6 +13,7 @@ import { VERTEX_BYTES, VERTEX_COLUMNS, vertexColumnOffset } from './chunk-layout
 import { MeshoptDecoder } from 'meshoptimizer/decoder';
 import { MeshoptEncoder } from 'meshoptimizer/encoder';
 import { CHUNK_MAGIC, ChunkFormatError, chunkLayout, decodeChunk, type DecodedChunk } from './chunk.js';
+import { cover } from '../testing/triangle-cover.js';
 
 const fixture = (name: string): string => path.join(path.dirname(fileURLToPath(import.meta.url)), 'testdata', name);
 
@@ -172,16 +173,6 @@ function drawn(c: Columns, round: (v: number) => number): { tilted: string[]; le
 
 const area2 = (t: number[]): number => (t[2]! - t[0]!) * (t[5]! - t[1]!) - (t[4]! - t[0]!) * (t[3]! - t[1]!);
 
-/** How many of `tris` hold (x, y) strictly inside. */
-function cover(tris: number[][], x: number, y: number): number {
-  let n = 0;
-  for (const t of tris) {
-    const s = (i: number, j: number): number => (t[2 * j]! - t[2 * i]!) * (y - t[2 * i + 1]!) - (t[2 * j + 1]! - t[2 * i + 1]!) * (x - t[2 * i]!);
-    if (s(0, 1) > 0 && s(1, 2) > 0 && s(2, 0) > 0) n++;
-  }
-  return n;
-}
-
 /**
  * Asserts the decoded chunk draws what the input does, its positions on the input's within
  * `tol` ground units: the same triangles that are not level, exactly (positions on the grid);
@@ -291,6 +282,47 @@ describe('chunk file', () => {
     assert.deepEqual(encodeChunk(d), bytes, 'and a decoded chunk re-encodes to them');
   });
 
+  test('a chunk of level pieces only, and one whose pieces take it past 65535 vertices (32-bit indices)', async () => {
+    // The frame and the fan of levelChunk, without the triangles given as such.
+    const all = levelChunk();
+    const keep = Array.from({ length: 12 }, (_, t) => t);
+    const used = [...new Set(keep.flatMap((t) => [0, 1, 2].map((k) => all.indices[3 * t + k]!)))].sort((a, b) => a - b);
+    const at = new Map(used.map((v, i) => [v, i]));
+    const pick = <A extends ArrayLike<number>>(a: A, n = 1): number[] => used.flatMap((v) => Array.from({ length: n }, (_, k) => a[n * v + k]!));
+    const level: ChunkInput = {
+      ...all, positions: pick(all.positions, 3), upper: pick(all.upper), lower: pick(all.lower), upperClass: pick(all.upperClass), lowerClass: pick(all.lowerClass),
+      indices: keep.flatMap((t) => [0, 1, 2].map((k) => at.get(all.indices[3 * t + k]!)!)),
+    };
+    const bytes = encodeChunk(level);
+    assert.deepEqual([8, 12].map((o) => new DataView(bytes.buffer).getUint32(o, true)), [0, 0], 'no vertex, no triangle given as such');
+    const d = await decodeChunk(bytes);
+    assertSame(d, level, 0);
+    // 17,689 unit squares of one piece (two triangles each) beside one tilted triangle: 3 vertices given as such.
+    const positions: number[] = [], indices: number[] = [];
+    for (let a = 0; a < 133; a++) {
+      for (let b = 0; b < 133; b++) {
+        const v = positions.length / 3;
+        positions.push(2 * a, 2 * b, 1, 2 * a + 1, 2 * b, 1, 2 * a + 1, 2 * b + 1, 1, 2 * a, 2 * b + 1, 1);
+        indices.push(v, v + 1, v + 2, v, v + 2, v + 3);
+      }
+    }
+    const v0 = positions.length / 3;
+    positions.push(0, 0, 1, 10, 0, 2, 0, 10, 2);
+    indices.push(v0, v0 + 1, v0 + 2);
+    const V = v0 + 3;
+    const big: ChunkInput = {
+      originX: 0, originY: 0, box: Float32Array.of(0, 0, 1, 266, 266, 2), positions,
+      upper: new Uint32Array(V).fill(3), lower: new Uint32Array(V), upperClass: new Uint16Array(V).fill(1), lowerClass: new Uint16Array(V).fill(0xffff), indices,
+    };
+    const bytes2 = encodeChunk(big);
+    assert.deepEqual([8, 100, 104, 108].map((o) => new DataView(bytes2.buffer).getUint32(o, true)), [3, 1, 133 * 133, 4 * 133 * 133]);
+    const bb = await decodeChunk(bytes2);
+    assert.ok(bb.indices instanceof Uint32Array);
+    assert.equal(bb.vertexCount, V);
+    assert.equal(bb.triangleCount, indices.length / 3);
+    assert.equal(Math.max(...bb.indices), V - 1);
+  });
+
   test('a damaged ring piece is refused and the message says why', async () => {
     const good = encodeChunk(levelChunk());
     const dv = new DataView(good.buffer, good.byteOffset, good.byteLength);
@@ -318,6 +350,30 @@ describe('chunk file', () => {
     bad.set(stream, sec);
     new DataView(bad.buffer).setUint32(120, stream.length, true);
     await refuses(bad, /a ring names point 22 of 22/);
+    // The piece records, ring lengths and ring points re-written: a piece of no ring, a ring of 2 points, a face beyond the table, rings left over.
+    const withStreams = (pieces: number[], lengths: number[], points: number[], G = pieces.length / 4): Uint8Array => {
+      const seq = (v: number[]): Uint8Array => MeshoptEncoder.encodeIndexSequence(new Uint8Array(Uint32Array.from(v).buffer), v.length, 4);
+      const parts = [seq(pieces), seq(lengths), seq(points)];
+      const start = [72, 76, 80, 84, 88, 92, 96].reduce((at, o) => at + ((dv.getUint32(o, true) + 3) & ~3), 124);
+      const b = new Uint8Array(start + parts.reduce((n, q) => n + ((q.length + 3) & ~3), 0));
+      b.set(good.subarray(0, start));
+      const h = new DataView(b.buffer);
+      [G, lengths.length, points.length].forEach((v, i) => h.setUint32(100 + 4 * i, v, true));
+      let at = start;
+      parts.forEach((q, i) => {
+        h.setUint32(112 + 4 * i, q.length, true);
+        b.set(q, at);
+        at += (q.length + 3) & ~3;
+      });
+      return b;
+    };
+    const twelve = Array.from({ length: 12 }, (_, i) => i);
+    await refuses(withStreams([0, 0, 1, 0], [12], twelve), /ring piece 0 has 0 rings, 1 are left/);
+    await refuses(withStreams([0, 0, 1, 2], [2, 10], twelve), /ring 0 has 2 points/);
+    await refuses(withStreams([0, 9, 1, 1], [12], twelve), /ring piece 0 names z value 0 of 2 or faces 9 and 1 of 6/);
+    await refuses(withStreams([0, 0, 1, 1], [3, 9], twelve), /1 rings and 9 ring points belong to no piece/);
+    await refuses(withStreams([], [12], twelve, 0), /1 rings and 12 ring points belong to no piece/);
+    assert.ok((await decodeChunk(withStreams([0, 0, 1, 1], [12], twelve))).triangleCount >= 4, 'the same streams, whole, are read');
   });
 
   test('the decoded vertex columns are the ones the renderer binds', async () => {
@@ -348,13 +404,6 @@ describe('chunk file', () => {
     const d = await decodeChunk(encodeChunk(c));
     assertSame(d, c, 2 ** -14);
     for (let k = 0; k < d.vertexCount; k++) for (const j of [0, 1]) assert.ok(Number.isInteger(d.positions[3 * k + j]! * 8192), `vertex ${k} on the grid`);
-    // From 1024 on, float32 itself keeps 1/8192: there the grid is exactly float32's rounding.
-    for (let k = 0; k < c.upper.length; k++) {
-      for (const j of [0, 1]) {
-        const x = c.positions[3 * k + j]!;
-        if (x >= 1024) assert.equal(Math.round(x * 8192) / 8192, Math.fround(x), `vertex ${k}: as float32 would keep ${x}`);
-      }
-    }
   });
 
   test('two surfaces over the same corners share their points', async () => {

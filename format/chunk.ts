@@ -11,7 +11,7 @@
 // the map does not load its WebAssembly.
 import { MeshoptDecoder } from 'meshoptimizer/decoder';
 import { VERTEX_BYTES, vertexColumnOffset, type VertexColumn } from './chunk-layout.js';
-import { cutRingPiece } from './chunk-rings.js';
+import { cutRingPieces, type CutPieces } from './chunk-rings.js';
 import { FormatError } from './format-error.js';
 
 export const CHUNK_MAGIC = 0x43435353; // "SSCC"
@@ -55,7 +55,7 @@ export interface ChunkData {
 
 /** A decoded chunk also tells where its vertex columns lie in its buffer (one GPU upload). */
 export interface DecodedChunk extends ChunkData {
-  /** The file's position grid exponent, so that an encoder given this chunk writes the same file. */
+  /** The file's position grid exponent, so that an encoder given this chunk puts it on the same grid (and writes the same file where earcut left out no point of a ring). */
   gridExponent: number;
   /** Byte offset and length of the vertex columns (positions, upper, lower, classes). */
   vertexByteOffset: number;
@@ -138,15 +138,15 @@ export interface ChunkSections {
   /** The face table, raw (versions 2 to 4). */
   faceIds: number;
   faceClasses: number;
-  /** The face table through the codec (version 5). */
+  /** The face table through the codec (versions 5 and 6). */
   faces: number;
   points: number;
   /** The z stream (none in versions 2 and 3). */
   zs: number;
-  /** The vertices' point indices and z indices (version 5). */
+  /** The vertices' point indices and z indices (versions 5 and 6). */
   vertexPoints: number;
   vertexZs: number;
-  /** The vertex stream: the vertices' faces (version 5), or all of each vertex (versions 2 to 4). */
+  /** The vertex stream: the vertices' faces (versions 5 and 6), or all of each vertex (versions 2 to 4). */
   vertices: number;
   indices: number;
   /** The ring pieces: their records, their rings' lengths, the rings' points (version 6). */
@@ -159,9 +159,9 @@ export interface ChunkSections {
 
 /** The lengths a header gives: of the face table (entries) and of each compressed stream (bytes). */
 export interface ChunkStreams {
-  /** Entries of the raw face table (versions 2 to 4; 0 in version 5). */
+  /** Entries of the raw face table (versions 2 to 4; 0 in versions 5 and 6). */
   faceTable: number;
-  /** Bytes of the face stream (version 5). */
+  /** Bytes of the face stream (versions 5 and 6). */
   faces: number;
   points: number;
   zs: number;
@@ -260,12 +260,7 @@ const V2_V3: Omit<ChunkLayout, 'boxOwnGrid'> = {
   stride: (size) => 8 + 2 * size,
   faceLane: (size) => 8 / size,
 };
-/**
- * Version 6: version 5 and ring pieces after the triangles. Version 5: the face table through the codec; a vertex's point and z in sequence streams, its
- * faces in the vertex stream. Version 4: the raw face table; point, z and faces in the vertex
- * stream, on lanes sized for the largest table. Versions 2 and 3: no z table; a vertex is a u32
- * point, an f32 z and its faces.
- */
+/** Version 5: the face table through the codec; a vertex's point and z in sequence streams, its faces in the vertex stream. */
 const V5: ChunkLayout = {
   headerBytes: 100,
   streams: (u32) => ({ ...NO_RINGS, faceTable: 0, faces: u32(72), points: u32(76), zs: u32(80), vertexPoints: u32(84), vertexZs: u32(88), vertices: u32(92), indices: u32(96) }),
@@ -277,6 +272,11 @@ const V5: ChunkLayout = {
   stride: encodedVertexBytes,
   faceLane: () => 0,
 };
+/**
+ * Version 6: version 5 and ring pieces after the triangles. Version 4: the raw face table;
+ * point, z and faces in the vertex stream, on lanes sized for the largest table. Versions 2 and
+ * 3: no z table; a vertex is a u32 point, an f32 z and its faces.
+ */
 const LAYOUTS: ReadonlyMap<number, ChunkLayout> = new Map([
   [CHUNK_VERSION, {
     ...V5,
@@ -407,7 +407,7 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   }
   const points = new Int32Array(rawPoints.buffer);
   const zs = new Float32Array(rawZs.buffer);
-  const cut = cutPieces(pieceRecords, ringLengths, ringPoints, points, P, Z, F, fail);
+  const cut = rings ? cutPieces(pieceRecords, ringLengths, ringPoints, points, Z, F, fail) : { vertexPoints: [], vertexPiece: [], triangles: [] };
   const Vt = V + cut.vertexPoints.length, Tt = T + cut.triangles.length / 3;
   const out = new ArrayBuffer(decodedByteLength(Vt, Tt));
   const { positions, upper, lower, upperClass, lowerClass } = columnViews(out, Vt);
@@ -460,49 +460,20 @@ export async function decodeChunk(input: Uint8Array | ArrayBuffer, name = 'chunk
   };
 }
 
-/**
- * The ring pieces cut into triangles (cutRingPiece, on the points' whole steps, as the writer
- * cut them): each piece's vertices (a point once per piece: its point and its piece) and the
- * triangles as indices into those vertices. Checks every index against its table.
- */
-function cutPieces(
-  records: Uint32Array, lengths: Uint32Array, ringPoints: Uint32Array, points: Int32Array, P: number, Z: number, F: number, fail: (why: string) => Error,
-): { vertexPoints: number[]; vertexPiece: number[]; triangles: number[] } {
-  const vertexPoints: number[] = [], vertexPiece: number[] = [], triangles: number[] = [];
-  if (records.length === 0) return { vertexPoints, vertexPiece, triangles };
+/** The pieces' rings cut into triangles (chunk-rings.ts), each piece's z and faces checked against their tables. */
+function cutPieces(records: Uint32Array, lengths: Uint32Array, ringPoints: Uint32Array, points: Int32Array, Z: number, F: number, fail: (why: string) => Error): CutPieces {
+  const G = records.length / 4;
+  const ringCounts = new Uint32Array(G);
+  for (let g = 0; g < G; g++) {
+    const zi = records[4 * g]!, u = records[4 * g + 1]!, d = records[4 * g + 2]!;
+    if (zi >= Z || u >= F || d >= F) throw fail(`ring piece ${g} names z value ${zi} of ${Z} or faces ${u} and ${d} of ${F}`);
+    ringCounts[g] = records[4 * g + 3]!;
+  }
+  const P = points.length / 2;
   const xs = new Int32Array(P), ys = new Int32Array(P);
   for (let p = 0; p < P; p++) {
     xs[p] = points[2 * p]!;
     ys[p] = points[2 * p + 1]!;
   }
-  for (const p of ringPoints) if (p >= P) throw fail(`a ring names point ${p} of ${P}`);
-  // The vertex of each point in the current piece: vertexOf[p], valid where seenIn[p] is the piece + 1.
-  const seenIn = new Uint32Array(P), vertexOf = new Uint32Array(P);
-  const pieceTris: number[] = [];
-  let r = 0, q = 0;
-  for (let g = 0; g < records.length / 4; g++) {
-    const zi = records[4 * g]!, u = records[4 * g + 1]!, d = records[4 * g + 2]!, n = records[4 * g + 3]!;
-    if (zi >= Z || u >= F || d >= F) throw fail(`ring piece ${g} names z value ${zi} of ${Z} or faces ${u} and ${d} of ${F}`);
-    if (n === 0 || r + n > lengths.length) throw fail(`ring piece ${g} has ${n} rings, ${lengths.length - r} are left`);
-    const rings: number[][] = [];
-    for (let i = 0; i < n; i++, r++) {
-      const len = lengths[r]!;
-      if (len < 3 || q + len > ringPoints.length) throw fail(`ring ${r} has ${len} points, ${ringPoints.length - q} are left`);
-      rings.push(Array.from(ringPoints.subarray(q, q + len)));
-      q += len;
-    }
-    pieceTris.length = 0;
-    cutRingPiece(rings, xs, ys, pieceTris);
-    for (const p of pieceTris) {
-      if (seenIn[p] !== g + 1) {
-        seenIn[p] = g + 1;
-        vertexOf[p] = vertexPoints.length;
-        vertexPoints.push(p);
-        vertexPiece.push(g);
-      }
-      triangles.push(vertexOf[p]!);
-    }
-  }
-  if (r !== lengths.length || q !== ringPoints.length) throw fail(`${lengths.length - r} rings and ${ringPoints.length - q} ring points belong to no piece`);
-  return { vertexPoints, vertexPiece, triangles };
+  return cutRingPieces(ringCounts, lengths, ringPoints, xs, ys, fail);
 }

@@ -1,8 +1,9 @@
 // A face's area as triangles from the edges around it: the edges joined into rings (split where
 // the face touches itself), holes put in the outer ring that holds them, earcut. Shared by the
 // build (preprocess/ssc/triangulate-face.ts, which falls back to a constrained Delaunay
-// triangulation where earcut fails) and the floor chunk reader (floor-chunk.ts), whose writer
-// runs this very code on the file's grid points to find the faces it must give as triangles.
+// triangulation where earcut fails), the floor chunk reader (floor-chunk.ts) and the chunk
+// file's ring pieces (chunk-rings.ts), whose writers run this very code on the file's grid
+// points to find what they must give as triangles.
 import earcut from 'earcut';
 import { orient2d } from 'robust-predicates';
 
