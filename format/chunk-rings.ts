@@ -15,7 +15,11 @@ export interface RingPiece {
   rings: number[][];
 }
 
-/** A chunk's triangles with their vertices' points (ids into xs, ys: whole grid steps), z values and faces. */
+/**
+ * A chunk's triangles with their vertices' points (ids into xs, ys: whole grid steps, at most
+ * 2^24 either way, as gridSteps gives them, so that every product the checks take is exact in
+ * float64), z values and faces.
+ */
 export interface PieceInput {
   indices: ArrayLike<number>;
   pointOf: ArrayLike<number>;
