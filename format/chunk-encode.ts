@@ -40,8 +40,8 @@ export function encodeFaceStream(ids: ArrayLike<number>, classes: ArrayLike<numb
   return encodeRecords(records.buffer, ids.length, FACE_RECORD_BYTES);
 }
 
-/** Indices through meshoptimizer's index sequence codec (`meshopt_encodeIndexSequence`): the vertices' points and z values. */
-const encodeSequence = (indices: Uint32Array): Uint8Array => MeshoptEncoder.encodeIndexSequence(new Uint8Array(indices.buffer, indices.byteOffset, indices.byteLength), indices.length, 4);
+/** Indices through meshoptimizer's index sequence codec (`meshopt_encodeIndexSequence`): the vertices' points and z values, the ring pieces. */
+export const encodeSequence = (indices: Uint32Array): Uint8Array => MeshoptEncoder.encodeIndexSequence(new Uint8Array(indices.buffer, indices.byteOffset, indices.byteLength), indices.length, 4);
 
 /**
  * An order of a mesh's triangles and vertices that the codecs compress well (meshoptimizer's
