@@ -1,7 +1,8 @@
 // The view's limits through the demo page (the public API) with real input: with maxBounds
 // every frame of a mouse drag (and its glide), a wheel zoom out and a flight stays inside the
 // box, and the view stops at its edge, also when the map grows; setMinScale and setMaxScale bring the view within them
-// at once and hold the wheel there.
+// at once and hold the wheel there; by default the map zooms out to four times the scale at which it
+// opened showing the whole extent (and in to a quarter of the base scale).
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import type { Page } from 'playwright-core';
@@ -95,6 +96,16 @@ describe('map limits (bgt_otterlo_400m)', () => {
   test('setMinScale and setMaxScale bring the view within them at once and hold the wheel there', async () => {
     bed.page = await openDemo(bed.browser, bed.server.url);
     const page = bed.page.page;
+    // Opened with no view, the map fits the whole extent; by default it zooms out to four times that.
+    const opened = await page.evaluate(() => {
+      const m = (globalThis as unknown as LimitsWindow).map;
+      const r = (m.getContainer() as { getBoundingClientRect(): { width: number; height: number } }).getBoundingClientRect();
+      return { scale: m.getScaleDenominator(), maxScale: m.getMaxScale(), width: r.width, height: r.height };
+    });
+    const [ex0, ey0, ex1, ey1] = bed.contents.meta.extent;
+    const fit = (Math.max((ex1 - ex0) / opened.width, (ey1 - ey0) / opened.height) * 1000) / bed.contents.meta.pixelSizeMm;
+    assert.ok(Math.abs(opened.scale / fit - 1) < 1e-9, `opened at 1:${opened.scale}, the extent fits ${opened.width} x ${opened.height} px at 1:${fit}`);
+    assert.ok(Math.abs(opened.maxScale / (4 * fit) - 1) < 1e-9, `zooms out to 1:${opened.maxScale}, four times the extent's fit 1:${fit}`);
     await page.evaluate(() => (globalThis as unknown as VarioWindow).map.jumpTo({ scaleDenominator: 3000 }));
     await record(page);
     const scale = await page.evaluate(() => {
@@ -125,8 +136,10 @@ describe('map limits (bgt_otterlo_400m)', () => {
     });
     assert.match(refused, /maxScale \(9000\) must be at least minScale \(20000\)/);
     assert.deepEqual(await page.evaluate(() => [(globalThis as unknown as LimitsWindow).map.getMinScale(), (globalThis as unknown as LimitsWindow).map.getMaxScale(), (globalThis as unknown as LimitsWindow).map.getScaleDenominator()]), [6000, 9000, 9000], 'nothing changed');
-    // null: the cube's default again (a quarter of its base scale).
+    // null: the cube's defaults again (a quarter of its base scale; four times the extent's fit).
     await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.setMinScale(null));
     assert.equal(await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.getMinScale()), bed.contents.meta.baseScale / 4);
+    await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.setMaxScale(null));
+    assert.equal(await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.getMaxScale()), opened.maxScale);
   });
 });

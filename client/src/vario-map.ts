@@ -26,7 +26,7 @@ import { lerpCamera, type Camera } from './geometry/camera.js';
 import { discreteLevels } from './geometry/discrete-scales.js';
 import { easeInOut } from './motion/easing.js';
 import { DEFAULT_RHO, flyPath } from './motion/fly-path.js';
-import { resolutionAtScale, scaleAtResolution, viewBbox, type Bbox } from './geometry/view.js';
+import { resolutionAtScale, viewBbox, type Bbox } from './geometry/view.js';
 import { scaleAtZoom, zoomAtScale } from './geometry/zoom-levels.js';
 import type { SourceErrorInfo } from './source/worker-protocol.js';
 import { AttributionControl } from './ui/attribution-control.js';
@@ -659,8 +659,8 @@ export class VarioMap extends Evented<VarioMapEvents> {
 
   /** The cube is known (the view has fitted itself): the scale limits and the comparison scales. */
   private onMeta(meta: CubeMeta): void {
-    const [w, h] = this.dom.cssSize();
-    const extentScale = scaleAtResolution(Math.max((meta.extent[2] - meta.extent[0]) / w, (meta.extent[3] - meta.extent[1]) / h), meta.pixelSizeMm);
+    // The scale the view fitted the whole extent at (the view's own fit: one formula).
+    const extentScale = this.engine.fitCamera(meta.extent).scale;
     this.scaleLimits.setDefaults(meta.baseScale / 4, extentScale * 4);
     this.levels = discreteLevels(meta.baseScale, extentScale, this.options.comparisonFactor ?? 2);
     if (this.settings.comparisonMode) this.view.setLevels(this.levels);
