@@ -113,6 +113,17 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   };
   const chunkRequests = (): LoggedRequest[] => server.log.slice(logStart).filter((e) => /^\/cube\/[cb]-/.test(e.path));
   const fileOf = (e: LoggedRequest): string => e.path.slice('/cube/'.length);
+  /**
+   * The requests for `file`: refused with 429 (Retry-After: 2), then asked for again two seconds
+   * later or more. Both times are the server's; the answer's way to the browser only makes the gap longer.
+   */
+  const askedAgainAfter429 = (file: string, what: string): LoggedRequest[] => {
+    const asked = chunkRequests().filter((r) => fileOf(r) === file);
+    assert.deepEqual(asked.map((r) => r.outcome), [429, 200], what);
+    const waited = asked[1]!.start - asked[0]!.end;
+    assert.ok(waited >= 2000, `${file}: asked again ${waited} ms after the 429`);
+    return asked;
+  };
   const countBy = (rs: LoggedRequest[]): Map<string, number> => {
     const m = new Map<string, number>();
     for (const r of rs) m.set(fileOf(r), (m.get(fileOf(r)) ?? 0) + 1);
@@ -324,13 +335,9 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     server.faults.tooManyOnce.set(limited, 2);
     const p = await open(view, 0, {}, [/Failed to load resource: the server responded with a status of 429/]);
     assert.equal(await waitIdle(p.page), true);
-    const asked = chunkRequests().filter((r) => fileOf(r) === limited);
-    assert.deepEqual(asked.map((r) => r.outcome), [429, 200], `${limited}: the map's request, then the worker's`);
+    // Without the map passing the wait on, the worker would ask as soon as its script came, a second after.
+    const asked = askedAgainAfter429(limited, `${limited}: the map's request, then the worker's`);
     assertAskedBeforeScript(`${limited}, by the map,`, asked[0]);
-    // Both times are the server's. Without the map passing the wait on, the worker would ask as
-    // soon as its script came, a second after.
-    const waited = asked[1]!.start - asked[0]!.end;
-    assert.ok(waited >= 2000, `asked again ${waited} ms after the 429`);
     await assertMatchesSlicer(p, view, 0, 'at the floor, one floor chunk asked for twice');
   });
 
@@ -702,11 +709,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     const errorsSeen = await recordErrors(p);
     await goTo(p, target, z);
     assert.equal(await waitIdle(p.page), true);
-    const asked = chunkRequests().filter((r) => fileOf(r) === limited.file);
-    assert.deepEqual(asked.map((r) => r.outcome), [429, 200]);
-    // Both times are the server's; the answer's way to the browser only makes the gap longer.
-    const waited = asked[1]!.start - asked[0]!.end;
-    assert.ok(waited >= 2000, `asked again ${waited} ms after the 429`);
+    askedAgainAfter429(limited.file, `${limited.file}: refused, then asked again`);
     assert.deepEqual(await errorsSeen(), [], 'nothing for the page to hear of');
     await assertMatchesSlicer(p, target, z, 'after the 429');
   });
