@@ -155,7 +155,7 @@ export function encodeChunk(c: ChunkInput): Uint8Array {
     zOf[k] = z;
   }
   const { pieces, ringed } = findRingPieces({ indices: c.indices, pointOf: gridPoint, zOf, upper: c.upper, lower: c.lower, xs, ys });
-  // Each face's class, checked to be one wherever the face is named.
+  // Each face's class, checked here (once) to be one wherever the face is named.
   const named = new FaceTable();
   for (let k = 0; k < V; k++) {
     named.add(c.upper[k]!, c.upperClass[k]!);
@@ -183,8 +183,8 @@ export function encodeChunk(c: ChunkInput): Uint8Array {
   kept.forEach((v, k) => {
     pointOf[k] = points.add(gridPoint[v]!);
     zIndexOf[k] = zs.add(zOf[v]!);
-    faceOf[2 * k] = faces.add(c.upper[v]!, c.upperClass[v]!);
-    faceOf[2 * k + 1] = faces.add(c.lower[v]!, c.lowerClass[v]!);
+    faceOf[2 * k] = faces.add(c.upper[v]!, named.classOf(c.upper[v]!));
+    faceOf[2 * k + 1] = faces.add(c.lower[v]!, named.classOf(c.lower[v]!));
   });
   const F = faces.ids.values.length, P = points.values.length, Z = zs.values.length;
   const size = tableIndexSizeFor(F);
