@@ -2,12 +2,14 @@
 // every frame of a mouse drag (and its glide), a wheel zoom out and a flight stays inside the
 // box, and the view stops at its edge, also when the map grows; setMinScale and setMaxScale bring the view within them
 // at once and hold the wheel there; by default the map zooms out to four times the scale at which it
-// opened showing the whole extent (and in to a quarter of the base scale).
+// opened showing the whole extent (and in to a quarter of the base scale), also when its container was resized
+// just before the cube's metadata came.
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import type { Page } from 'playwright-core';
 import { useTestBed } from './helpers/test-bed.js';
-import { camera, openDemo, record, recorded, resolution, settle, type VarioApi, type VarioWindow } from './helpers/vario-page.js';
+import { openMap } from './helpers/browser.js';
+import { camera, idle, openDemo, record, recorded, resolution, settle, type VarioApi, type VarioWindow } from './helpers/vario-page.js';
 
 type Bbox = [number, number, number, number];
 
@@ -91,6 +93,49 @@ describe('map limits (bgt_otterlo_400m)', () => {
     await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.setMaxBounds(null));
     await page.evaluate(() => (globalThis as unknown as LimitsWindow).map.jumpTo({ centerProjected: [0, 0] }));
     assert.deepEqual((await camera(page)).x, 0, 'without maxBounds the view goes anywhere');
+  });
+
+  test('a container resized before the cube\'s metadata arrive, with its ResizeObserver not yet run, opens fitting its new size', async () => {
+    // Every ResizeObserver callback of the page is held back until the test lets it run.
+    const initScript = `(() => {
+      const held = [];
+      window.releaseResizes = () => { for (const f of held.splice(0)) f(); };
+      const Native = window.ResizeObserver;
+      window.ResizeObserver = class {
+        constructor(cb) { this.inner = new Native((...args) => held.push(() => cb(...args))); }
+        observe(t, o) { this.inner.observe(t, o); }
+        unobserve(t) { this.inner.unobserve(t); }
+        disconnect() { this.inner.disconnect(); }
+      };
+    })();`;
+    let release = (): void => undefined;
+    const gate = new Promise<void>((r) => (release = r));
+    bed.page = await openMap(bed.browser, bed.server.url, { source: 'cube/', supersampling: 1, sw: 0 }, {
+      page: 'demo.html',
+      initScript,
+      onPage: (p) => void p.route('**/cube/index.json', async (route) => {
+        await gate;
+        await route.continue();
+      }),
+    });
+    const page = bed.page.page;
+    // 640 px wide when the map was made, 400 px when its metadata come.
+    await page.evaluate(() => {
+      (globalThis as unknown as { document: { getElementById(id: string): { style: { right: string } } } }).document.getElementById('map').style.right = '240px';
+    });
+    release();
+    await idle(page);
+    const opened = await page.evaluate(() => {
+      const m = (globalThis as unknown as LimitsWindow).map;
+      const r = (m.getContainer() as { getBoundingClientRect(): { width: number; height: number } }).getBoundingClientRect();
+      return { scale: m.getScaleDenominator(), maxScale: m.getMaxScale(), width: r.width, height: r.height };
+    });
+    assert.equal(opened.width, 400);
+    const [ex0, ey0, ex1, ey1] = bed.contents.meta.extent;
+    const fit = (Math.max((ex1 - ex0) / opened.width, (ey1 - ey0) / opened.height) * 1000) / bed.contents.meta.pixelSizeMm;
+    assert.ok(Math.abs(opened.scale / fit - 1) < 1e-9, `opened at 1:${opened.scale}, the extent fits ${opened.width} x ${opened.height} px at 1:${fit}`);
+    assert.ok(Math.abs(opened.maxScale / (4 * fit) - 1) < 1e-9, `zooms out to 1:${opened.maxScale}, four times the extent's fit 1:${fit}`);
+    await page.evaluate(() => (globalThis as unknown as { releaseResizes(): void }).releaseResizes());
   });
 
   test('setMinScale and setMaxScale bring the view within them at once and hold the wheel there', async () => {

@@ -171,6 +171,9 @@ export class MapEngine extends Evented<EngineEvents> {
 
   /** The cube is known: the view fits it, and VarioMap then shows what its options ask for. */
   private takeMeta(meta: CubeMeta): void {
+    // The container may have been resized (or shown) since the ResizeObserver last ran: the
+    // first fit, and the limits taken from it, need the size it has now.
+    this.canvas.measure();
     const g = this.canvas.deviceSize();
     this.view.setMeta(meta, () => this.view.fitCamera(meta.extent, g.width, g.height, this.canvas.deviceRatio()));
     this.style = meta.style;
