@@ -5,8 +5,9 @@ export type CorsOrigins = '*' | readonly string[];
 export const ALLOWED_METHODS = 'GET, HEAD';
 // Headers a map client may set itself; the rest of a fetch's headers are safelisted anyway.
 export const ALLOWED_REQUEST_HEADERS = 'Range, If-Range, If-None-Match, If-Modified-Since';
-// Readable by the page only when exposed: the client checks ETags and ranges.
-export const EXPOSED_HEADERS = 'ETag, Content-Length, Content-Range, Accept-Ranges';
+// Readable by the page only when exposed: the client checks ETags and ranges, and waits as long as
+// a retried answer (5xx, 408, 429) asks (Retry-After), as from a CDN that limits its rate.
+export const EXPOSED_HEADERS = 'ETag, Content-Length, Content-Range, Accept-Ranges, Retry-After';
 export const PREFLIGHT_MAX_AGE_S = '86400';
 
 export class CorsConfigError extends Error {

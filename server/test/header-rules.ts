@@ -276,7 +276,7 @@ export function describeHeaderRules(target: () => Target, fixture: () => Fixture
     assert.equal((await get('/index.json')).status, 200);
   });
 
-  it('lets an allowed origin read files, their ETag and ranges cross-origin', async () => {
+  it('lets an allowed origin read files, their ETag, ranges and Retry-After cross-origin', async () => {
     const checks: [string, Record<string, string>, number][] = [
       ['/index.json', {}, 200],
       ['/' + CHUNK, { range: 'bytes=0-9' }, 206],
@@ -288,7 +288,7 @@ export function describeHeaderRules(target: () => Target, fixture: () => Fixture
       assert.equal(r.headers['access-control-allow-origin'], CORS_ORIGIN, path);
       if (status !== 404) {
         const exposed = tokens(r.headers['access-control-expose-headers']);
-        for (const name of ['etag', 'content-length', 'content-range']) assert.ok(exposed.includes(name), `${path}: exposes ${name}`);
+        for (const name of ['etag', 'content-length', 'content-range', 'retry-after']) assert.ok(exposed.includes(name), `${path}: exposes ${name}`);
       }
       assert.ok(tokens(r.headers.vary).includes('origin'), `${path}: Vary: Origin`);
     }
