@@ -107,7 +107,7 @@ export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}
   const { surfaces, stats, tgap: cubeTgap } = buildSurfaces(t, { smooth, snapStep: 2 ** coarsest });
   const { faces } = cubeTgap;
   lap('surfaces');
-  log(`surfaces: ${surfaces.count} triangles (floor ${stats.floor}, merges ${stats.merge}, splits ${stats.split}, simplification ${stats.simplify}, redrawn ${stats.reemit})${smooth ? `, ${stats.tiltedMerges} merges and ${stats.tiltedRemovals} removals tilted, ${stats.heldMerges} merges held back (given to them: ${stats.mergesToHeld} losers, ${stats.piecesToHeld} pieces of areas, ${stats.splitPartsToHeld} split parts, ${stats.removalsToHeld} removals; ${stats.splitFollows} handed on by splits), ${stats.apexes} apexes, ${stats.skippedRemovals} removals left out (slivers handed back; ${stats.notchFallbacks} faces drawn without their notches)` : ''}`);
+  log(`surfaces: ${surfaces.count} triangles (floor ${stats.floor}, merges ${stats.merge}, splits ${stats.split}, simplification ${stats.simplify}, redrawn ${stats.reemit})${smooth ? `, ${stats.tiltedMerges} merges and ${stats.tiltedRemovals} removals tilted, ${stats.heldMerges} merges held back (given to them: ${stats.mergesToHeld} losers, ${stats.piecesToHeld} pieces of areas, ${stats.splitPartsToHeld} split parts, ${stats.removalsToHeld} removals; ${stats.splitFollows} handed on by splits), ${stats.apexes} apexes, ${stats.skippedRemovals} removals left out (slivers handed back; ${stats.notchFallbacks} faces drawn without their notches; ${stats.sliversHandedOn} handed on when their giver was drawn again)` : ''}`);
   const info = scaleInfoOf(t);
   const view = {
     extent: t.meta.extent,

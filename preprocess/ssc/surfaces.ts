@@ -169,6 +169,8 @@ export interface SurfaceStats extends TriangulateStats {
   skippedRemovals: number;
   /** Faces triangulated without their slivers' notches, which no longer fit. */
   notchFallbacks: number;
+  /** Slivers left out that their giver no longer shows when it is drawn again: drawn for the face that holds them then. */
+  sliversHandedOn: number;
   /** Parts of splits given to a face held back in their receiving face, which shows beside them. */
   splitPartsToHeld: number;
   /** Pieces of a loser's (or split part's) area that the winner lay beside nowhere, given to a face held back in it. */
@@ -199,6 +201,13 @@ export interface SurfaceOrigin {
   into: number;
   first: number;
   end: number;
+}
+
+/** A removal left out (givesBack): its triangle, the vertex removed, and the face it would have gone to. */
+interface Sliver {
+  tri: number[];
+  v: number;
+  face: number;
 }
 
 export interface SurfaceOptions {
@@ -345,7 +354,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   const zTop = steps + 1;
   const out = new Surfaces(t.xs, t.ys);
   const snapStep = opts.snapStep ?? 0;
-  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0, heldMerges: 0, skippedRemovals: 0, notchFallbacks: 0, splitPartsToHeld: 0, splitFollows: 0, piecesToHeld: 0, removalsToHeld: 0, mergesToHeld: 0, apexes: 0 };
+  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0, heldMerges: 0, skippedRemovals: 0, notchFallbacks: 0, sliversHandedOn: 0, splitPartsToHeld: 0, splitFollows: 0, piecesToHeld: 0, removalsToHeld: 0, mergesToHeld: 0, apexes: 0 };
   const { xs, ys, faces, edges } = t;
   // Edges by the state they start and end in.
   const born: number[][] = Array.from({ length: steps + 2 }, () => []);
@@ -751,11 +760,14 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
    * older surface in the losing face's area. A re-emit of the upper face does not hold it: the
    * triangle names the new id before it (the same face).
    */
-  const smoothRemovalStart = (byFace: SurfacesByFace, tri: number[], lower: number, edge: number, side: Side, z: number): number => {
+  const smoothRemovalStart = (byFace: SurfacesByFace, tri: number[], lower: number, edge: number | null, side: Side, z: number): number => {
     const zCap = reachBack(z);
     let start = footOf(z);
-    const times = sides.parentTimes(edge, side, false);
-    for (const w of tri) start = Math.max(start, (times.get(w) ?? z) + SURFACE_GAP);
+    // After the removals before it on the same line (none for a sliver handed on, edge null).
+    if (edge !== null) {
+      const times = sides.parentTimes(edge, side, false);
+      for (const w of tri) start = Math.max(start, (times.get(w) ?? z) + SURFACE_GAP);
+    }
     // Above the older surfaces it overlaps in the losing face's area.
     for (const w of byFace.lowestZ(lower, tri, start, SURFACE_GAP, zCap).values()) start = Math.max(start, w);
     return Math.min(start, z);
@@ -802,7 +814,24 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
    * is still there: a re-emit of the face draws them again under its new id, as it draws the
    * rest of its area (the tGAP's area no longer holds them).
    */
-  const slivers = new Map<number, { tri: number[]; v: number; face: number }[]>();
+  const slivers = new Map<number, Sliver[]>();
+  /**
+   * Whether (x, y) lies in face f as its edges bound it now (even-odd over their segments; an
+   * edge with f on both sides bounds nothing).
+   */
+  const insideFace = (f: number, x: number, y: number, k: number): boolean => {
+    let inside = false;
+    for (const e of faceEdges.get(f) ?? []) {
+      const edge = edges[e]!;
+      if (resolveFace(faces, edge.left, k) === resolveFace(faces, edge.right, k)) continue;
+      const verts = edge.verts;
+      for (let i = 0; i + 1 < verts.length; i++) {
+        const ax = xs[verts[i]!]!, ay = ys[verts[i]!]!, bx = xs[verts[i + 1]!]!, by = ys[verts[i + 1]!]!;
+        if (ay > y !== by > y && x < ax + ((y - ay) * (bx - ax)) / (by - ay)) inside = !inside;
+      }
+    }
+    return inside;
+  };
   /** Whether a and b follow each other on one of face f's edges (a sliver's chord is still its boundary). */
   const onBoundary = (f: number, a: number, b: number): boolean => {
     for (const e of faceEdges.get(f) ?? []) {
@@ -1215,16 +1244,34 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       stats.reemit += emitFace(g, k, phaseZ(k, REEMIT_PHASE), g, f);
       // Those of its slivers whose tGAP face is still there, the chord still its boundary (no later
       // removal has handed part of the sliver on to a third face), move on with it.
-      const kept = (slivers.get(f) ?? []).filter((sl) => {
+      const kept: Sliver[] = [], dropped: Sliver[] = [];
+      for (const sl of slivers.get(f) ?? []) {
         const [a, b] = sl.tri.filter((w) => w !== sl.v);
-        return faces[sl.face]!.stepHigh > k && onBoundary(sl.face, a!, b!);
-      });
+        (faces[sl.face]!.stepHigh > k && onBoundary(sl.face, a!, b!) ? kept : dropped).push(sl);
+      }
       slivers.delete(f);
       if (kept.length > 0) slivers.set(g, kept);
       for (const { tri } of kept) out.add(tri[0]!, tri[1]!, tri[2]!, phaseZ(k, REEMIT_PHASE), g, f);
       origin('reemit', k, f, g, first);
-      byFace?.drop(f);
       lieIn(g, first);
+      // The others showed f, which ends here; the re-emit does not cover them, as the tGAP gave
+      // them away. Each goes, as a removal would have, to the face that holds its centre now (its
+      // winner, or what the winner became), unless that is f's own successor: else f's floor
+      // would show through, a face that has ended, or nothing where its chunk is not fetched.
+      for (const sl of dropped) {
+        const owner = resolveFace(faces, sl.face, k);
+        const [cx, cy] = out.centre(sl.tri[0]!, sl.tri[1]!, sl.tri[2]!);
+        if (owner <= 0 || owner === f || owner === g || !insideFace(owner, cx, cy, k)) continue;
+        const at = out.count, z = phaseZ(k, REEMIT_PHASE) - SURFACE_GAP;
+        const zCorner = byFace ? smoothRemovalStart(byFace, sl.tri, f, null, Side.Left, z) : z;
+        const zOf = (w: number): number => (w === sl.v ? zCorner : z);
+        if (zCorner < z) out.addTilted(sl.tri[0]!, sl.tri[1]!, sl.tri[2]!, zOf(sl.tri[0]!), zOf(sl.tri[1]!), zOf(sl.tri[2]!), owner, f, `s${at}`);
+        else out.add(sl.tri[0]!, sl.tri[1]!, sl.tri[2]!, z, owner, f);
+        origin('simplify', k, f, owner, at);
+        lieIn(owner, at);
+        stats.sliversHandedOn++;
+      }
+      byFace?.drop(f);
     }
   }
   // Every hold ends at a step of its line (returnOnLine): none is left uncarried.
