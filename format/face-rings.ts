@@ -267,8 +267,12 @@ function bboxOf(r: number[], xs: ArrayLike<number>, ys: ArrayLike<number>): numb
 function pointInRing(r: number[], xs: ArrayLike<number>, ys: ArrayLike<number>, x: number, y: number): boolean {
   let inside = false;
   for (let i = 0, j = r.length - 1; i < r.length; j = i++) {
-    const xi = xs[r[i]!]!, yi = ys[r[i]!]!, xj = xs[r[j]!]!, yj = ys[r[j]!]!;
-    if (yi > y !== yj > y && x < ((xj - xi) * (y - yi)) / (yj - yi) + xi) inside = !inside;
+    if (crossesRightOf(xs[r[i]!]!, ys[r[i]!]!, xs[r[j]!]!, ys[r[j]!]!, x, y)) inside = !inside;
   }
   return inside;
+}
+
+/** Whether the segment (xi, yi)-(xj, yj) crosses the ray from (x, y) towards +x: even-odd point in polygon, one side at a time. */
+export function crossesRightOf(xi: number, yi: number, xj: number, yj: number, x: number, y: number): boolean {
+  return yi > y !== yj > y && x < ((xj - xi) * (y - yi)) / (yj - yi) + xi;
 }

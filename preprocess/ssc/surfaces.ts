@@ -15,6 +15,7 @@
 import { snapNewVertices } from '../geom/snap-new-vertices.js';
 import { planeDeficit } from '../geom/plane-deficit.js';
 import { orient } from '../geom/predicates.js';
+import { crossesRightOf } from '../../format/face-rings.js';
 import { scaleAtZ, zAtScale, type ScaleInfo } from '../../format/scale.js';
 import { EventKind, faceEndZ, faceStartZ, LAST_REMOVAL_PHASE, phaseZ, REEMIT_PHASE, replacedFaces, resolveFace, resolveFaceAt, scaleInfoOf, type Tgap, type TgapEvent } from '../../format/tgap-model.js';
 import { smoothMergeZ } from './smooth-merge.js';
@@ -169,8 +170,10 @@ export interface SurfaceStats extends TriangulateStats {
   skippedRemovals: number;
   /** Faces triangulated without their slivers' notches, which no longer fit. */
   notchFallbacks: number;
-  /** Slivers left out that their giver no longer shows when it is drawn again: drawn for the face that holds them then. */
+  /** Slivers left out (givesBack) that a re-emit of their giver does not take along: drawn for the face that holds them then. */
   sliversHandedOn: number;
+  /** The same slivers that neither such a face nor the giver's new id holds whole: they go on showing the giver. */
+  sliversLeftShowing: number;
   /** Parts of splits given to a face held back in their receiving face, which shows beside them. */
   splitPartsToHeld: number;
   /** Pieces of a loser's (or split part's) area that the winner lay beside nowhere, given to a face held back in it. */
@@ -354,7 +357,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
   const zTop = steps + 1;
   const out = new Surfaces(t.xs, t.ys);
   const snapStep = opts.snapStep ?? 0;
-  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0, heldMerges: 0, skippedRemovals: 0, notchFallbacks: 0, sliversHandedOn: 0, splitPartsToHeld: 0, splitFollows: 0, piecesToHeld: 0, removalsToHeld: 0, mergesToHeld: 0, apexes: 0 };
+  const stats: SurfaceStats = { earcut: 0, fallback: 0, failed: 0, floor: 0, merge: 0, split: 0, simplify: 0, reemit: 0, tiltedMerges: 0, tiltedRemovals: 0, tiltedSplits: 0, chordSplits: 0, heldMerges: 0, skippedRemovals: 0, notchFallbacks: 0, sliversHandedOn: 0, sliversLeftShowing: 0, splitPartsToHeld: 0, splitFollows: 0, piecesToHeld: 0, removalsToHeld: 0, mergesToHeld: 0, apexes: 0 };
   const { xs, ys, faces, edges } = t;
   // Edges by the state they start and end in.
   const born: number[][] = Array.from({ length: steps + 2 }, () => []);
@@ -760,17 +763,31 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
    * older surface in the losing face's area. A re-emit of the upper face does not hold it: the
    * triangle names the new id before it (the same face).
    */
-  const smoothRemovalStart = (byFace: SurfacesByFace, tri: number[], lower: number, edge: number | null, side: Side, z: number): number => {
+  const smoothRemovalStart = (byFace: SurfacesByFace, tri: number[], lower: number, z: number, line?: { edge: number; side: Side }): number => {
     const zCap = reachBack(z);
     let start = footOf(z);
-    // After the removals before it on the same line (none for a sliver handed on, edge null).
-    if (edge !== null) {
-      const times = sides.parentTimes(edge, side, false);
+    // After the removals before it on its line (a sliver handed on has none).
+    if (line) {
+      const times = sides.parentTimes(line.edge, line.side, false);
       for (const w of tri) start = Math.max(start, (times.get(w) ?? z) + SURFACE_GAP);
     }
     // Above the older surfaces it overlaps in the losing face's area.
     for (const w of byFace.lowestZ(lower, tri, start, SURFACE_GAP, zCap).values()) start = Math.max(start, w);
     return Math.min(start, z);
+  };
+  /**
+   * Points that say where a sliver (a removal's triangle, corner v) lies: its centre, the corner,
+   * the middles of its sides at v, and just inside the middle of the chord, where a triangle on
+   * the chord may hold only a thin strip of it. Flat [x, y, ...].
+   */
+  const sliverProbes = (tri: readonly number[], v: number): number[] => {
+    const [a, b] = tri.filter((w) => w !== v) as [number, number];
+    const mx = (xs[a]! + xs[b]!) / 2, my = (ys[a]! + ys[b]!) / 2;
+    return [
+      (xs[a]! + xs[b]! + xs[v]!) / 3, (ys[a]! + ys[b]! + ys[v]!) / 3, xs[v]!, ys[v]!,
+      (xs[a]! + xs[v]!) / 2, (ys[a]! + ys[v]!) / 2, (xs[b]! + xs[v]!) / 2, (ys[b]! + ys[v]!) / 2,
+      mx + (xs[v]! - mx) * 1e-6, my + (ys[v]! - my) * 1e-6,
+    ];
   };
   /**
    * A removal that hands `lower`'s triangle to `upper` at z, when `upper` then merges into
@@ -788,18 +805,11 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       return false;
     };
     if (f.mergedInto > 0) return isLower(f.mergedInto);
-    // A split: the sliver (its centre, the corner and the middles of its sides at v) lies in
-    // the split's triangles that go to `lower`, so that its part can leave the sliver out.
+    // A split: the sliver (sliverProbes) lies in the split's triangles that go to `lower`, so
+    // that its part can leave the sliver out.
     const split = splitOf.get(upper);
     if (!split) return false;
-    const [a, b] = tri.filter((w) => w !== v) as [number, number];
-    // And just inside the middle of the chord, where a split triangle on the chord holds only a thin strip of it.
-    const mx = (xs[a]! + xs[b]!) / 2, my = (ys[a]! + ys[b]!) / 2;
-    const probes = [
-      (xs[a]! + xs[b]! + xs[v]!) / 3, (ys[a]! + ys[b]! + ys[v]!) / 3, xs[v]!, ys[v]!,
-      (xs[a]! + xs[v]!) / 2, (ys[a]! + ys[v]!) / 2, (xs[b]! + xs[v]!) / 2, (ys[b]! + ys[v]!) / 2,
-      mx + (xs[v]! - mx) * 1e-6, my + (ys[v]! - my) * 1e-6,
-    ];
+    const probes = sliverProbes(tri, v);
     const tv = split.tris!, tf = split.triFaces!;
     const toLower: number[] = [], toOthers: number[] = [];
     for (let i = 0; i < tf.length; i++) (isLower(tf[i]!) ? toLower : toOthers).push(tv[3 * i]!, tv[3 * i + 1]!, tv[3 * i + 2]!);
@@ -826,8 +836,7 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       if (resolveFace(faces, edge.left, k) === resolveFace(faces, edge.right, k)) continue;
       const verts = edge.verts;
       for (let i = 0; i + 1 < verts.length; i++) {
-        const ax = xs[verts[i]!]!, ay = ys[verts[i]!]!, bx = xs[verts[i + 1]!]!, by = ys[verts[i + 1]!]!;
-        if (ay > y !== by > y && x < ax + ((y - ay) * (bx - ax)) / (by - ay)) inside = !inside;
+        if (crossesRightOf(xs[verts[i]!]!, ys[verts[i]!]!, xs[verts[i + 1]!]!, ys[verts[i + 1]!]!, x, y)) inside = !inside;
       }
     }
     return inside;
@@ -955,6 +964,18 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       if (h) found.add(h);
     }
     return found.size === 1 ? [...found][0] : undefined;
+  };
+  /**
+   * The face a removal's triangle (corner v) going to `upper` shows: beside a face held back in
+   * `upper` (across the triangle's two sides at v, outside it: on the right of its
+   * counterclockwise edges), the corner goes to that face, whose area then holds the triangle.
+   */
+  const removalShownAs = (upper: number, tri: number[], v: number): number => {
+    const h = byFace && heldBeside(upper, [0, 1, 2].flatMap((j) => (tri[j] === v || tri[(j + 1) % 3] === v ? [tri[j]!, tri[(j + 1) % 3]!] : [])), -1);
+    if (!h) return upper;
+    h.area.add(tri, xs, ys);
+    stats.removalsToHeld++;
+    return h.face;
   };
   /**
    * The face held back in `into` that shows along all of a loser's (or a split's part's)
@@ -1210,17 +1231,10 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         return;
       }
       let zCorner = z, zChord = z;
-      // Beside a face held back in `upper` (across the triangle's two sides at v, outside it: on
-      // the right of its counterclockwise edges), the corner goes to that face.
-      const h = byFace && heldBeside(upper, [0, 1, 2].flatMap((j) => (tri[j] === v || tri[(j + 1) % 3] === v ? [tri[j]!, tri[(j + 1) % 3]!] : [])), -1);
-      const shownAs = h ? h.face : upper;
+      const shownAs = removalShownAs(upper, tri, v);
       if (byFace) {
-        zCorner = smoothRemovalStart(byFace, tri, lower, edge, side, z);
+        zCorner = smoothRemovalStart(byFace, tri, lower, z, { edge, side });
         zChord = zCorner + (z - zCorner) / (heights[r]! + 1);
-      }
-      if (h) {
-        h.area.add(tri, xs, ys);
-        stats.removalsToHeld++;
       }
       if (zCorner < zChord) {
         out.addTilted(tri[0]!, tri[1]!, tri[2]!, tri[0] === v ? zCorner : zChord, tri[1] === v ? zCorner : zChord, tri[2] === v ? zCorner : zChord, shownAs, lower, `s${out.count}`);
@@ -1254,20 +1268,30 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       for (const { tri } of kept) out.add(tri[0]!, tri[1]!, tri[2]!, phaseZ(k, REEMIT_PHASE), g, f);
       origin('reemit', k, f, g, first);
       lieIn(g, first);
-      // The others showed f, which ends here; the re-emit does not cover them, as the tGAP gave
-      // them away. Each goes, as a removal would have, to the face that holds its centre now (its
-      // winner, or what the winner became), unless that is f's own successor: else f's floor
-      // would show through, a face that has ended, or nothing where its chunk is not fetched.
+      // The others showed f, which ends here, and its new id does not cover them (the tGAP gave
+      // them away): each goes, as its removal would have, to its winner or what the winner has
+      // become, where that face holds it now (every one of sliverProbes) and is not new at this
+      // step (its own re-emit covers it). Else f's older surfaces would go on showing f there,
+      // or nothing where the map does not fetch their chunk. The rest stay as they were.
+      const z = phaseZ(k, REEMIT_PHASE) - SURFACE_GAP;
       for (const sl of dropped) {
         const owner = resolveFace(faces, sl.face, k);
-        const [cx, cy] = out.centre(sl.tri[0]!, sl.tri[1]!, sl.tri[2]!);
-        if (owner <= 0 || owner === f || owner === g || !insideFace(owner, cx, cy, k)) continue;
-        const at = out.count, z = phaseZ(k, REEMIT_PHASE) - SURFACE_GAP;
-        const zCorner = byFace ? smoothRemovalStart(byFace, sl.tri, f, null, Side.Left, z) : z;
+        if (owner === g) continue; // the winner merged into f: its area is g's
+        // Each probe a hair towards the centre: the corner and the chord lie on lines of the tGAP.
+        const probes = sliverProbes(sl.tri, sl.v);
+        const holds = (face: number): boolean => [0, 2, 4, 6, 8].every((p) => insideFace(face, probes[p]! + (probes[0]! - probes[p]!) * 1e-3, probes[p + 1]! + (probes[1]! - probes[p + 1]!) * 1e-3, k));
+        if (owner <= 0 || owner === f || faces[owner]!.stepLow === k || !holds(owner)) {
+          // Where the tGAP has given it back to f meanwhile, the new id covers it.
+          if (!holds(g)) stats.sliversLeftShowing++;
+          continue;
+        }
+        const at = out.count;
+        const shownAs = removalShownAs(owner, sl.tri, sl.v);
+        const zCorner = byFace ? smoothRemovalStart(byFace, sl.tri, f, z) : z;
         const zOf = (w: number): number => (w === sl.v ? zCorner : z);
-        if (zCorner < z) out.addTilted(sl.tri[0]!, sl.tri[1]!, sl.tri[2]!, zOf(sl.tri[0]!), zOf(sl.tri[1]!), zOf(sl.tri[2]!), owner, f, `s${at}`);
-        else out.add(sl.tri[0]!, sl.tri[1]!, sl.tri[2]!, z, owner, f);
-        origin('simplify', k, f, owner, at);
+        if (zCorner < z) out.addTilted(sl.tri[0]!, sl.tri[1]!, sl.tri[2]!, zOf(sl.tri[0]!), zOf(sl.tri[1]!), zOf(sl.tri[2]!), shownAs, f, `s${at}`);
+        else out.add(sl.tri[0]!, sl.tri[1]!, sl.tri[2]!, z, shownAs, f);
+        origin('simplify', k, f, shownAs, at);
         lieIn(owner, at);
         stats.sliversHandedOn++;
       }
