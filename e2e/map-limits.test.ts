@@ -37,6 +37,23 @@ describe('map limits (bgt_otterlo_400m)', () => {
   const bed = useTestBed(['--no-precompress']);
   const px = (scale: number): number => resolution(scale, bed.contents.meta.pixelSizeMm);
 
+  /**
+   * Checks that the map, opened with no view, fits the whole extent to its container as it is,
+   * and zooms out by default to four times that scale; returns the container's width and that limit.
+   */
+  async function openedAtExtentFit(page: Page): Promise<{ width: number; maxScale: number }> {
+    const opened = await page.evaluate(() => {
+      const m = (globalThis as unknown as LimitsWindow).map;
+      const r = (m.getContainer() as { getBoundingClientRect(): { width: number; height: number } }).getBoundingClientRect();
+      return { scale: m.getScaleDenominator(), maxScale: m.getMaxScale(), width: r.width, height: r.height };
+    });
+    const [ex0, ey0, ex1, ey1] = bed.contents.meta.extent;
+    const fit = (Math.max((ex1 - ex0) / opened.width, (ey1 - ey0) / opened.height) * 1000) / bed.contents.meta.pixelSizeMm;
+    assert.ok(Math.abs(opened.scale / fit - 1) < 1e-9, `opened at 1:${opened.scale}, the extent fits ${opened.width} x ${opened.height} px at 1:${fit}`);
+    assert.ok(Math.abs(opened.maxScale / (4 * fit) - 1) < 1e-9, `zooms out to 1:${opened.maxScale}, four times the extent's fit 1:${fit}`);
+    return { width: opened.width, maxScale: opened.maxScale };
+  }
+
   /** The demo at 1:3000 with maxBounds 1200 x 900 CSS px of that scale around the centre. */
   async function boxed(): Promise<{ page: Page; box: Bbox }> {
     bed.page = await openDemo(bed.browser, bed.server.url);
@@ -125,32 +142,14 @@ describe('map limits (bgt_otterlo_400m)', () => {
     });
     release();
     await idle(page);
-    const opened = await page.evaluate(() => {
-      const m = (globalThis as unknown as LimitsWindow).map;
-      const r = (m.getContainer() as { getBoundingClientRect(): { width: number; height: number } }).getBoundingClientRect();
-      return { scale: m.getScaleDenominator(), maxScale: m.getMaxScale(), width: r.width, height: r.height };
-    });
-    assert.equal(opened.width, 400);
-    const [ex0, ey0, ex1, ey1] = bed.contents.meta.extent;
-    const fit = (Math.max((ex1 - ex0) / opened.width, (ey1 - ey0) / opened.height) * 1000) / bed.contents.meta.pixelSizeMm;
-    assert.ok(Math.abs(opened.scale / fit - 1) < 1e-9, `opened at 1:${opened.scale}, the extent fits ${opened.width} x ${opened.height} px at 1:${fit}`);
-    assert.ok(Math.abs(opened.maxScale / (4 * fit) - 1) < 1e-9, `zooms out to 1:${opened.maxScale}, four times the extent's fit 1:${fit}`);
+    assert.equal((await openedAtExtentFit(page)).width, 400);
     await page.evaluate(() => (globalThis as unknown as { releaseResizes(): void }).releaseResizes());
   });
 
   test('setMinScale and setMaxScale bring the view within them at once and hold the wheel there', async () => {
     bed.page = await openDemo(bed.browser, bed.server.url);
     const page = bed.page.page;
-    // Opened with no view, the map fits the whole extent; by default it zooms out to four times that.
-    const opened = await page.evaluate(() => {
-      const m = (globalThis as unknown as LimitsWindow).map;
-      const r = (m.getContainer() as { getBoundingClientRect(): { width: number; height: number } }).getBoundingClientRect();
-      return { scale: m.getScaleDenominator(), maxScale: m.getMaxScale(), width: r.width, height: r.height };
-    });
-    const [ex0, ey0, ex1, ey1] = bed.contents.meta.extent;
-    const fit = (Math.max((ex1 - ex0) / opened.width, (ey1 - ey0) / opened.height) * 1000) / bed.contents.meta.pixelSizeMm;
-    assert.ok(Math.abs(opened.scale / fit - 1) < 1e-9, `opened at 1:${opened.scale}, the extent fits ${opened.width} x ${opened.height} px at 1:${fit}`);
-    assert.ok(Math.abs(opened.maxScale / (4 * fit) - 1) < 1e-9, `zooms out to 1:${opened.maxScale}, four times the extent's fit 1:${fit}`);
+    const opened = await openedAtExtentFit(page);
     await page.evaluate(() => (globalThis as unknown as VarioWindow).map.jumpTo({ scaleDenominator: 3000 }));
     await record(page);
     const scale = await page.evaluate(() => {
