@@ -75,7 +75,9 @@ export function createRequestHandler(config: HandlerConfig): (req: IncomingMessa
   return (req, res) => {
     handle(config, req, res).catch((err: unknown) => {
       config.onError(err);
-      if (!res.headersSent) sendText(req, res, 500, { 'x-content-type-options': 'nosniff' });
+      // With the CORS headers: a map on another origin then reads the 500 and retries, where
+      // without them it saw an opaque network failure.
+      if (!res.headersSent) sendText(req, res, 500, baseHeaders(config, req));
       else res.destroy();
     });
   };

@@ -1,7 +1,15 @@
 // CORS settings of our server beyond the shared rules: any origin, no CORS at all, and
-// origins that are refused at start because they cannot be origins.
+// origins that are refused at start because they cannot be origins; and the handler's own 500.
 import assert from 'node:assert/strict';
 import { after, before, describe, it, test } from 'node:test';
+import { createServer, type Server } from 'node:http';
+import type { AddressInfo } from 'node:net';
+import { CachePolicy } from '../cache-control.js';
+import { ContentCache } from '../content-cache.js';
+import { CorsPolicy } from '../cors.js';
+import { LookupCache } from '../lookup-cache.js';
+import { createRequestHandler } from '../request-handler.js';
+import type { Resolved } from '../resolve-file.js';
 import { createStaticServer } from '../static-server.js';
 import { makeFixture, type Fixture } from './fixture.js';
 import { request } from './http-client.js';
@@ -82,4 +90,45 @@ test('an origin with a path, a query or no scheme is refused at start', () => {
   for (const bad of ['https://a.example/app', 'https://a.example?x=1', 'a.example', 'null', 'https://user@a.example']) {
     assert.throws(() => createStaticServer({ root: fx.root, cors: [bad] }), /not an origin/, bad);
   }
+});
+
+describe('an unexpected failure', () => {
+  // A lookup that fails as a broken disk would: the handler's own 500, not a file's answer.
+  class FailingLookups extends LookupCache {
+    override resolve(): Promise<Resolved> {
+      return Promise.reject(new Error('disk failed'));
+    }
+  }
+  let server: Server;
+  let base: string;
+  const errors: unknown[] = [];
+  before(async () => {
+    const handler = createRequestHandler({
+      cors: new CorsPolicy(['https://a.example']),
+      cachePolicy: new CachePolicy(),
+      contents: new ContentCache(1 << 20, 1 << 16),
+      lookups: new FailingLookups(fx.root),
+      onError: (err) => errors.push(err),
+    });
+    server = createServer(handler);
+    await new Promise<void>((resolve) => server.listen(0, '127.0.0.1', resolve));
+    base = `http://127.0.0.1:${(server.address() as AddressInfo).port}`;
+  });
+  after(() => new Promise<void>((resolve) => server.close(() => resolve())));
+
+  it('answers 500 with the CORS headers, so a map on an allowed origin reads the status (and its Retry-After) and retries', async () => {
+    const r = await request(base, '/index.json', { headers: { origin: 'https://a.example' } });
+    assert.equal(r.status, 500);
+    assert.equal(r.headers['access-control-allow-origin'], 'https://a.example');
+    assert.ok(tokens(r.headers['access-control-expose-headers']).includes('retry-after'));
+    assert.ok(tokens(r.headers.vary).includes('origin'));
+    assert.equal(r.headers['x-content-type-options'], 'nosniff');
+    assert.match((errors[0] as Error).message, /disk failed/);
+  });
+
+  it('grants no other origin', async () => {
+    const r = await request(base, '/index.json', { headers: { origin: 'https://b.example' } });
+    assert.equal(r.status, 500);
+    assert.equal(r.headers['access-control-allow-origin'], undefined);
+  });
 });
