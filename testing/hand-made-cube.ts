@@ -90,9 +90,10 @@ export interface HandMadeCube {
  * A cube whose index.json lists these chunks directly under its root, and `floor.chunks` as
  * floor chunks below `floor.top` (docs/FORMAT.md, "Floor chunks"). With `subIndex`, the root
  * refers to a sub-index file of that name, which lists the chunks, as the build writes a cube
- * with floor chunks.
+ * with floor chunks; with `floor.subIndex`, the floor's root likewise (a floor too large for
+ * index.json).
  */
-export function handMadeCube(chunks: ChunkSpec[], floor?: { top: number; chunks: ChunkSpec[] }, subIndex?: string): HandMadeCube {
+export function handMadeCube(chunks: ChunkSpec[], floor?: { top: number; chunks: ChunkSpec[]; subIndex?: string }, subIndex?: string): HandMadeCube {
   const files = new Map<string, Uint8Array>();
   const leaves = new Map<string, ChunkLeaf>();
   const add = (specs: ChunkSpec[]): ChunkLeaf[] =>
@@ -105,13 +106,15 @@ export function handMadeCube(chunks: ChunkSpec[], floor?: { top: number; chunks:
     });
   const children = add(chunks);
   const floorLeaves = add(floor?.chunks ?? []);
-  const floorRoot = floor ? { top: floor.top, root: { bbox: boxAround(floorLeaves), children: floorLeaves } } : undefined;
-  let root: InnerNode = { bbox: boxAround(children), children };
-  if (subIndex) {
-    files.set(subIndex, subIndexFile(root));
-    root = { bbox: root.bbox, children: [{ bbox: root.bbox, ref: subIndex, chunks: children.length }] };
-  }
-  files.set('index.json', indexFile(root, floorRoot));
+  // A tree whose leaves move to a sub-index file of that name, when given.
+  const tree = (leaves: ChunkLeaf[], sub?: string): InnerNode => {
+    const node: InnerNode = { bbox: boxAround(leaves), children: leaves };
+    if (!sub) return node;
+    files.set(sub, subIndexFile(node));
+    return { bbox: node.bbox, children: [{ bbox: node.bbox, ref: sub, chunks: leaves.length }] };
+  };
+  const floorRoot = floor ? { top: floor.top, root: tree(floorLeaves, floor.subIndex) } : undefined;
+  files.set('index.json', indexFile(tree(children, subIndex), floorRoot));
   return { leaves, files };
 }
 

@@ -85,6 +85,8 @@ export interface CubeContents {
   /** The line chunks (none in a cube without lines). */
   lines: LineChunkLeaf[];
   subIndexFiles: string[];
+  /** Those of them in the floor's tree (a floor too large for index.json). */
+  floorSubIndexFiles: string[];
   root: InnerNode;
   subs: Map<string, InnerNode>;
 }
@@ -102,8 +104,10 @@ export async function readCube(cubeDir: string): Promise<CubeContents> {
     return q.leaves;
   };
   const leaves = await leavesOf(index.root);
+  const cubeSubs = subs.size;
   const floorLeaves = index.floor ? await leavesOf(index.floor.root) : [];
-  return { meta: index.meta, leaves, floorLeaves, floorTop: index.floor?.top ?? 0, lines: index.lines ?? [], subIndexFiles: [...subs.keys()], root: index.root, subs };
+  const subIndexFiles = [...subs.keys()];
+  return { meta: index.meta, leaves, floorLeaves, floorTop: index.floor?.top ?? 0, lines: index.lines ?? [], subIndexFiles, floorSubIndexFiles: subIndexFiles.slice(cubeSubs), root: index.root, subs };
 }
 
 /** Every triangle of a cube, x, y and z of each corner in ground coordinates, found by place. */

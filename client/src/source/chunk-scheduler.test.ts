@@ -389,6 +389,24 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
     assert.deepEqual(firstViewFiles(noFloor, first), ['c-2.bin', 'c-1.bin'], 'a cube without floor chunks: its chunks on screen, nearest first');
   });
 
+  test('a floor too large for index.json: the head start names the floor\'s sub-index file, which the scheduler asks for first too', async (t) => {
+    const floor = { top: 0.5, chunks: [0, 1, 2].map((i): ChunkSpec => ({ file: `b-${i}.bin`, bbox: [10 * i, 0, 0, 10 * i + 10, 10, 0.5] })), subIndex: 'i-floor.json' };
+    const { files } = handMadeCube(row(3), floor, 'i-cube.json');
+    const index = parseIndex(JSON.parse(new TextDecoder().decode(files.get('index.json'))));
+    const first: ViewRequest = { ...view(1, 12, 30, { centerX: 25 }), zMin: 0, zMax: 0.49 };
+    assert.deepEqual(firstViewFiles(index, first), ['i-floor.json'], 'at the floor: its sub-index file, which lists the floor chunks');
+    assert.deepEqual(firstViewFiles(index, { ...first, zMax: 0.5 }), ['i-floor.json', 'i-cube.json'], 'just above it: the interim floor\'s sub-index file, then the cube\'s');
+    assert.deepEqual(firstViewFiles(index, { ...first, zMin: 90, zMax: 90, z: 90 }), ['i-cube.json'], 'beyond twice the base scale: no floor');
+    const h = await harness(t, files, { concurrency: 1 }, undefined, true);
+    h.scheduler.setView(first);
+    await eventually(() => h.received().length === 2, 'the floor chunks on screen');
+    assert.deepEqual(h.fetched().slice(0, 3), ['i-floor.json', 'b-2.bin', 'b-1.bin'], 'the scheduler\'s first requests: the floor\'s sub-index file, then the floor chunks it lists, nearest first; the cube\'s sub-index file waits for them');
+    // The cube's sub-index file and chunks come after them, as the margin: let them end here.
+    await eventually(() => h.received().length === 4, 'the margin');
+    await settle();
+    assert.deepEqual(h.fetched().slice(3, 4), ['i-cube.json']);
+  });
+
   test('a margin of the cube\'s chunks waits for the floor chunk on screen', async (t) => {
     const h = await harness(t, cube(), { concurrency: 4 }, () => 'hold');
     h.scheduler.setView(at(1, 0));

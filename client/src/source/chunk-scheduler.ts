@@ -16,7 +16,8 @@
 //   be fetched ahead;
 // - below the floor's top the floor chunks go on screen, and the cube's chunks are the margin
 //   (floorShown): the first map at the base scale takes a fifth of the bytes. The cube's
-//   sub-index files wait, as the margin does, until the floor chunks on screen are on the GPU;
+//   sub-index files wait, as the margin does, until the floor chunks on screen are on the GPU
+//   (and, a floor too large for index.json, until its own sub-index files have come);
 // - just above the floor's top, until a view's chunks on screen have all been on the GPU once,
 //   the floor chunks on screen go first, drawn under the view meanwhile (interimFloor): a
 //   complete picture of the base scale for a fifth of the bytes, refined as the view's own come.
@@ -66,6 +67,8 @@ export class ChunkScheduler {
   private restTimer: ReturnType<typeof setTimeout> | null = null;
   /** The cube's sub-index files a view at the floor reaches: loaded once its floor chunks on screen are on the GPU (pump). */
   private marginSubs: string[] = [];
+  /** The floor's sub-index files a view at the floor reaches: until they have come (or failed), its floor chunks on screen are not all known. */
+  private floorSubs: string[] = [];
   /** The view's chunks on screen (without the interim floor); null while its list is not whole. */
   private visibleFiles: string[] | null = null;
   /** A view's chunks on screen have all been on the GPU: no interim floor from then on. */
@@ -97,6 +100,7 @@ export class ChunkScheduler {
     // with it, not to share the link with the floor chunks on screen.
     const missing = new Set(floor ? floor.missing : cube.missing);
     this.marginSubs = floor ? cube.missing : [];
+    this.floorSubs = floor ? floor.missing : [];
     const want = (leaf: Leaf, priority: number): void => {
       let e = this.entries.get(leaf.file);
       if (!e) {
@@ -224,7 +228,7 @@ export class ChunkScheduler {
 
   private pump(): void {
     const waiting: Entry[] = [];
-    let onScreenComing = false;
+    let onScreenComing = this.floorSubs.some((ref) => this.tree.isLoading(ref));
     for (const file of this.needed) {
       const e = this.entries.get(file)!;
       const toStart = e.status === 'not-requested' || e.status === 'evicted';

@@ -49,7 +49,8 @@ export function floorChoice(floor: QueryResult | null, cube: QueryResult, toFetc
  * yet and only index.json at hand: the floor chunks it shows on screen, nearest first; above the
  * floor, the sub-index files its query reaches (the build keeps the cube's tree in them when
  * there are floor chunks), after its interim floor (interimFloor) if any, then the cube's
- * chunks on screen that index.json itself lists.
+ * chunks on screen that index.json itself lists. Each floor first names the floor's sub-index
+ * files its query reaches, as the scheduler loads them too.
  */
 export function firstViewFiles(index: CubeIndex, view: ViewRequest): string[] {
   const onScreen = { ground: view.visible, zMin: view.zMin, zMax: view.zMax };
@@ -63,9 +64,13 @@ export function firstViewFiles(index: CubeIndex, view: ViewRequest): string[] {
       .map((leaf) => ({ file: leaf.file, priority: viewPriority(leaf.bbox, view.visible, view) }))
       .sort((a, b) => a.priority - b.priority)
       .map((l) => l.file);
-  if (shown) return nearestFirst(shown.leaves);
-  const interim = interimFloor(index, view, floorQuery(index, underView(view.visible), none), cube, bytesIn);
-  return [...nearestFirst(interim), ...cube.missing, ...nearestFirst(cube.leaves.filter((l) => boxMeets(l.bbox, onScreen)))];
+  // The floor's own sub-index files (a floor too large for index.json) come first: until they
+  // have, the floor chunks under them are not known.
+  if (shown) return [...shown.missing, ...nearestFirst(shown.leaves)];
+  const under = floorQuery(index, underView(view.visible), none);
+  const interim = interimFloor(index, view, under, cube, bytesIn);
+  const interimSubs = under && interimApplies(index, view) ? under.missing : [];
+  return [...interimSubs, ...nearestFirst(interim), ...cube.missing, ...nearestFirst(cube.leaves.filter((l) => boxMeets(l.bbox, onScreen)))];
 }
 
 /** The box of the floor under a view's ground: its triangles lie at z 0, under every slice. */

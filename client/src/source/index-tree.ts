@@ -39,6 +39,11 @@ export class IndexTree {
     return floorQuery(this.index, q, (ref) => this.subs.get(ref));
   }
 
+  /** A sub-index file asked for, not in yet, and not failed. */
+  isLoading(ref: string): boolean {
+    return this.loading.has(ref) && !this.subs.has(ref);
+  }
+
   /** Loads a sub-index file, unless it is loaded or loading already; resolves when it is in. */
   loadSub(ref: string): Promise<void> {
     let p = this.loading.get(ref);
