@@ -26,6 +26,7 @@ import { checkAndClose, setUpTestBed, tearDownTestBed } from './helpers/test-bed
 import { eventually } from '../testing/event-loop.js';
 import { readIds, untilOnGpu, waitIdle, type PageIds } from './helpers/map-page.js';
 import { noFaults, type LoggedRequest, type TestServer } from './helpers/test-server.js';
+import { assertAskedBeforeScript as assertAskedBefore, WORKER_SCRIPT } from './helpers/worker-script.js';
 
 const W = 640, H = 480;
 const MARGIN = 0.25; // the map's default prefetch margin
@@ -252,24 +253,13 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     assert.ok(contents.floorTop > 0 && contents.floorLeaves.length > 1, `${contents.floorLeaves.length} floor chunks below z ${contents.floorTop}`);
   });
 
-  /** The worker's script, as the test page's build names it. */
-  const worker = /^\/assets\/chunk-worker-[\w-]+\.js$/;
-
-  /**
-   * Asserts that `asked`, the first request for `what`, went out while the worker's script (its
-   * request in this test's log, served) was still coming: at least 500 ms before it came.
-   */
-  const assertAskedBeforeScript = (what: string, asked: LoggedRequest | undefined): void => {
-    const script = server.log.slice(logStart).find((e) => worker.test(e.path));
-    assert.ok(script && script.outcome === 200, 'the worker\'s script was served');
-    assert.ok(asked, `${what} asked for`);
-    assert.ok(asked.start < script.end - 500, `${what} asked for ${asked.start - script.start} ms after the worker's script was, which came after ${script.end - script.start} ms`);
-  };
+  /** The first request for `what` went out while the worker's script was still coming (this test's log). */
+  const assertAskedBeforeScript = (what: string, asked: LoggedRequest | undefined): void => assertAskedBefore(server.log.slice(logStart), what, asked);
 
   test('at the floor the first view\'s floor chunks are asked for while the worker\'s script is still coming, each once, and the map equals the CPU slicer', async () => {
     // The worker's script comes a second late, as its 33 kB gzip would on a slow phone network:
     // the map reads index.json and fetches the first view's floor chunks for the worker meanwhile.
-    server.faults.appDelayMs = (path) => (worker.test(path) ? 1000 : 0);
+    server.faults.appDelayMs = (path) => (WORKER_SCRIPT.test(path) ? 1000 : 0);
     const [view] = pickPair((a) => floorOnScreen(a).length >= 2, (a) => [a]);
     const p = await open(view, 0);
     assert.equal(await waitIdle(p.page), true);
@@ -283,7 +273,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   });
 
   test('above the floor the sub-index files the first view reaches are asked for while the worker\'s script is still coming, each once', async () => {
-    server.faults.appDelayMs = (path) => (worker.test(path) ? 1000 : 0);
+    server.faults.appDelayMs = (path) => (WORKER_SCRIPT.test(path) ? 1000 : 0);
     const z = 30;
     assert.ok(z > contents.floorTop, `z ${z} above the floor's top ${contents.floorTop}`);
     const reachedAtRoot = (a: Bbox): string[] => {
@@ -302,7 +292,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   });
 
   test('a floor chunk the map could not fetch for the worker (a 503) the worker fetches itself, and the map comes complete', async () => {
-    server.faults.appDelayMs = (path) => (worker.test(path) ? 500 : 0);
+    server.faults.appDelayMs = (path) => (WORKER_SCRIPT.test(path) ? 500 : 0);
     const [view] = pickPair((a) => floorOnScreen(a).length >= 2, (a) => [a]);
     const failing = floorOnScreen(view)[0]!.file;
     server.faults.unavailableOnce = new Set([failing]);
@@ -316,7 +306,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   });
 
   test('a floor chunk the server refuses (a 404) when the map fetches it for the worker is not asked for again: the view draws from the cube\'s chunks', async () => {
-    server.faults.appDelayMs = (path) => (worker.test(path) ? 1000 : 0);
+    server.faults.appDelayMs = (path) => (WORKER_SCRIPT.test(path) ? 1000 : 0);
     const [view] = pickPair((a) => floorOnScreen(a).length >= 2, (a) => [a]);
     const missing = floorOnScreen(view)[0]!.file;
     server.faults.notFound.add(missing);
@@ -329,7 +319,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   });
 
   test('a floor chunk refused with 429 and Retry-After: 2 when the map fetches it for the worker is asked for again two seconds later, by the worker', async () => {
-    server.faults.appDelayMs = (path) => (worker.test(path) ? 1000 : 0);
+    server.faults.appDelayMs = (path) => (WORKER_SCRIPT.test(path) ? 1000 : 0);
     const [view] = pickPair((a) => floorOnScreen(a).length >= 2, (a) => [a]);
     const limited = floorOnScreen(view)[0]!.file;
     server.faults.tooManyOnce.set(limited, 2);
@@ -715,7 +705,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   });
 
   test('a worker script that cannot be loaded fails the map with an error that says so, and the map goes idle', async () => {
-    server.faults.appNotFound = (path) => worker.test(path);
+    server.faults.appNotFound = (path) => WORKER_SCRIPT.test(path);
     // index.json comes late, so that the worker has failed before it (as it did once in CI).
     server.faults.delayMs = (file) => (file === 'index.json' ? 500 : 0);
     const [view] = pickPair((a) => floorOnScreen(a).length >= 1, (a) => [a]);
@@ -732,7 +722,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
   });
 
   test('a map whose worker and index both fail shows one load error, the first', async () => {
-    server.faults.appNotFound = (path) => worker.test(path);
+    server.faults.appNotFound = (path) => WORKER_SCRIPT.test(path);
     logStart = server.log.length;
     mp = await openMap(browser, server.url, { source: 'no-such-cube/' }, { expect: [/Failed to load resource: the server responded with a status of 404/] });
     await mp.page.evaluate(() => map.whenIdle());
@@ -740,7 +730,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     await mp.page.waitForFunction("document.querySelectorAll('.ssc-load-error').length > 0", undefined, { polling: 100 });
     await new Promise((resolve) => setTimeout(resolve, 500));
     assert.equal(await mp.page.locator('.ssc-load-error').count(), 1);
-    assert.equal(server.log.slice(logStart).filter((e) => worker.test(e.path) || e.path === '/no-such-cube/index.json').length, 2, 'the worker and the index each asked for');
+    assert.equal(server.log.slice(logStart).filter((e) => WORKER_SCRIPT.test(e.path) || e.path === '/no-such-cube/index.json').length, 2, 'the worker and the index each asked for');
   });
 
   test('a missing index gives an error event', async () => {

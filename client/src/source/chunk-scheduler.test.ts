@@ -395,7 +395,7 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
     const index = parseIndex(JSON.parse(new TextDecoder().decode(files.get('index.json'))));
     const first: ViewRequest = { ...view(1, 12, 30, { centerX: 25 }), zMin: 0, zMax: 0.49 };
     assert.deepEqual(firstViewFiles(index, first), ['i-floor.json'], 'at the floor: its sub-index file, which lists the floor chunks');
-    assert.deepEqual(firstViewFiles(index, { ...first, zMax: 0.5 }), ['i-floor.json', 'i-cube.json'], 'just above it: the interim floor\'s sub-index file, then the cube\'s');
+    assert.deepEqual(firstViewFiles(index, { ...first, zMax: 0.5 }), ['i-floor.json', 'i-cube.json'], 'just above it: the interim floor\'s sub-index file and the cube\'s');
     assert.deepEqual(firstViewFiles(index, { ...first, zMin: 90, zMax: 90, z: 90 }), ['i-cube.json'], 'beyond twice the base scale: no floor');
     const h = await harness(t, files, { concurrency: 1 }, undefined, true);
     h.scheduler.setView(first);
@@ -405,6 +405,17 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
     await eventually(() => h.received().length === 4, 'the margin');
     await settle();
     assert.deepEqual(h.fetched().slice(3, 4), ['i-cube.json']);
+  });
+
+  test('a floor sub-index file that fails holds the cube\'s sub-index files back no longer: they and the cube\'s chunks come as the margin', async (t) => {
+    const floor = { top: 0.5, chunks: [0, 1, 2].map((i): ChunkSpec => ({ file: `b-${i}.bin`, bbox: [10 * i, 0, 0, 10 * i + 10, 10, 0.5] })), subIndex: 'i-floor.json' };
+    const { files } = handMadeCube(row(3), floor, 'i-cube.json');
+    const serve = serveFiles(BASE, files);
+    const h = await harness(t, files, { concurrency: 1 }, (url) => (url.endsWith('i-floor.json') ? status(404) : serve(url)), true);
+    h.scheduler.setView({ ...view(1, 12, 30, { centerX: 25 }), zMin: 0, zMax: 0.49 });
+    await eventually(() => h.received().length === 2, 'the cube\'s chunks under the view, as the margin');
+    assert.deepEqual(h.fetched().slice(0, 2), ['i-floor.json', 'i-cube.json']);
+    assert.equal(h.errors()[0]?.status, 404);
   });
 
   test('a margin of the cube\'s chunks waits for the floor chunk on screen', async (t) => {

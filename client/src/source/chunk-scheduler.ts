@@ -17,7 +17,8 @@
 // - below the floor's top the floor chunks go on screen, and the cube's chunks are the margin
 //   (floorShown): the first map at the base scale takes a fifth of the bytes. The cube's
 //   sub-index files wait, as the margin does, until the floor chunks on screen are on the GPU
-//   (and, a floor too large for index.json, until its own sub-index files have come);
+//   (and, a floor too large for index.json, until its own sub-index files have come or failed:
+//   the margin's chunks wait for those too);
 // - just above the floor's top, until a view's chunks on screen have all been on the GPU once,
 //   the floor chunks on screen go first, drawn under the view meanwhile (interimFloor): a
 //   complete picture of the base scale for a fifth of the bytes, refined as the view's own come.
@@ -65,7 +66,7 @@ export class ChunkScheduler {
   /** When the view last changed (performance.now()), and the timer that starts the margin once it has rested. */
   private viewSince = 0;
   private restTimer: ReturnType<typeof setTimeout> | null = null;
-  /** The cube's sub-index files a view at the floor reaches: loaded once its floor chunks on screen are on the GPU (pump). */
+  /** The cube's sub-index files a view at the floor reaches: loaded once its floor chunks on screen are on the GPU, and the floor's sub-index files have come or failed (pump). */
   private marginSubs: string[] = [];
   /** The floor's sub-index files a view at the floor reaches: until they have come (or failed), its floor chunks on screen are not all known. */
   private floorSubs: string[] = [];
@@ -159,6 +160,7 @@ export class ChunkScheduler {
   /**
    * Sub-index files the view reaches, loaded; the view is asked again once they have all come or
    * failed (each failure reported), if any came: one that fails holds back none of the others.
+   * When all failed, what waited for them (the margin, below the floor's top) goes on (pump).
    */
   private loadSubs(refs: string[]): void {
     if (refs.length === 0) return;
@@ -166,6 +168,7 @@ export class ChunkScheduler {
     void Promise.allSettled(refs.map((ref) => this.tree.loadSub(ref))).then((results) => {
       for (const r of results) if (r.status === 'rejected') this.postError(indexError(r.reason));
       if (results.some((r) => r.status === 'fulfilled') && view && this.view === view) this.setView(view);
+      else this.pump();
     });
   }
 

@@ -49,8 +49,8 @@ export function floorChoice(floor: QueryResult | null, cube: QueryResult, toFetc
  * yet and only index.json at hand: the floor chunks it shows on screen, nearest first; above the
  * floor, the sub-index files its query reaches (the build keeps the cube's tree in them when
  * there are floor chunks), after its interim floor (interimFloor) if any, then the cube's
- * chunks on screen that index.json itself lists. Each floor first names the floor's sub-index
- * files its query reaches, as the scheduler loads them too.
+ * chunks on screen that index.json itself lists. The sub-index files of the floor (shown or
+ * interim) that its query reaches come too, as the scheduler loads them.
  */
 export function firstViewFiles(index: CubeIndex, view: ViewRequest): string[] {
   const onScreen = { ground: view.visible, zMin: view.zMin, zMax: view.zMax };
@@ -67,10 +67,9 @@ export function firstViewFiles(index: CubeIndex, view: ViewRequest): string[] {
   // The floor's own sub-index files (a floor too large for index.json) come first: until they
   // have, the floor chunks under them are not known.
   if (shown) return [...shown.missing, ...nearestFirst(shown.leaves)];
-  const under = floorQuery(index, underView(view.visible), none);
+  const under = interimApplies(index, view) ? floorQuery(index, underView(view.visible), none) : null;
   const interim = interimFloor(index, view, under, cube, bytesIn);
-  const interimSubs = under && interimApplies(index, view) ? under.missing : [];
-  return [...interimSubs, ...nearestFirst(interim), ...cube.missing, ...nearestFirst(cube.leaves.filter((l) => boxMeets(l.bbox, onScreen)))];
+  return [...(under?.missing ?? []), ...nearestFirst(interim), ...cube.missing, ...nearestFirst(cube.leaves.filter((l) => boxMeets(l.bbox, onScreen)))];
 }
 
 /** The box of the floor under a view's ground: its triangles lie at z 0, under every slice. */
