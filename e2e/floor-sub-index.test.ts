@@ -1,8 +1,9 @@
 // A floor too large for index.json (its tree in sub-index files, as the build writes it for a
 // large dataset): a first view at the floor has the map ask for the floor's sub-index files while
 // the worker's script is still coming (the head start), then the floor chunks they list; the
-// cube's own sub-index files wait for those. bgt_otterlo_400m in tiny chunks, whose floor tree
-// does not fit a 2 kB index file.
+// cube's own sub-index files wait for those; where the floor's sub-index files cannot be had, the
+// cube's chunks draw the floor. bgt_otterlo_400m in tiny chunks, whose floor tree does not fit a
+// 2 kB index file.
 import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
 import path from 'node:path';
@@ -52,8 +53,32 @@ describe('a floor whose tree is in sub-index files (bgt_otterlo_400m in tiny chu
     const lastFloor = Math.max(...floorOnScreen.map(firstAsked));
     const cubeAsked = cubeSubs.map(firstAsked).filter((i) => i >= 0);
     assert.ok(cubeAsked.length > 0 && cubeAsked.every((i) => i > lastFloor), 'the cube\'s sub-index files asked for, after the floor chunks on screen');
-    const ref = await cpuSlice(bed.cube.dir, { step: 0, width: W, height: H, bbox });
-    const c = compareIds((await readIds(bed.page.page)).upper, ref, W, H);
-    assert.ok(c.share >= 0.995, `${(100 * c.share).toFixed(3)}% equal to the CPU slicer; ${c.examples.join('; ')}`);
+    await assertMatchesSlicer(bbox, 'its floor chunks listed in sub-index files');
   });
+
+  test('a floor sub-index file that cannot be had (a 404): the map draws the floor from the cube\'s chunks, complete and equal to the CPU slicer', async () => {
+    const { contents, server } = bed;
+    // The extent's south-west quarter, where the view needs floor chunks listed in the floor's sub-index files.
+    const [x0, y0, x1, y1] = contents.meta.extent;
+    const bbox: Bbox = [x0, y0, (x0 + x1) / 2, (y0 + y1) / 2];
+    for (const ref of contents.floorSubIndexFiles) server.faults.notFound.add(ref);
+    const logStart = server.log.length;
+    try {
+      bed.page = await openMap(bed.browser, server.url, { source: 'cube/', bbox: bbox.join(','), z: 0, supersampling: 1 }, { expect: [/Failed to load resource: the server responded with a status of 404/] });
+      assert.equal(await waitIdle(bed.page.page), true, 'complete');
+      const log = server.log.slice(logStart);
+      assert.ok(log.some((e) => e.outcome === 404 && contents.floorSubIndexFiles.some((ref) => e.path === `/cube/${ref}`)), 'a floor sub-index file refused');
+      assert.ok(log.some((e) => /^\/cube\/c-/.test(e.path)), 'the cube\'s chunks fetched');
+      await assertMatchesSlicer(bbox, 'the floor drawn from the cube\'s chunks');
+    } finally {
+      server.faults.notFound.clear();
+    }
+  });
+
+  /** The map's picture equals the CPU slicer's at the floor. */
+  async function assertMatchesSlicer(bbox: Bbox, label: string): Promise<void> {
+    const ref = await cpuSlice(bed.cube.dir, { step: 0, width: W, height: H, bbox });
+    const c = compareIds((await readIds(bed.page!.page)).upper, ref, W, H);
+    assert.ok(c.share >= 0.995, `${label}: ${(100 * c.share).toFixed(3)}% equal to the CPU slicer; ${c.examples.join('; ')}`);
+  }
 });

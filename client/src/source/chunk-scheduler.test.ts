@@ -407,15 +407,21 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
     assert.deepEqual(h.fetched().slice(3, 4), ['i-cube.json']);
   });
 
-  test('a floor sub-index file that fails holds the cube\'s sub-index files back no longer: they and the cube\'s chunks come as the margin', async (t) => {
+  test('a floor sub-index file that fails: the view draws from the cube\'s chunks, which hold the floor too, and is not asked for again', async (t) => {
     const floor = { top: 0.5, chunks: [0, 1, 2].map((i): ChunkSpec => ({ file: `b-${i}.bin`, bbox: [10 * i, 0, 0, 10 * i + 10, 10, 0.5] })), subIndex: 'i-floor.json' };
     const { files } = handMadeCube(row(3), floor, 'i-cube.json');
     const serve = serveFiles(BASE, files);
     const h = await harness(t, files, { concurrency: 1 }, (url) => (url.endsWith('i-floor.json') ? status(404) : serve(url)), true);
-    h.scheduler.setView({ ...view(1, 12, 30, { centerX: 25 }), zMin: 0, zMax: 0.49 });
-    await eventually(() => h.received().length === 2, 'the cube\'s chunks under the view, as the margin');
-    assert.deepEqual(h.fetched().slice(0, 2), ['i-floor.json', 'i-cube.json']);
+    const first = { ...view(1, 12, 30, { centerX: 25 }), zMin: 0, zMax: 0.49 };
+    h.scheduler.setView(first);
+    await eventually(() => h.received().length === 2, 'the cube\'s chunks under the view');
     assert.equal(h.errors()[0]?.status, 404);
+    assert.deepEqual(h.fetched().slice(0, 2), ['i-floor.json', 'i-cube.json']);
+    const last = h.needed().at(-1)!;
+    assert.deepEqual([sorted(last.visible), last.indexComplete], [['c-1.bin', 'c-2.bin'], true], 'the cube\'s chunks on screen, the list whole');
+    h.scheduler.setView({ ...first, seq: 2 });
+    await settle();
+    assert.equal(h.times('i-floor.json'), 1, 'not asked for again');
   });
 
   test('a margin of the cube\'s chunks waits for the floor chunk on screen', async (t) => {

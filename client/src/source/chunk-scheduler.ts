@@ -68,7 +68,7 @@ export class ChunkScheduler {
   private restTimer: ReturnType<typeof setTimeout> | null = null;
   /** The cube's sub-index files a view at the floor reaches: loaded once its floor chunks on screen are on the GPU, and the floor's sub-index files have come or failed (pump). */
   private marginSubs: string[] = [];
-  /** The floor's sub-index files a view at the floor reaches: until they have come (or failed), its floor chunks on screen are not all known. */
+  /** The floor's sub-index files the view reaches (its floor on screen, or its interim floor): until they have come or failed, that floor's chunks are not all known. */
   private floorSubs: string[] = [];
   /** The view's chunks on screen (without the interim floor); null while its list is not whole. */
   private visibleFiles: string[] | null = null;
@@ -101,7 +101,6 @@ export class ChunkScheduler {
     // with it, not to share the link with the floor chunks on screen.
     const missing = new Set(floor ? floor.missing : cube.missing);
     this.marginSubs = floor ? cube.missing : [];
-    this.floorSubs = floor ? floor.missing : [];
     const want = (leaf: Leaf, priority: number): void => {
       let e = this.entries.get(leaf.file);
       if (!e) {
@@ -114,9 +113,10 @@ export class ChunkScheduler {
     const rank = view.visible;
     // Just above the floor's top, a first view's floor on screen, drawn under it meanwhile (its
     // sub-index files, in a cube large enough to have some, loaded with the cube's).
-    const under = floor || this.firstShown || !interimApplies(this.tree.index, view) ? null : this.tree.floorQuery(underView(view.visible));
+    const under = floor || this.firstShown || !interimApplies(this.tree.index, view) ? null : this.usableFloor(underView(view.visible));
     const interim = interimFloor(this.tree.index, view, under, cube, (leaves, box) => this.bytesToFetch(leaves, box));
     for (const m of under?.missing ?? []) missing.add(m);
+    this.floorSubs = (floor ?? under)?.missing ?? [];
     for (const leaf of interim) want(leaf, viewPriority(leaf.bbox, rank, view) - INTERIM_TIER);
     for (const leaf of floor?.leaves ?? []) {
       want(leaf, viewPriority(leaf.bbox, rank, view));
@@ -159,15 +159,17 @@ export class ChunkScheduler {
 
   /**
    * Sub-index files the view reaches, loaded; the view is asked again once they have all come or
-   * failed (each failure reported), if any came: one that fails holds back none of the others.
-   * When all failed, what waited for them (the margin, below the floor's top) goes on (pump).
+   * failed (each failure reported), if any came or one of the floor's failed (the cube's chunks
+   * then draw the floor, usableFloor): one that fails holds back none of the others. Else what
+   * waited for them (the margin, below the floor's top) goes on (pump).
    */
   private loadSubs(refs: string[]): void {
     if (refs.length === 0) return;
     const view = this.view;
     void Promise.allSettled(refs.map((ref) => this.tree.loadSub(ref))).then((results) => {
       for (const r of results) if (r.status === 'rejected') this.postError(indexError(r.reason));
-      if (results.some((r) => r.status === 'fulfilled') && view && this.view === view) this.setView(view);
+      const floorFailed = results.some((r, i) => r.status === 'rejected' && this.floorSubs.includes(refs[i]!));
+      if ((floorFailed || results.some((r) => r.status === 'fulfilled')) && view && this.view === view) this.setView(view);
       else this.pump();
     });
   }
@@ -180,7 +182,16 @@ export class ChunkScheduler {
    * too) by floorChoice's rule, or when there is no floor.
    */
   private floorShown(cube: QueryResult, onScreen: QueryBox): QueryResult | null {
-    return floorChoice(this.tree.floorQuery(onScreen), cube, (leaves) => this.bytesToFetch(leaves, onScreen));
+    return floorChoice(this.usableFloor(onScreen), cube, (leaves) => this.bytesToFetch(leaves, onScreen));
+  }
+
+  /**
+   * The floor's query, or null (no floor to draw) where one of its sub-index files failed: the
+   * cube's chunks, which hold the floor too, serve instead, as they do for a failed floor chunk.
+   */
+  private usableFloor(q: QueryBox): QueryResult | null {
+    const floor = this.tree.floorQuery(q);
+    return floor && floor.missing.some((ref) => this.tree.hasFailed(ref)) ? null : floor;
   }
 
   /** Bytes of `leaves` meeting `onScreen` not received yet; Infinity when one of them has failed. */

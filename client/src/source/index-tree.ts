@@ -10,6 +10,8 @@ import { readIndex } from './read-index.js';
 export class IndexTree {
   private readonly subs = new Map<string, InnerNode>();
   private readonly loading = new Map<string, Promise<void>>();
+  /** Sub-index files whose last load failed (a later query may load them again). */
+  private readonly failed = new Set<string>();
 
   private constructor(
     readonly index: CubeIndex,
@@ -44,15 +46,24 @@ export class IndexTree {
     return this.loading.has(ref) && !this.subs.has(ref);
   }
 
+  /** A sub-index file whose last load failed. */
+  hasFailed(ref: string): boolean {
+    return this.failed.has(ref);
+  }
+
   /** Loads a sub-index file, unless it is loaded or loading already; resolves when it is in. */
   loadSub(ref: string): Promise<void> {
     let p = this.loading.get(ref);
     if (!p) {
       p = fetchJson(this.url(ref), this.retry).then((json) => {
         this.subs.set(ref, parseSubIndex(json, ref));
+        this.failed.delete(ref);
       });
       // A failed load may be retried by a later query.
-      p.catch(() => this.loading.delete(ref));
+      p.catch(() => {
+        this.loading.delete(ref);
+        this.failed.add(ref);
+      });
       this.loading.set(ref, p);
     }
     return p;
