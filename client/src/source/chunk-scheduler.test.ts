@@ -424,6 +424,18 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
     assert.equal(h.times('i-floor.json'), 1, 'not asked for again');
   });
 
+  test('a floor sub-index file that fails, with the cube\'s tree in index.json: the view is asked again at once, and draws from the cube\'s chunks', async (t) => {
+    const floor = { top: 0.5, chunks: [0, 1, 2].map((i): ChunkSpec => ({ file: `b-${i}.bin`, bbox: [10 * i, 0, 0, 10 * i + 10, 10, 0.5] })), subIndex: 'i-floor.json' };
+    const { files } = handMadeCube(row(3), floor);
+    const serve = serveFiles(BASE, files);
+    const h = await harness(t, files, { concurrency: 1 }, (url) => (url.endsWith('i-floor.json') ? status(404) : serve(url)), true);
+    h.scheduler.setView({ ...view(1, 12, 30, { centerX: 25 }), zMin: 0, zMax: 0.49 });
+    await eventually(() => h.received().length === 2, 'the cube\'s chunks under the view');
+    const last = h.needed().at(-1)!;
+    assert.deepEqual([sorted(last.visible), last.indexComplete], [['c-1.bin', 'c-2.bin'], true]);
+    assert.equal(h.times('i-floor.json'), 1);
+  });
+
   test('a margin of the cube\'s chunks waits for the floor chunk on screen', async (t) => {
     const h = await harness(t, cube(), { concurrency: 4 }, () => 'hold');
     h.scheduler.setView(at(1, 0));

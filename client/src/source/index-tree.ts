@@ -10,7 +10,7 @@ import { readIndex } from './read-index.js';
 export class IndexTree {
   private readonly subs = new Map<string, InnerNode>();
   private readonly loading = new Map<string, Promise<void>>();
-  /** Sub-index files whose last load failed (a later query may load them again). */
+  /** Sub-index files whose last load failed (loadSub may be asked for them again; the scheduler does not ask again for the floor's, ChunkScheduler.usableFloor). */
   private readonly failed = new Set<string>();
 
   private constructor(
@@ -59,7 +59,7 @@ export class IndexTree {
         this.subs.set(ref, parseSubIndex(json, ref));
         this.failed.delete(ref);
       });
-      // A failed load may be retried by a later query.
+      // A failed load may be asked for again.
       p.catch(() => {
         this.loading.delete(ref);
         this.failed.add(ref);
