@@ -352,6 +352,12 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
   // Beyond twice the base scale (z 83 in the hand-made cube's scale table): no interim floor.
   const high = (seq: number): ViewRequest => ({ ...view(seq, 0, 30, { centerX: 15 }), zMin: 90, zMax: 90, z: 90 });
   const CUBE = ['c-0.bin', 'c-1.bin', 'c-2.bin'];
+  /** Three floor chunks along x below z 0.5 (b-0 .. b-2); with `subIndex`, listed in a sub-index file of that name. */
+  const floorRow = (subIndex?: string): { top: number; chunks: ChunkSpec[]; subIndex?: string } => ({
+    top: 0.5,
+    chunks: [0, 1, 2].map((i): ChunkSpec => ({ file: `b-${i}.bin`, bbox: [10 * i, 0, 0, 10 * i + 10, 10, 0.5] })),
+    ...(subIndex ? { subIndex } : {}),
+  });
 
   test('a view below the floor top shows the floor chunk, fetched first, with the cube\'s chunks as its margin; a view reaching the top, the cube\'s', async (t) => {
     const h = await harness(t, cube(), { concurrency: 1 }, undefined, true);
@@ -370,7 +376,7 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
 
   test('the map\'s head start on a first view names the floor chunks the scheduler shows, in its order; above the floor, the sub-index file', async (t) => {
     // Three floor chunks along x; the view over x 12..30, its centre at 25: b-2 under it, then b-1.
-    const floor = { top: 0.5, chunks: [0, 1, 2].map((i): ChunkSpec => ({ file: `b-${i}.bin`, bbox: [10 * i, 0, 0, 10 * i + 10, 10, 0.5] })) };
+    const floor = floorRow();
     const { files } = handMadeCube(row(3), floor, 'i-cube.json');
     const index = parseIndex(JSON.parse(new TextDecoder().decode(files.get('index.json'))));
     const first: ViewRequest = { ...view(1, 12, 30, { centerX: 25 }), zMin: 0, zMax: 0.49 };
@@ -390,7 +396,7 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
   });
 
   test('a floor too large for index.json: the head start names the floor\'s sub-index file, which the scheduler asks for first too', async (t) => {
-    const floor = { top: 0.5, chunks: [0, 1, 2].map((i): ChunkSpec => ({ file: `b-${i}.bin`, bbox: [10 * i, 0, 0, 10 * i + 10, 10, 0.5] })), subIndex: 'i-floor.json' };
+    const floor = floorRow('i-floor.json');
     const { files } = handMadeCube(row(3), floor, 'i-cube.json');
     const index = parseIndex(JSON.parse(new TextDecoder().decode(files.get('index.json'))));
     const first: ViewRequest = { ...view(1, 12, 30, { centerX: 25 }), zMin: 0, zMax: 0.49 };
@@ -408,7 +414,7 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
   });
 
   test('a floor sub-index file that fails: the view draws from the cube\'s chunks, which hold the floor too, and is not asked for again', async (t) => {
-    const floor = { top: 0.5, chunks: [0, 1, 2].map((i): ChunkSpec => ({ file: `b-${i}.bin`, bbox: [10 * i, 0, 0, 10 * i + 10, 10, 0.5] })), subIndex: 'i-floor.json' };
+    const floor = floorRow('i-floor.json');
     const { files } = handMadeCube(row(3), floor, 'i-cube.json');
     const serve = serveFiles(BASE, files);
     const h = await harness(t, files, { concurrency: 1 }, (url) => (url.endsWith('i-floor.json') ? status(404) : serve(url)), true);
@@ -425,7 +431,7 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
   });
 
   test('a floor sub-index file that fails, with the cube\'s tree in index.json: the view is asked again at once, and draws from the cube\'s chunks', async (t) => {
-    const floor = { top: 0.5, chunks: [0, 1, 2].map((i): ChunkSpec => ({ file: `b-${i}.bin`, bbox: [10 * i, 0, 0, 10 * i + 10, 10, 0.5] })), subIndex: 'i-floor.json' };
+    const floor = floorRow('i-floor.json');
     const { files } = handMadeCube(row(3), floor);
     const serve = serveFiles(BASE, files);
     const h = await harness(t, files, { concurrency: 1 }, (url) => (url.endsWith('i-floor.json') ? status(404) : serve(url)), true);
