@@ -88,6 +88,8 @@ export interface CubeContents {
   /** Those of them in the floor's tree (a floor too large for index.json). */
   floorSubIndexFiles: string[];
   root: InnerNode;
+  /** The floor's root as index.json holds it (none without floor chunks). */
+  floorRoot: InnerNode | undefined;
   subs: Map<string, InnerNode>;
 }
 
@@ -107,7 +109,7 @@ export async function readCube(cubeDir: string): Promise<CubeContents> {
   const cubeSubs = subs.size;
   const floorLeaves = index.floor ? await leavesOf(index.floor.root) : [];
   const subIndexFiles = [...subs.keys()];
-  return { meta: index.meta, leaves, floorLeaves, floorTop: index.floor?.top ?? 0, lines: index.lines ?? [], subIndexFiles, floorSubIndexFiles: subIndexFiles.slice(cubeSubs), root: index.root, subs };
+  return { meta: index.meta, leaves, floorLeaves, floorTop: index.floor?.top ?? 0, lines: index.lines ?? [], subIndexFiles, floorSubIndexFiles: subIndexFiles.slice(cubeSubs), root: index.root, floorRoot: index.floor?.root, subs };
 }
 
 /** Every triangle of a cube, x, y and z of each corner in ground coordinates, found by place. */
