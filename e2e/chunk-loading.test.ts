@@ -688,6 +688,30 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     assert.equal(countBy(chunkRequests()).get(down.file), 4, 'the first attempt and 3 retries');
   });
 
+  test('chunks that failed while the network was down are asked for again once the browser is back online, each once, with the view unmoved: it comes complete and equals the CPU slicer', async () => {
+    const z = 40;
+    const [start, target] = pickPair((x, y) => fresh(x, y, z).length >= 2);
+    const p = await open(start, z, { retries: 1, backoff: 10 }, [/net::ERR_INTERNET_DISCONNECTED/]);
+    assert.equal(await waitIdle(p.page), true);
+    const errorsSeen = await recordErrors(p);
+    const context = p.page.context();
+    await context.setOffline(true);
+    await goTo(p, target, z);
+    assert.equal(await waitIdle(p.page), false, 'offline: idle, but not complete');
+    const lost = [...new Set((await errorsSeen()).filter((e) => e.kind === 'network').map((e) => e.file!))].sort();
+    const onScreen = needed(target, z).visible.map((l) => l.file);
+    assert.ok(lost.filter((f) => onScreen.includes(f)).length >= 2, `chunks on screen lost: ${lost.join(', ')}`);
+    const askedBefore = server.log.length;
+
+    await context.setOffline(false);
+    await untilOnGpu(p.page, onScreen);
+    assert.equal(await waitIdle(p.page), true, 'complete, the view unmoved');
+    const askedAgain = countBy(server.log.slice(askedBefore).filter((e) => /^\/cube\/[cb]-/.test(e.path)));
+    for (const f of lost.filter((f) => onScreen.includes(f))) assert.equal(askedAgain.get(f), 1, `${f} asked for again once`);
+    assert.ok([...askedAgain.keys()].every((f) => lost.includes(f)), `only the lost chunks asked for: ${[...askedAgain.keys()].join(', ')}`);
+    await assertMatchesSlicer(p, target, z, 'back online');
+  });
+
   test('a chunk refused with 429 and Retry-After: 2 is asked again two seconds later, not after the backoff, and the view comes complete', async () => {
     const z = 40;
     const [start, target] = pickPair((x, y) => fresh(x, y, z).length >= 2);

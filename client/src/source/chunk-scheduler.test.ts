@@ -10,7 +10,7 @@ import { parseIndex, type Box3, type ChunkLeaf } from '../../../format/cube-inde
 import { boxMeets, queryIndex, type QueryBox } from '../../../format/index-query.js';
 import { eventually, settle } from '../../../testing/event-loop.js';
 import { fakeClock } from '../../../testing/fake-clock.js';
-import { installFakeFetch, status, type Answer, type FakeFetch } from '../../../testing/fake-fetch.js';
+import { installFakeFetch, networkError, status, type Answer, type FakeFetch } from '../../../testing/fake-fetch.js';
 import { handMadeCube, serveFiles, squareChunk, twoLevelCube, type ChunkSpec } from '../../../testing/hand-made-cube.js';
 import { ChunkScheduler } from './chunk-scheduler.js';
 import { firstViewFiles, INTERIM_SHARE, interimFloor, underView } from './floor-choice.js';
@@ -312,6 +312,38 @@ describe('the chunk scheduler', () => {
     assert.deepEqual(h.statuses('c-0.bin'), ['requested', 'failed', 'not-requested', 'requested', 'received']);
   });
 
+  test('the network back (retryFailed): chunks that failed for want of it (a network failure, a 503 after its retries) are asked for again in the same view and come; a 404 and a corrupt chunk are not', async (t) => {
+    const { files } = handMadeCube(row(4));
+    files.set('c-1.bin', squareChunk(7)); // a chunk, but not the one the index names
+    const serve = serveFiles(BASE, files);
+    let down = true;
+    const h = await harness(t, files, { concurrency: 4, retries: 1 }, (url) => {
+      if (url.endsWith('c-0.bin')) return status(404);
+      if (down && url.endsWith('c-2.bin')) return networkError();
+      if (down && url.endsWith('c-3.bin')) return status(503);
+      return serve(url);
+    });
+    const all = view(1, 0, 40, { centerX: 20 });
+    h.scheduler.setView(all);
+    await eventually(() => h.errors().length === 4, 'four errors');
+    assert.deepEqual([h.times('c-0.bin'), h.times('c-1.bin'), h.times('c-2.bin'), h.times('c-3.bin')], [1, 1, 2, 2]);
+
+    down = false;
+    h.scheduler.retryFailed();
+    await eventually(() => h.received().length === 2, 'c-2 and c-3 on their next try');
+    await settle();
+    assert.deepEqual(sorted(h.received()), ['c-2.bin', 'c-3.bin']);
+    for (const f of ['c-2.bin', 'c-3.bin']) assert.deepEqual(h.statuses(f), ['requested', 'failed', 'not-requested', 'requested', 'received'], f);
+    assert.deepEqual([h.times('c-0.bin'), h.times('c-1.bin')], [1, 1], 'a 404 and a corrupt chunk are not asked for again');
+    assert.deepEqual(h.statuses('c-0.bin'), ['requested', 'failed']);
+    assert.equal(h.errors().length, 4, 'no new error');
+    assert.equal(h.needed().at(-1)!.seq, 1, 'the same view');
+
+    h.scheduler.retryFailed();
+    await settle();
+    assert.equal(h.fetched().length, 8, 'once they came, nothing is asked for again');
+  });
+
   test('a chunk left and taken back before its aborted request ends is fetched anew and arrives once', async (t) => {
     const h = await harness(t, handMadeCube(row(2)).files, { concurrency: 3 }, () => 'hold');
     const left = view(1, 0, 9, { centerX: 5 });
@@ -428,6 +460,44 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
     h.scheduler.setView({ ...first, seq: 2 });
     await settle();
     assert.equal(h.times('i-floor.json'), 1, 'not asked for again');
+  });
+
+  test('a floor sub-index file and a floor chunk that failed for want of a network are taken again once it is back (retryFailed): the view goes back to the floor', async (t) => {
+    const floor = floorRow('i-floor.json');
+    const { files } = handMadeCube(row(3), floor);
+    const serve = serveFiles(BASE, files);
+    let down = true;
+    const h = await harness(t, files, { concurrency: 1 }, (url) => (down && /i-floor\.json$|b-2\.bin$/.test(url) ? networkError() : serve(url)), true);
+    const first = { ...view(1, 12, 30, { centerX: 25 }), zMin: 0, zMax: 0.49 };
+    h.scheduler.setView(first);
+    await eventually(() => h.received().length === 2, 'the cube\'s chunks under the view');
+    assert.deepEqual(sorted(h.needed().at(-1)!.visible), ['c-1.bin', 'c-2.bin']);
+
+    down = false;
+    h.scheduler.evicted(['c-1.bin', 'c-2.bin']); // gone from the GPU: the floor costs less again
+    h.scheduler.retryFailed();
+    await eventually(() => h.times('i-floor.json') === 2, 'the floor\'s sub-index file asked for again');
+    await eventually(() => h.received().includes('b-2.bin'), 'the floor chunks');
+    await settle();
+    assert.deepEqual(sorted(h.needed().at(-1)!.visible), ['b-1.bin', 'b-2.bin'], 'the floor on screen again');
+  });
+
+  test('a floor chunk that failed for want of a network is chosen again once it is back (retryFailed); one refused with a 404 is not', async (t) => {
+    for (const [answer, again] of [[networkError, true], [() => status(404), false]] as const) {
+      const serve = serveFiles(BASE, cube());
+      let down = true;
+      const h = await harness(t, cube(), {}, (url) => (down && url.endsWith('c-floor.bin') ? answer() : serve(url)), true);
+      h.scheduler.setView(at(1, 0));
+      await eventually(() => h.received().length === 3, 'the cube\'s chunks');
+      down = false;
+      h.scheduler.evicted(CUBE);
+      h.scheduler.retryFailed();
+      await settle();
+      await eventually(() => h.fetch.open().length === 0, 'nothing in flight');
+      await settle();
+      assert.deepEqual(sorted(h.needed().at(-1)!.visible), again ? ['c-floor.bin'] : CUBE, String(again));
+      assert.equal(h.times('c-floor.bin'), again ? 2 : 1);
+    }
   });
 
   test('a floor sub-index file that fails, with the cube\'s tree in index.json: the view is asked again at once, and draws from the cube\'s chunks', async (t) => {

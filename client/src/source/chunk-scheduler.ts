@@ -27,7 +27,7 @@ import { boxMeets, queryLineChunks, viewPriority, type QueryBox, type QueryResul
 import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
 import { fetchLineChunk } from './line-chunk-fetch.js';
 import { floorChoice, interimApplies, interimFloor, underView } from './floor-choice.js';
-import { FetchFailure, type RetryOptions } from './fetch-retry.js';
+import { FetchFailure, mayPass, type RetryOptions } from './fetch-retry.js';
 import { indexError } from './index-error.js';
 import type { IndexTree } from './index-tree.js';
 import type { ChunkStatus, FromWorker, SourceErrorInfo, SourceOptions, ViewRequest } from './worker-protocol.js';
@@ -59,8 +59,11 @@ const REST_FRAMES = 1.5;
 export class ChunkScheduler {
   private readonly entries = new Map<string, Entry>();
   private needed = new Set<string>();
-  /** Chunks whose last fetch failed: floor chunks among them are not chosen again (floorShown). */
-  private readonly failed = new Set<string>();
+  /**
+   * Chunks whose last fetch failed, and whether the cause may pass (mayPass): floor chunks among
+   * them are not chosen again (floorShown) until the network is back (retryFailed).
+   */
+  private readonly failed = new Map<string, boolean>();
   private inFlight = 0;
   private view: ViewRequest | null = null;
   /** When the view last changed (performance.now()), and the timer that starts the margin once it has rested. */
@@ -211,6 +214,25 @@ export class ChunkScheduler {
     return queryLineChunks(this.tree.index.lines ?? [], q);
   }
 
+  /**
+   * The network is back (the page's 'online' event, ChunkSource): the files whose last fetch
+   * failed for a cause that may pass (a network failure; a 5xx, 408 or 429 after the retries)
+   * are asked for again where the view needs them, and a floor given up for one of them may be
+   * drawn again. A lasting failure (another 4xx, a corrupt body) stays: it would fail again.
+   * Without this, a chunk that failed stayed failed while the view kept it, and a floor's
+   * while the worker lived: a phone back from a tunnel kept the holes.
+   */
+  retryFailed(): void {
+    for (const [file, passing] of this.failed) {
+      if (!passing) continue;
+      this.failed.delete(file);
+      const e = this.entries.get(file);
+      if (e?.status === 'failed') this.setStatus(e, 'not-requested');
+    }
+    this.tree.forgetPassingFailures();
+    if (this.view) this.setView(this.view);
+  }
+
   /** The chunks the view (with its margin and the views ahead) needs. */
   get neededFiles(): ReadonlySet<string> {
     return this.needed;
@@ -323,7 +345,7 @@ export class ChunkScheduler {
             return;
           }
           this.setStatus(e, 'failed');
-          this.failed.add(e.leaf.file);
+          this.failed.set(e.leaf.file, mayPass(err));
           this.postError(chunkError(err, e.leaf.file, this.tree.url(e.leaf.file)));
           // A view at the floor turns to the cube's chunks at once (floorShown).
           if (this.view && this.tree.index.floor) this.setView(this.view);

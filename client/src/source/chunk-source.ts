@@ -43,6 +43,8 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
   private destroyed = false;
   /** The worker could not be started: nothing is fetched for it. */
   private workerGone = false;
+  /** The page is online again: what failed for want of a network is asked for again (the worker's ChunkScheduler.retryFailed). */
+  private readonly onOnline = (): void => this.send({ type: 'online' });
 
   constructor(url: string, options: Partial<SourceOptions> = {}) {
     super();
@@ -63,6 +65,7 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
     });
     this.opts = { ...defaultSourceOptions, ...options };
     this.send({ type: 'init', url: this.url, options: this.opts });
+    addEventListener('online', this.onOnline);
     // index.json is read here while the worker's own script loads, not by the worker after it:
     // on a slow network the first map comes a round trip sooner (bench:session), and the first
     // view's floor chunks can be asked for before the worker runs (setView).
@@ -155,6 +158,7 @@ export class ChunkSource extends Evented<ChunkSourceEvents> {
 
   destroy(): void {
     this.destroyed = true;
+    removeEventListener('online', this.onOnline);
     this.headStarts?.cancelAll();
     this.worker.terminate();
     for (const r of this.requests.values()) r.reject(new Error('the map was removed'));

@@ -112,6 +112,9 @@ scope.addEventListener('message', (ev) => {
       run().catch((err: unknown) => post({ type: 'attributes', id, properties: [], error: (err as Error).message }));
       break;
     }
+    case 'online':
+      scheduler?.retryFailed();
+      break;
     case 'loaded-urls':
       post({ type: 'loaded-urls', id: msg.id, urls: [...loadedUrls] });
       break;

@@ -7,7 +7,7 @@ import { gzipSync } from 'node:zlib';
 import { describe, test, type TestContext } from 'node:test';
 import { eventually, settle, settled } from '../../../testing/event-loop.js';
 import { body, installFakeFetch, networkError, status, type FakeFetch } from '../../../testing/fake-fetch.js';
-import { FetchFailure, fetchBytes, fetchJson, RETRY_AFTER_MAX_MS, type RetryOptions } from './fetch-retry.js';
+import { FetchFailure, fetchBytes, fetchJson, mayPass, RETRY_AFTER_MAX_MS, type RetryOptions } from './fetch-retry.js';
 
 const URL_A = 'https://maps.test/cube/c-a.bin';
 const opts = (retries: number, over: Partial<RetryOptions> = {}): RetryOptions => ({ retries, backoffMs: 100, maxBackoffMs: 300, ...over });
@@ -128,6 +128,29 @@ describe('fetch with retries', () => {
     t.mock.timers.tick(60_000);
     await settle();
     assert.equal(f.requests.length, 3, 'one attempt and two retries, no more');
+  });
+
+  test('the failures the network\'s return may mend (mayPass): a network failure, and 5xx, 408 and 429 after the retries; not another 4xx, a body that is not JSON, or an abort', async (t) => {
+    const answers = new Map<string, () => Response | Error>([
+      ['network', networkError],
+      ['503', () => status(503)],
+      ['500', () => status(500)],
+      ['408', () => status(408)],
+      ['429', () => status(429)],
+      ['404', () => status(404)],
+      ['403', () => status(403)],
+      ['not json', () => body('<html>')],
+    ]);
+    installFakeFetch(t, (url) => answers.get(decodeURIComponent(url.slice(URL_A.length + 1)))!());
+    const passing: string[] = [];
+    for (const name of answers.keys()) {
+      const err = await fetchJson(`${URL_A}?${encodeURIComponent(name)}`, opts(0)).then(() => assert.fail(`${name} did not fail`), (e: unknown) => e);
+      if (mayPass(err)) passing.push(name);
+    }
+    assert.deepEqual(passing, ['network', '503', '500', '408', '429']);
+    const ac = new AbortController();
+    ac.abort();
+    assert.equal(mayPass(await fetchBytes(`${URL_A}?network`, opts(0), ac.signal).catch((e: unknown) => e)), false, 'an abort');
   });
 
   test('a network failure it gives up on says so', async (t) => {

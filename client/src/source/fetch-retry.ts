@@ -24,6 +24,12 @@ export type FetchFailureKind = 'http' | 'network' | 'abort';
 export const isLasting = (status: number): boolean => status < 500 && status !== 408 && status !== 429;
 
 /**
+ * A failure the network's return may mend: a network failure, or a passing HTTP status whose
+ * retries ran out. Not a lasting 4xx, a body that does not read, or an abort.
+ */
+export const mayPass = (err: unknown): boolean => err instanceof FetchFailure && (err.kind === 'network' || (err.kind === 'http' && err.status !== undefined && !isLasting(err.status)));
+
+/**
  * The longest a Retry-After is followed; a longer one waits this long. A chunk asked for again
  * minutes later would come to a view long since left (a request no longer needed is aborted,
  * its wait too).

@@ -2,7 +2,7 @@
 // time a query reaches them (once each, however many queries ask meanwhile).
 import { parseSubIndex, type CubeIndex, type InnerNode } from '../../../format/cube-index.js';
 import { queryIndex, type QueryBox, type QueryResult } from '../../../format/index-query.js';
-import { fetchJson, type RetryOptions } from './fetch-retry.js';
+import { fetchJson, mayPass, type RetryOptions } from './fetch-retry.js';
 import { floorQuery } from './floor-choice.js';
 import { cubeFileUrl } from './index-url.js';
 import { readIndex } from './read-index.js';
@@ -10,8 +10,12 @@ import { readIndex } from './read-index.js';
 export class IndexTree {
   private readonly subs = new Map<string, InnerNode>();
   private readonly loading = new Map<string, Promise<void>>();
-  /** Sub-index files whose last load failed (loadSub may be asked for them again; the scheduler does not ask again for the floor's, ChunkScheduler.usableFloor). */
-  private readonly failed = new Set<string>();
+  /**
+   * Sub-index files whose last load failed, and whether the cause may pass (mayPass). loadSub
+   * may be asked for them again; the scheduler asks again for the floor's only once the network
+   * is back (ChunkScheduler.usableFloor, retryFailed).
+   */
+  private readonly failed = new Map<string, boolean>();
 
   private constructor(
     readonly index: CubeIndex,
@@ -51,6 +55,11 @@ export class IndexTree {
     return this.failed.has(ref);
   }
 
+  /** Forgets the failures that may pass (the network is back): those files count as not loaded yet. */
+  forgetPassingFailures(): void {
+    for (const [ref, passing] of this.failed) if (passing) this.failed.delete(ref);
+  }
+
   /** Loads a sub-index file, unless it is loaded or loading already; resolves when it is in. */
   loadSub(ref: string): Promise<void> {
     let p = this.loading.get(ref);
@@ -60,9 +69,9 @@ export class IndexTree {
         this.failed.delete(ref);
       });
       // A failed load may be asked for again.
-      p.catch(() => {
+      p.catch((err: unknown) => {
         this.loading.delete(ref);
-        this.failed.add(ref);
+        this.failed.set(ref, mayPass(err));
       });
       this.loading.set(ref, p);
     }

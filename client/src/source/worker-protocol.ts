@@ -63,7 +63,9 @@ export type ToWorker =
   | { type: 'evicted'; files: string[] }
   | { type: 'features'; id: number; faces: number[] }
   | { type: 'attributes'; id: number; features: number[] }
-  | { type: 'loaded-urls'; id: number };
+  | { type: 'loaded-urls'; id: number }
+  /** The page is online again: files that failed for a passing cause are asked for again (ChunkScheduler.retryFailed). */
+  | { type: 'online' };
 
 export interface SourceErrorInfo {
   /** 'style': the `style` option does not fit the cube (the map draws the cube's own). */
