@@ -95,14 +95,22 @@ export function hashName(prefix: string, bytes: Uint8Array | string, ext: string
   return hashedName(prefix, createHash('sha256').update(bytes).digest('hex'), ext);
 }
 
+/**
+ * The exponent of the coarsest position grid a cube of `t` may take (position-grid.ts): the
+ * surfaces' new points are snapped to it, and the chunks take it or a finer one (chooseGrid).
+ */
+export function coarsestCubeGrid(t: Tgap): number {
+  // The grid the tGAP's input points lie on (its precision in a tGAP written before `grid`).
+  const o = t.meta.options;
+  const pointsOn = typeof o.grid === 'number' ? o.grid : typeof o.precision === 'number' ? o.precision : 0;
+  return coarsestGrid(t.meta.baseScale, PIXEL_SIZE_MM, pointsOn);
+}
+
 export async function buildCube(t: Tgap, outDir: string, opts: BuildOptions = {}): Promise<BuildReport> {
   const log = opts.log ?? (() => {});
   const { timings, lap } = lapTimer();
   const smooth = opts.smooth ?? true;
-  // The grid the tGAP's input points lie on (its precision in a tGAP written before `grid`).
-  const o = t.meta.options;
-  const pointsOn = typeof o.grid === 'number' ? o.grid : typeof o.precision === 'number' ? o.precision : 0;
-  const coarsest = coarsestGrid(t.meta.baseScale, PIXEL_SIZE_MM, pointsOn);
+  const coarsest = coarsestCubeGrid(t);
   // The faces the surfaces name: a smooth build skips some re-emits (late-reemits.ts).
   const { surfaces, stats, tgap: cubeTgap } = buildSurfaces(t, { smooth, snapStep: 2 ** coarsest });
   const { faces } = cubeTgap;

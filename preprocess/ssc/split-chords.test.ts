@@ -53,17 +53,47 @@ test('a chord between two boundary vertices gets one midpoint, shared by both it
 });
 
 test('a triangle with two or three chords is split at each, counterclockwise, same area', () => {
-  // With 3 on the boundary too (4-0, 0-1, 1-2 still the only segments), 0-2, 2-3, 3-0 and 3-4
-  // are chords: 4 midpoints; triangle 0 1 2 has one chord (2 triangles), 0 2 3 three (4),
-  // 0 3 4 two (3).
-  const all = (v: number): boolean => v < xs.length;
-  const { out, xs: X, ys: Y } = run(TRIS, all);
-  assert.equal(X.length - xs.length, 4);
-  assert.equal(out.length / 3, 9);
+  // A hexagon 0..5 of ears around a middle triangle 0 2 4, every vertex on the boundary, its
+  // outline the only segments: the middle triangle's three edges are chords.
+  //      3
+  //   4     2
+  //   5     1
+  //      0
+  const HX = [0, 2, 2, 0, -2, -2], HY = [0, 1, 3, 4, 3, 1];
+  const HEX = [0, 1, 2, 2, 3, 4, 4, 5, 0, 0, 2, 4];
+  const outline = new Set(['0 1', '1 2', '2 3', '3 4', '4 5', '0 5']);
+  const X = [...HX], Y = [...HY];
+  const out = splitChords(HEX, X, Y, () => true, (a, b) => outline.has(a < b ? `${a} ${b}` : `${b} ${a}`), (x, y) => {
+    X.push(x);
+    Y.push(y);
+    return X.length - 1;
+  });
+  assert.equal(X.length - HX.length, 3, 'a midpoint on each chord');
+  assert.equal(out.length / 3, 3 * 2 + 4, 'each ear in two, the middle triangle in four');
   const after = area2(out, X, Y);
   assert.ok(after.every((a) => a > 0), `${after}`);
-  assert.equal(after.reduce((a, b) => a + b, 0), area2(TRIS, X, Y).reduce((a, b) => a + b, 0));
-  for (let i = 0; i < out.length; i += 3) assert.ok(!out.slice(i, i + 3).every(all), `triangle ${out.slice(i, i + 3)}`);
+  assert.equal(after.reduce((a, b) => a + b, 0), area2(HEX, X, Y).reduce((a, b) => a + b, 0));
+  for (let i = 0; i < out.length; i += 3) assert.ok(out.slice(i, i + 3).some((v) => v >= HX.length), `triangle ${out.slice(i, i + 3)}`);
+
+  // The pentagon with every vertex on the boundary: triangle 0 2 3 has two chords (0-2, 0-3).
+  const all = (v: number): boolean => v < xs.length;
+  const p = run(TRIS, all);
+  assert.equal(p.xs.length - xs.length, 2);
+  assert.equal(p.out.length / 3, 2 + 3 + 2);
+  const pa = area2(p.out, p.xs, p.ys);
+  assert.ok(pa.every((a) => a > 0), `${pa}`);
+  assert.equal(pa.reduce((a, b) => a + b, 0), area2(TRIS, p.xs, p.ys).reduce((a, b) => a + b, 0));
+});
+
+test('an edge on the outline of the area is not split, though both its ends are on the boundary: the surface beyond it would not take the midpoint', () => {
+  // With every vertex on the boundary, 2-3 and 3-4 end on it but are no segment of it: the
+  // pentagon's outline there borders another face, whose surfaces meet these edges whole.
+  const { out, xs: X } = run(TRIS, (v) => v < xs.length);
+  const edges = new Set<string>();
+  for (let i = 0; i < out.length; i += 3) for (let j = 0; j < 3; j++) edges.add(`${out[i + j]} ${out[i + ((j + 1) % 3)]}`);
+  assert.ok(edges.has('2 3') && edges.has('3 4'), `the outline edges whole: ${[...edges].join(', ')}`);
+  // The two midpoints are those of the chords 0-2 and 0-3, none on the outline.
+  assert.deepEqual([X.slice(xs.length), run(TRIS, (v) => v < xs.length).ys.slice(ys.length)], [[2, 1], [1.5, 2]]);
 });
 
 test('without chords nothing changes', () => {

@@ -17,9 +17,19 @@ export function splitChords(
   tris: readonly number[], xs: ArrayLike<number>, ys: ArrayLike<number>,
   onBoundary: (v: number) => boolean, segment: (a: number, b: number) => boolean, addVertex: (x: number, y: number) => number,
 ): number[] {
+  // Only an edge two of the triangles share lies inside the area. One on its outline borders
+  // another surface, whose triangles would not take the midpoint: a T-junction there, and a
+  // crack once the midpoint is put on the chunks' grid (snap-new-vertices.ts), off the line.
+  const uses = new Map<string, number>();
+  for (let i = 0; i + 2 < tris.length; i += 3) {
+    for (let j = 0; j < 3; j++) {
+      const k = edgeKey(tris[i + j]!, tris[i + ((j + 1) % 3)]!);
+      uses.set(k, (uses.get(k) ?? 0) + 1);
+    }
+  }
   const mids = new Map<string, number>();
   const midOf = (a: number, b: number): number => {
-    if (!onBoundary(a) || !onBoundary(b) || segment(a, b)) return -1;
+    if (!onBoundary(a) || !onBoundary(b) || segment(a, b) || uses.get(edgeKey(a, b))! < 2) return -1;
     const k = edgeKey(a, b);
     let m = mids.get(k);
     if (m === undefined) mids.set(k, (m = addVertex((xs[a]! + xs[b]!) / 2, (ys[a]! + ys[b]!) / 2)));

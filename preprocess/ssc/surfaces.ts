@@ -170,9 +170,9 @@ export interface SurfaceStats extends TriangulateStats {
   skippedRemovals: number;
   /** Faces triangulated without their slivers' notches, which no longer fit. */
   notchFallbacks: number;
-  /** Slivers left out (givesBack) that a re-emit of their giver does not take along: drawn for the face that holds them then. */
+  /** Slivers left out (givesBack) that a re-emit of their giver does not take along: drawn for the face that holds them then (with the giver's new id, maybe). */
   sliversHandedOn: number;
-  /** The same slivers that neither such a face nor the giver's new id holds whole: they go on showing the giver. */
+  /** The same slivers that such a face and the giver's new id do not hold between them: they go on showing the giver. */
   sliversLeftShowing: number;
   /** Parts of splits given to a face held back in their receiving face, which shows beside them. */
   splitPartsToHeld: number;
@@ -1270,17 +1270,23 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       lieIn(g, first);
       // The others showed f, which ends here, and its new id does not cover them (the tGAP gave
       // them away): each goes, as its removal would have, to its winner or what the winner has
-      // become, where that face holds it now (every one of sliverProbes) and is not new at this
-      // step (its own re-emit covers it). Else f's older surfaces would go on showing f there,
-      // or nothing where the map does not fetch their chunk. The rest stay as they were.
+      // become, where that face holds it now and is not new at this step (its own re-emit covers
+      // it). The face may hold part of it, g the rest (a later removal of the same step gave
+      // that part back to f): drawn just under g's re-emit, the sliver shows g there all the
+      // same. Each of sliverProbes must lie in one of the two: a part a third face has taken
+      // from the winner since must not show the winner. Else f's older surfaces would go on
+      // showing f there, or nothing where the map does not fetch their chunk. The rest stay as
+      // they were.
       const z = phaseZ(k, REEMIT_PHASE) - SURFACE_GAP;
       for (const sl of dropped) {
         const owner = resolveFace(faces, sl.face, k);
         if (owner === g) continue; // the winner merged into f: its area is g's
         // Each probe a hair towards the centre: the corner and the chord lie on lines of the tGAP.
         const probes = sliverProbes(sl.tri, sl.v);
-        const holds = (face: number): boolean => [0, 2, 4, 6, 8].every((p) => insideFace(face, probes[p]! + (probes[0]! - probes[p]!) * 1e-3, probes[p + 1]! + (probes[1]! - probes[p + 1]!) * 1e-3, k));
-        if (owner <= 0 || owner === f || faces[owner]!.stepLow === k || !holds(owner)) {
+        const inside = (face: number, p: number): boolean => insideFace(face, probes[p]! + (probes[0]! - probes[p]!) * 1e-3, probes[p + 1]! + (probes[1]! - probes[p + 1]!) * 1e-3, k);
+        const holds = (face: number): boolean => [0, 2, 4, 6, 8].every((p) => inside(face, p));
+        const holdsWithG = (face: number): boolean => [0, 2, 4, 6, 8].some((p) => inside(face, p)) && [0, 2, 4, 6, 8].every((p) => inside(face, p) || inside(g, p));
+        if (owner <= 0 || owner === f || faces[owner]!.stepLow === k || !holdsWithG(owner)) {
           // Where the tGAP has given it back to f meanwhile, the new id covers it.
           if (!holds(g)) stats.sliversLeftShowing++;
           continue;
@@ -1294,6 +1300,12 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         origin('simplify', k, f, shownAs, at);
         lieIn(owner, at);
         stats.sliversHandedOn++;
+        // The sliver is the face's now: its notch would keep it out of the face's later surfaces
+        // (a ramp, a re-emit), and the sliver would go on showing the face after it ended.
+        if (owner === sl.face) {
+          const [a, b] = sl.tri.filter((w) => w !== sl.v);
+          notches.get(owner)?.delete(edgeKey(a!, b!));
+        }
       }
       byFace?.drop(f);
     }
