@@ -24,6 +24,9 @@ export interface FakeFetch {
   readonly maxOpen: number;
 }
 
+/** The fetch before any fake: what the end of every test puts back (two fakes in one test end first-in first-out). */
+const realFetch = globalThis.fetch;
+
 /**
  * Replaces globalThis.fetch until the test ends. `respond` gets the URL and how many times it
  * has been requested so far (1 for the first request).
@@ -63,10 +66,9 @@ export function installFakeFetch(t: { after(fn: () => void): void }, respond: (u
       if (a !== 'hold') req.answer(a);
     });
   };
-  const real = globalThis.fetch;
   globalThis.fetch = fake;
   t.after(() => {
-    globalThis.fetch = real;
+    globalThis.fetch = realFetch;
   });
   return {
     requests,

@@ -329,7 +329,9 @@ describe('the chunk scheduler', () => {
     assert.deepEqual([h.times('c-0.bin'), h.times('c-1.bin'), h.times('c-2.bin'), h.times('c-3.bin')], [1, 1, 2, 2]);
 
     down = false;
+    const views = h.needed().length;
     h.scheduler.retryFailed();
+    assert.equal(h.needed().length, views + 1, 'the view asked again');
     await eventually(() => h.received().length === 2, 'c-2 and c-3 on their next try');
     await settle();
     assert.deepEqual(sorted(h.received()), ['c-2.bin', 'c-3.bin']);
@@ -337,11 +339,24 @@ describe('the chunk scheduler', () => {
     assert.deepEqual([h.times('c-0.bin'), h.times('c-1.bin')], [1, 1], 'a 404 and a corrupt chunk are not asked for again');
     assert.deepEqual(h.statuses('c-0.bin'), ['requested', 'failed']);
     assert.equal(h.errors().length, 4, 'no new error');
-    assert.equal(h.needed().at(-1)!.seq, 1, 'the same view');
+    assert.equal(h.needed().at(-1)!.seq, 1, 'the same view, unmoved');
 
     h.scheduler.retryFailed();
     await settle();
     assert.equal(h.fetched().length, 8, 'once they came, nothing is asked for again');
+  });
+
+  test('a fetch begun while the network was down and failing after it came back (retryFailed) is asked again at once, without an error', async (t) => {
+    const h = await harness(t, handMadeCube(row(1)).files, { concurrency: 1 }, () => 'hold');
+    h.scheduler.setView(view(1, 0, 10, { centerX: 5 }));
+    await eventually(() => h.fetch.open().length === 1, 'c-0 asked for');
+    h.scheduler.retryFailed();
+    h.fetch.open()[0]!.answer(networkError());
+    await eventually(() => h.times('c-0.bin') === 2, 'c-0 asked for again');
+    h.answerOldest();
+    await eventually(() => h.received().length === 1, 'c-0');
+    assert.deepEqual(h.statuses('c-0.bin'), ['requested', 'not-requested', 'requested', 'received']);
+    assert.deepEqual(h.errors(), []);
   });
 
   test('a chunk left and taken back before its aborted request ends is fetched anew and arrives once', async (t) => {
@@ -462,41 +477,48 @@ describe('floor chunks (docs/FORMAT.md, "Floor chunks")', () => {
     assert.equal(h.times('i-floor.json'), 1, 'not asked for again');
   });
 
-  test('a floor sub-index file and a floor chunk that failed for want of a network are taken again once it is back (retryFailed): the view goes back to the floor', async (t) => {
-    const floor = floorRow('i-floor.json');
-    const { files } = handMadeCube(row(3), floor);
-    const serve = serveFiles(BASE, files);
-    let down = true;
-    const h = await harness(t, files, { concurrency: 1 }, (url) => (down && /i-floor\.json$|b-2\.bin$/.test(url) ? networkError() : serve(url)), true);
-    const first = { ...view(1, 12, 30, { centerX: 25 }), zMin: 0, zMax: 0.49 };
-    h.scheduler.setView(first);
-    await eventually(() => h.received().length === 2, 'the cube\'s chunks under the view');
-    assert.deepEqual(sorted(h.needed().at(-1)!.visible), ['c-1.bin', 'c-2.bin']);
+  test('a floor sub-index file that failed for want of a network is taken again once it is back (retryFailed): the view goes back to the floor; one refused with a 404 is not', async (t) => {
+    for (const [answer, again] of [[networkError, true], [() => status(404), false]] as const) {
+      await t.test(again ? 'a network failure' : 'a 404', async (tt) => {
+        const floor = floorRow('i-floor.json');
+        const { files } = handMadeCube(row(3), floor);
+        const serve = serveFiles(BASE, files);
+        let down = true;
+        const h = await harness(tt, files, { concurrency: 1 }, (url) => (down && url.endsWith('i-floor.json') ? answer() : serve(url)), true);
+        const first = { ...view(1, 12, 30, { centerX: 25 }), zMin: 0, zMax: 0.49 };
+        h.scheduler.setView(first);
+        await eventually(() => h.received().length === 2, 'the cube\'s chunks under the view');
+        assert.deepEqual(sorted(h.needed().at(-1)!.visible), ['c-1.bin', 'c-2.bin']);
 
-    down = false;
-    h.scheduler.evicted(['c-1.bin', 'c-2.bin']); // gone from the GPU: the floor costs less again
-    h.scheduler.retryFailed();
-    await eventually(() => h.times('i-floor.json') === 2, 'the floor\'s sub-index file asked for again');
-    await eventually(() => h.received().includes('b-2.bin'), 'the floor chunks');
-    await settle();
-    assert.deepEqual(sorted(h.needed().at(-1)!.visible), ['b-1.bin', 'b-2.bin'], 'the floor on screen again');
+        down = false;
+        h.scheduler.evicted(['c-1.bin', 'c-2.bin']); // gone from the GPU: the floor costs less again
+        h.scheduler.retryFailed();
+        await settle();
+        await eventually(() => h.fetch.open().length === 0, 'nothing in flight');
+        await settle();
+        assert.equal(h.times('i-floor.json'), again ? 2 : 1);
+        assert.deepEqual(sorted(h.needed().at(-1)!.visible), again ? ['b-1.bin', 'b-2.bin'] : ['c-1.bin', 'c-2.bin'], 'on screen');
+      });
+    }
   });
 
   test('a floor chunk that failed for want of a network is chosen again once it is back (retryFailed); one refused with a 404 is not', async (t) => {
     for (const [answer, again] of [[networkError, true], [() => status(404), false]] as const) {
-      const serve = serveFiles(BASE, cube());
-      let down = true;
-      const h = await harness(t, cube(), {}, (url) => (down && url.endsWith('c-floor.bin') ? answer() : serve(url)), true);
-      h.scheduler.setView(at(1, 0));
-      await eventually(() => h.received().length === 3, 'the cube\'s chunks');
-      down = false;
-      h.scheduler.evicted(CUBE);
-      h.scheduler.retryFailed();
-      await settle();
-      await eventually(() => h.fetch.open().length === 0, 'nothing in flight');
-      await settle();
-      assert.deepEqual(sorted(h.needed().at(-1)!.visible), again ? ['c-floor.bin'] : CUBE, String(again));
-      assert.equal(h.times('c-floor.bin'), again ? 2 : 1);
+      await t.test(again ? 'a network failure' : 'a 404', async (tt) => {
+        const serve = serveFiles(BASE, cube());
+        let down = true;
+        const h = await harness(tt, cube(), {}, (url) => (down && url.endsWith('c-floor.bin') ? answer() : serve(url)), true);
+        h.scheduler.setView(at(1, 0));
+        await eventually(() => h.received().length === 3, 'the cube\'s chunks');
+        down = false;
+        h.scheduler.evicted(CUBE);
+        h.scheduler.retryFailed();
+        await settle();
+        await eventually(() => h.fetch.open().length === 0, 'nothing in flight');
+        await settle();
+        assert.deepEqual(sorted(h.needed().at(-1)!.visible), again ? ['c-floor.bin'] : CUBE);
+        assert.equal(h.times('c-floor.bin'), again ? 2 : 1);
+      });
     }
   });
 

@@ -27,7 +27,8 @@ import { boxMeets, queryLineChunks, viewPriority, type QueryBox, type QueryResul
 import { ChunkCorrupt, fetchChunk } from './chunk-fetch.js';
 import { fetchLineChunk } from './line-chunk-fetch.js';
 import { floorChoice, interimApplies, interimFloor, underView } from './floor-choice.js';
-import { FetchFailure, mayPass, type RetryOptions } from './fetch-retry.js';
+import { FailedFiles } from './failed-files.js';
+import { FetchFailure, type RetryOptions } from './fetch-retry.js';
 import { indexError } from './index-error.js';
 import type { IndexTree } from './index-tree.js';
 import type { ChunkStatus, FromWorker, SourceErrorInfo, SourceOptions, ViewRequest } from './worker-protocol.js';
@@ -60,10 +61,10 @@ export class ChunkScheduler {
   private readonly entries = new Map<string, Entry>();
   private needed = new Set<string>();
   /**
-   * Chunks whose last fetch failed, and whether the cause may pass (mayPass): floor chunks among
-   * them are not chosen again (floorShown) until the network is back (retryFailed).
+   * Chunks whose last fetch failed: floor chunks among them are not chosen again (floorShown),
+   * unless the page comes back online and their failure may pass (retryFailed).
    */
-  private readonly failed = new Map<string, boolean>();
+  private readonly failed = new FailedFiles();
   private inFlight = 0;
   private view: ViewRequest | null = null;
   /** When the view last changed (performance.now()), and the timer that starts the margin once it has rested. */
@@ -170,9 +171,14 @@ export class ChunkScheduler {
     if (refs.length === 0) return;
     const view = this.view;
     void Promise.allSettled(refs.map((ref) => this.tree.loadSub(ref))).then((results) => {
-      for (const r of results) if (r.status === 'rejected') this.postError(indexError(r.reason));
-      const floorFailed = results.some((r, i) => r.status === 'rejected' && this.floorSubs.includes(refs[i]!));
-      if ((floorFailed || results.some((r) => r.status === 'fulfilled')) && view && this.view === view) this.setView(view);
+      // A failure the page's coming back online may have mended is not recorded: asked again.
+      const failed = (i: number): boolean => results[i]!.status === 'rejected' && this.tree.hasFailed(refs[i]!);
+      results.forEach((r, i) => {
+        if (r.status === 'rejected' && failed(i)) this.postError(indexError(r.reason));
+      });
+      const floorFailed = refs.some((ref, i) => failed(i) && this.floorSubs.includes(ref));
+      const again = results.some((r, i) => r.status === 'fulfilled' || !failed(i));
+      if ((floorFailed || again) && view && this.view === view) this.setView(view);
       else this.pump();
     });
   }
@@ -223,13 +229,11 @@ export class ChunkScheduler {
    * while the worker lived: a phone back from a tunnel kept the holes.
    */
   retryFailed(): void {
-    for (const [file, passing] of this.failed) {
-      if (!passing) continue;
-      this.failed.delete(file);
+    for (const file of this.failed.backOnline()) {
       const e = this.entries.get(file);
       if (e?.status === 'failed') this.setStatus(e, 'not-requested');
     }
-    this.tree.forgetPassingFailures();
+    this.tree.backOnline();
     if (this.view) this.setView(this.view);
   }
 
@@ -310,6 +314,7 @@ export class ChunkScheduler {
 
   private start(e: Entry): void {
     const controller = new AbortController();
+    const startedAt = performance.now();
     e.controller = controller;
     this.inFlight++;
     this.setStatus(e, 'requested');
@@ -340,12 +345,12 @@ export class ChunkScheduler {
         (err: unknown) => {
           if (e.controller !== controller) return;
           e.controller = null;
-          if (err instanceof FetchFailure && err.kind === 'abort') {
+          // Aborted, or failed for an outage the page has come back from since: asked for again.
+          if ((err instanceof FetchFailure && err.kind === 'abort') || !this.failed.fail(e.leaf.file, err, startedAt)) {
             this.setStatus(e, 'not-requested');
             return;
           }
           this.setStatus(e, 'failed');
-          this.failed.set(e.leaf.file, mayPass(err));
           this.postError(chunkError(err, e.leaf.file, this.tree.url(e.leaf.file)));
           // A view at the floor turns to the cube's chunks at once (floorShown).
           if (this.view && this.tree.index.floor) this.setView(this.view);

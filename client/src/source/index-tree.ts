@@ -2,7 +2,8 @@
 // time a query reaches them (once each, however many queries ask meanwhile).
 import { parseSubIndex, type CubeIndex, type InnerNode } from '../../../format/cube-index.js';
 import { queryIndex, type QueryBox, type QueryResult } from '../../../format/index-query.js';
-import { fetchJson, mayPass, type RetryOptions } from './fetch-retry.js';
+import { FailedFiles } from './failed-files.js';
+import { fetchJson, type RetryOptions } from './fetch-retry.js';
 import { floorQuery } from './floor-choice.js';
 import { cubeFileUrl } from './index-url.js';
 import { readIndex } from './read-index.js';
@@ -11,11 +12,11 @@ export class IndexTree {
   private readonly subs = new Map<string, InnerNode>();
   private readonly loading = new Map<string, Promise<void>>();
   /**
-   * Sub-index files whose last load failed, and whether the cause may pass (mayPass). loadSub
-   * may be asked for them again; the scheduler asks again for the floor's only once the network
-   * is back (ChunkScheduler.usableFloor, retryFailed).
+   * Sub-index files whose last load failed. loadSub may be asked for them again; the scheduler
+   * asks again for the floor's only once the page is back online, where their failure may pass
+   * (ChunkScheduler.usableFloor, retryFailed).
    */
-  private readonly failed = new Map<string, boolean>();
+  private readonly failed = new FailedFiles();
 
   private constructor(
     readonly index: CubeIndex,
@@ -55,23 +56,25 @@ export class IndexTree {
     return this.failed.has(ref);
   }
 
-  /** Forgets the failures that may pass (the network is back): those files count as not loaded yet. */
-  forgetPassingFailures(): void {
-    for (const [ref, passing] of this.failed) if (passing) this.failed.delete(ref);
+  /** The page is back online: the failures that may pass are forgotten (FailedFiles). */
+  backOnline(): void {
+    this.failed.backOnline();
   }
 
   /** Loads a sub-index file, unless it is loaded or loading already; resolves when it is in. */
   loadSub(ref: string): Promise<void> {
     let p = this.loading.get(ref);
     if (!p) {
+      const startedAt = performance.now();
       p = fetchJson(this.url(ref), this.retry).then((json) => {
         this.subs.set(ref, parseSubIndex(json, ref));
         this.failed.delete(ref);
       });
-      // A failed load may be asked for again.
+      // A failed load may be asked for again; one the page's coming back online may have
+      // mended is not recorded (hasFailed stays false), so the next query asks again.
       p.catch((err: unknown) => {
         this.loading.delete(ref);
-        this.failed.set(ref, mayPass(err));
+        this.failed.fail(ref, err, startedAt);
       });
       this.loading.set(ref, p);
     }
