@@ -88,12 +88,28 @@ test('a triangle with two or three chords is split at each, counterclockwise, sa
 test('an edge on the outline of the area is not split, though both its ends are on the boundary: the surface beyond it would not take the midpoint', () => {
   // With every vertex on the boundary, 2-3 and 3-4 end on it but are no segment of it: the
   // pentagon's outline there borders another face, whose surfaces meet these edges whole.
-  const { out, xs: X } = run(TRIS, (v) => v < xs.length);
+  const { out, xs: X, ys: Y } = run(TRIS, (v) => v < xs.length);
   const edges = new Set<string>();
   for (let i = 0; i < out.length; i += 3) for (let j = 0; j < 3; j++) edges.add(`${out[i + j]} ${out[i + ((j + 1) % 3)]}`);
   assert.ok(edges.has('2 3') && edges.has('3 4'), `the outline edges whole: ${[...edges].join(', ')}`);
   // The two midpoints are those of the chords 0-2 and 0-3, none on the outline.
-  assert.deepEqual([X.slice(xs.length), run(TRIS, (v) => v < xs.length).ys.slice(ys.length)], [[2, 1], [1.5, 2]]);
+  assert.deepEqual([X.slice(xs.length), Y.slice(ys.length)], [[2, 1], [1.5, 2]]);
+});
+
+test('a flat triangle along the outline does not make an outline edge a chord', () => {
+  // Vertex 5 on the outline 0-1, between them: the flat triangle 0 5 1 has the side 1-0 that
+  // triangle 0 1 2 has the other way, but nothing lies beyond it.
+  const X = [...xs, 2], Y = [...ys, 0];
+  const tris = [0, 5, 1, ...TRIS];
+  const out = splitChords(tris, X, Y, () => true, () => false, (x, y) => {
+    X.push(x);
+    Y.push(y);
+    return X.length - 1;
+  });
+  assert.deepEqual(Y.slice(6).filter((y) => y === 0), [], 'no midpoint on 0-1');
+  const edges = new Set<string>();
+  for (let i = 0; i < out.length; i += 3) for (let j = 0; j < 3; j++) edges.add(`${out[i + j]} ${out[i + ((j + 1) % 3)]}`);
+  assert.ok(edges.has('0 1'), 'the side 0-1 whole');
 });
 
 test('without chords nothing changes', () => {

@@ -4,32 +4,33 @@
 // edges between two boundary vertices that are not a piece of the boundary (chords through the
 // loser's interior) get a vertex at their midpoint, which the front reaches later: the triangle
 // then rises from its boundary side.
+import { orient } from '../geom/predicates.js';
 
 /** An undirected edge's name: a chord's midpoint is shared by the triangles on either side of it. */
 export const edgeKey = (a: number, b: number): string => (a < b ? `${a} ${b}` : `${b} ${a}`);
 
 /**
  * `tris` (vertex ids, 3 per triangle, counterclockwise) with every chord split at its
- * midpoint: an edge whose two ends satisfy `onBoundary` but which is not a boundary segment
- * (`segment`). `addVertex` makes a new vertex and returns its id.
+ * midpoint: an edge inside the area they cover whose two ends satisfy `onBoundary` but which
+ * is not a boundary segment (`segment`). `addVertex` makes a new vertex and returns its id.
  */
 export function splitChords(
   tris: readonly number[], xs: ArrayLike<number>, ys: ArrayLike<number>,
   onBoundary: (v: number) => boolean, segment: (a: number, b: number) => boolean, addVertex: (x: number, y: number) => number,
 ): number[] {
-  // Only an edge two of the triangles share lies inside the area. One on its outline borders
-  // another surface, whose triangles would not take the midpoint: a T-junction there, and a
-  // crack once the midpoint is put on the chunks' grid (snap-new-vertices.ts), off the line.
-  const uses = new Map<string, number>();
+  // Only an edge that two of the triangles share, one each way, lies inside the area (a flat
+  // triangle along the outline counts for nothing). One on its outline borders another
+  // surface, whose triangles would not take the midpoint: a T-junction there, and a crack once
+  // the midpoint is put on the chunks' grid (snap-new-vertices.ts), off the line.
+  const sides = new Set<string>();
   for (let i = 0; i + 2 < tris.length; i += 3) {
-    for (let j = 0; j < 3; j++) {
-      const k = edgeKey(tris[i + j]!, tris[i + ((j + 1) % 3)]!);
-      uses.set(k, (uses.get(k) ?? 0) + 1);
-    }
+    const a = tris[i]!, b = tris[i + 1]!, c = tris[i + 2]!;
+    if (orient(xs[a]!, ys[a]!, xs[b]!, ys[b]!, xs[c]!, ys[c]!) === 0) continue;
+    sides.add(`${a}>${b}`).add(`${b}>${c}`).add(`${c}>${a}`);
   }
   const mids = new Map<string, number>();
   const midOf = (a: number, b: number): number => {
-    if (!onBoundary(a) || !onBoundary(b) || segment(a, b) || uses.get(edgeKey(a, b))! < 2) return -1;
+    if (!onBoundary(a) || !onBoundary(b) || segment(a, b) || !sides.has(`${a}>${b}`) || !sides.has(`${b}>${a}`)) return -1;
     const k = edgeKey(a, b);
     let m = mids.get(k);
     if (m === undefined) mids.set(k, (m = addVertex((xs[a]! + xs[b]!) / 2, (ys[a]! + ys[b]!) / 2)));

@@ -1281,14 +1281,18 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       for (const sl of dropped) {
         const owner = resolveFace(faces, sl.face, k);
         if (owner === g) continue; // the winner merged into f: its area is g's
-        // Each probe a hair towards the centre: the corner and the chord lie on lines of the tGAP.
+        // sliverProbes, and a point a quarter of the way from each end of the chord to the centre
+        // (a third face may hold a corner of the sliver); each a hair towards the centre: the
+        // corner and the chord lie on lines of the tGAP.
+        const [a, b] = sl.tri.filter((w) => w !== sl.v) as [number, number];
         const probes = sliverProbes(sl.tri, sl.v);
-        const inside = (face: number, p: number): boolean => insideFace(face, probes[p]! + (probes[0]! - probes[p]!) * 1e-3, probes[p + 1]! + (probes[1]! - probes[p + 1]!) * 1e-3, k);
-        const holds = (face: number): boolean => [0, 2, 4, 6, 8].every((p) => inside(face, p));
-        const holdsWithG = (face: number): boolean => [0, 2, 4, 6, 8].some((p) => inside(face, p)) && [0, 2, 4, 6, 8].every((p) => inside(face, p) || inside(g, p));
-        if (owner <= 0 || owner === f || faces[owner]!.stepLow === k || !holdsWithG(owner)) {
+        for (const w of [a, b]) probes.push(xs[w]! + (probes[0]! - xs[w]!) / 4, ys[w]! + (probes[1]! - ys[w]!) / 4);
+        const inFace = (face: number): boolean[] => Array.from({ length: probes.length / 2 }, (_, i) => insideFace(face, probes[2 * i]! + (probes[0]! - probes[2 * i]!) * 1e-3, probes[2 * i + 1]! + (probes[1]! - probes[2 * i + 1]!) * 1e-3, k));
+        const inG = inFace(g);
+        const inOwner = owner > 0 && owner !== f && faces[owner]!.stepLow !== k ? inFace(owner) : null;
+        if (!inOwner || !inOwner.some(Boolean) || !inOwner.every((x, i) => x || inG[i])) {
           // Where the tGAP has given it back to f meanwhile, the new id covers it.
-          if (!holds(g)) stats.sliversLeftShowing++;
+          if (!inG.every(Boolean)) stats.sliversLeftShowing++;
           continue;
         }
         const at = out.count;
@@ -1301,11 +1305,10 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
         lieIn(owner, at);
         stats.sliversHandedOn++;
         // The sliver is the face's now: its notch would keep it out of the face's later surfaces
-        // (a ramp, a re-emit), and the sliver would go on showing the face after it ended.
-        if (owner === sl.face) {
-          const [a, b] = sl.tri.filter((w) => w !== sl.v);
-          notches.get(owner)?.delete(edgeKey(a!, b!));
-        }
+        // (a ramp, a re-emit), and the sliver would go on showing the face after it ended. (The
+        // same chord may have notched the face again since, for another vertex: that one stays.)
+        const notched = notches.get(owner);
+        if (owner === sl.face && notched?.get(edgeKey(a, b)) === sl.v) notched.delete(edgeKey(a, b));
       }
       byFace?.drop(f);
     }
