@@ -1273,8 +1273,8 @@ export function buildSurfaces(input: Tgap, opts: SurfaceOptions = {}): { surface
       // become, where that face holds it now and is not new at this step (its own re-emit covers
       // it). The face may hold part of it, g the rest (a later removal of the same step gave
       // that part back to f): drawn just under g's re-emit, the sliver shows g there all the
-      // same. Each of sliverProbes must lie in one of the two: a part a third face has taken
-      // from the winner since must not show the winner. Else f's older surfaces would go on
+      // same. Each probe (below) must lie in one of the two, one at least in that face: a part
+      // a third face has taken from the winner since must not show the winner. Else f's older surfaces would go on
       // showing f there, or nothing where the map does not fetch their chunk. The rest stay as
       // they were.
       const z = phaseZ(k, REEMIT_PHASE) - SURFACE_GAP;

@@ -177,7 +177,7 @@ export class ChunkScheduler {
         if (r.status === 'rejected' && failed(i)) this.postError(indexError(r.reason));
       });
       const floorFailed = refs.some((ref, i) => failed(i) && this.floorSubs.includes(ref));
-      const again = results.some((r, i) => r.status === 'fulfilled' || !failed(i));
+      const again = refs.some((_, i) => !failed(i)); // came, or to be asked again
       if ((floorFailed || again) && view && this.view === view) this.setView(view);
       else this.pump();
     });
