@@ -694,6 +694,7 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     const p = await open(start, z, { retries: 1, backoff: 10 }, [/net::ERR_INTERNET_DISCONNECTED/]);
     assert.equal(await waitIdle(p.page), true);
     const errorsSeen = await recordErrors(p);
+    const onGpu = await p.page.evaluate(() => [...engine.chunkStatuses()].filter(([, s]) => s === 'gpu').map(([f]) => f));
     const context = p.page.context();
     await context.setOffline(true);
     await goTo(p, target, z);
@@ -708,7 +709,8 @@ describe('chunk loading (bgt_otterlo_400m in about 60 chunks)', () => {
     assert.equal(await waitIdle(p.page), true, 'complete, the view unmoved');
     const askedAgain = countBy(server.log.slice(askedBefore).filter((e) => /^\/cube\/[cb]-/.test(e.path)));
     for (const f of lost.filter((f) => onScreen.includes(f))) assert.equal(askedAgain.get(f), 1, `${f} asked for again once`);
-    assert.ok([...askedAgain.keys()].every((f) => lost.includes(f)), `only the lost chunks asked for: ${[...askedAgain.keys()].join(', ')}`);
+    // (The margin's chunks may fail after the errors were read, or not have been asked for yet.)
+    assert.deepEqual([...askedAgain.keys()].filter((f) => onGpu.includes(f)), [], 'no chunk the map had is asked for again');
     await assertMatchesSlicer(p, target, z, 'back online');
   });
 
