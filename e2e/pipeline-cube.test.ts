@@ -16,7 +16,7 @@ import { CubeReader } from '../preprocess/ssc/read-cube.js';
 import { winnerIds } from '../preprocess/ssc/merge-surface.js';
 import { buildSurfaces } from '../preprocess/ssc/surfaces.js';
 import { decodeTgap, encodeTgap, readTgap } from '../format/tgap.js';
-import { faceEndZ, faceStartZ, replacedFaces, resolveFace, scaleInfoOf } from '../format/tgap-model.js';
+import { faceAliveAt, replacedFaces, resolveFace, scaleInfoOf } from '../format/tgap-model.js';
 import { PIXEL_SIZE_MM } from '../format/pixel-size.js';
 import { zAtScale } from '../format/scale.js';
 import { FlickerCounter } from '../bench/flicker.js';
@@ -367,7 +367,7 @@ test('bgt_otterlo_400m smooth cube (ssc build, the default; --classic for the cl
       let bad = 0, first = '';
       for (let p = 0; p < ids.length; p++) {
         const f = ids[p]!;
-        const ok = domain[p] === 0 ? f === 0 : f > 0 && faceStartZ(faces[f]!) <= z && z < faceEndZ(faces[f]!, zMax);
+        const ok = domain[p] === 0 ? f === 0 : f > 0 && faceAliveAt(faces[f]!, z, zMax);
         if (!ok && bad++ === 0) first = `pixel ${p} shows face ${f}`;
       }
       assert.equal(bad, 0, `z ${z}: ${bad} pixels wrong, first ${first}`);

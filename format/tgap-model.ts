@@ -133,6 +133,11 @@ export function faceEndZ(face: TgapFace, steps: number): number {
   return face.stepHigh > steps ? Infinity : phaseZ(face.stepHigh, face.endPhase);
 }
 
+/** Whether a face is shown at z: from faceStartZ, up to faceEndZ. */
+export function faceAliveAt(face: TgapFace, z: number, steps: number): boolean {
+  return faceStartZ(face) <= z && z < faceEndZ(face, steps);
+}
+
 /** The scale of every step (a constant number of faces per map area), as the cube states it. */
 export function scaleInfoOf(t: Pick<Tgap, 'meta'>): ScaleInfo {
   return { baseScale: t.meta.baseScale, baseFaces: t.meta.baseFaces, scaleTable: scaleKnots(t.meta.facesAlive), zMax: t.meta.steps };

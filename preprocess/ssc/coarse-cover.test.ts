@@ -9,7 +9,7 @@
 import test from 'node:test';
 import assert from 'node:assert/strict';
 import { decodeChunk } from '../../format/chunk.js';
-import { faceEndZ, faceStartZ } from '../../format/tgap-model.js';
+import { faceAliveAt } from '../../format/tgap-model.js';
 import { generalizedDataset } from '../../testing/generalized-dataset.js';
 import { tempDir } from '../../testing/temp-dir.js';
 import { fitView } from '../map/rasterize.js';
@@ -37,7 +37,7 @@ test('nlcd_zion: at 24 z over the coarser half of the cube, every pixel of the w
     sliceChunk(sl, chunk);
     return sl.ids;
   };
-  const alive = (f: number, z: number): boolean => f > 0 && faceStartZ(cube.faces[f]!) <= z && z < faceEndZ(cube.faces[f]!, steps);
+  const alive = (f: number, z: number): boolean => f > 0 && faceAliveAt(cube.faces[f]!, z, steps);
   const base = slice(0);
   const wrong: string[] = [];
   let pixels = 0;

@@ -11,7 +11,7 @@
 import test from 'node:test';
 import assert from 'node:assert/strict';
 import { decodeTgap, encodeTgap } from '../../format/tgap.js';
-import { EventKind, faceEndZ, faceStartZ, phaseZ, resolveFace } from '../../format/tgap-model.js';
+import { EventKind, faceAliveAt, faceEndZ, phaseZ, resolveFace } from '../../format/tgap-model.js';
 import { fixtureTgap, rect, type FixtureFace } from '../../testing/planar-fixtures.js';
 import { surfacesSlicer } from '../../testing/surfaces-slicer.js';
 import { fitView } from '../map/rasterize.js';
@@ -86,7 +86,7 @@ for (const smooth of [false, true]) {
       for (let p = 0; p < ids.length; p++) {
         const f = ids[p]!;
         if (f === 0) continue;
-        assert.ok(faceStartZ(tgap.faces[f]!) <= z && z < faceEndZ(tgap.faces[f]!, t.meta.steps), `z ${z}: pixel ${p} shows face ${f}, not alive`);
+        assert.ok(faceAliveAt(tgap.faces[f]!, z, t.meta.steps), `z ${z}: pixel ${p} shows face ${f}, not alive`);
       }
       assert.ok(ids[inW]! > 0, `z ${z}: W's area shows no face`);
       assert.equal(ids[between], 0, `z ${z}: between the two parts lies the outside`);

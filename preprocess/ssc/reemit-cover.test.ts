@@ -4,7 +4,7 @@
 // or to the face that holds them once the winner no longer does.
 import test from 'node:test';
 import assert from 'node:assert/strict';
-import { faceEndZ, faceStartZ, phaseZ, REEMIT_PHASE } from '../../format/tgap-model.js';
+import { faceAliveAt, phaseZ, REEMIT_PHASE } from '../../format/tgap-model.js';
 import { generalizedDataset } from '../../testing/generalized-dataset.js';
 import { tempDir } from '../../testing/temp-dir.js';
 import { CpuSlicer } from './cpu-slicer.js';
@@ -14,7 +14,7 @@ test('bgt_otterlo_400m: just after each re-emit, the face re-emitted shows nowhe
   const { tgap } = await generalizedDataset(tempDir(t), 'bgt_otterlo_400m.geojson', 'bgt.json');
   const { surfaces: s, tgap: cube, origins, stats } = buildSurfaces(tgap, { smooth: true });
   const steps = cube.meta.steps;
-  const alive = (f: number, z: number): boolean => f > 0 && faceStartZ(cube.faces[f]!) <= z && z < faceEndZ(cube.faces[f]!, steps);
+  const alive = (f: number, z: number): boolean => f > 0 && faceAliveAt(cube.faces[f]!, z, steps);
   const reemits = origins.filter((o) => o.kind === 'reemit');
   assert.ok(reemits.length > 20, `${reemits.length} re-emits`);
   let checked = 0;

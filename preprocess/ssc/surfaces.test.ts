@@ -17,7 +17,7 @@ import test from 'node:test';
 import assert from 'node:assert/strict';
 import { decodeChunk } from '../../format/chunk.js';
 import { scaleAtZ, zAtScale } from '../../format/scale.js';
-import { EventKind, faceEndZ, faceStartZ, phaseZ, replacedFaces, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
+import { EventKind, faceAliveAt, phaseZ, replacedFaces, scaleInfoOf, type Tgap } from '../../format/tgap-model.js';
 import { fixtureStyle, fixtureTgap, rect, type FixtureFace } from '../../testing/planar-fixtures.js';
 import { fitView, type View } from '../map/rasterize.js';
 import { assembleChunk } from './assemble-chunk.js';
@@ -127,7 +127,7 @@ test('a smooth cube is a partition at every z and equals the classic one at the 
     for (let p = 0; p < ids.length; p++) {
       const f = ids[p]!;
       assert.ok(f > 0, `z ${z}: pixel ${p} shows no face`);
-      assert.ok(faceStartZ(cubeFaces[f]!) <= z && z < faceEndZ(cubeFaces[f]!, zMax), `z ${z}: pixel ${p} shows face ${f}, not alive`);
+      assert.ok(faceAliveAt(cubeFaces[f]!, z, zMax), `z ${z}: pixel ${p} shows face ${f}, not alive`);
     }
   }
   const classic = await slicer(t, buildSurfaces(t).surfaces, view);
@@ -190,7 +190,7 @@ test('a smooth cube holds back a merge whose area would go back to its class: it
     const z = (7 * k) / 300;
     const row = middleRow(slice(z), view);
     for (let c = 0; c < colOf(1); c++) seen.add(row[c]!);
-    row.forEach((f, p) => assert.ok(f > 0 && faceStartZ(cube.faces[f]!) <= z && z < faceEndZ(cube.faces[f]!, t.meta.steps), `z ${z}: column ${p} shows face ${f}`));
+    row.forEach((f, p) => assert.ok(f > 0 && faceAliveAt(cube.faces[f]!, z, t.meta.steps), `z ${z}: column ${p} shows face ${f}`));
   }
   assert.deepEqual([...seen].sort(), [X, Z]);
 });
